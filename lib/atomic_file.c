@@ -1,0 +1,31 @@
+/* atomic_file.c: temporary file, then rename (chapter 1). See atomic_file.h. */
+#include "atomic_file.h"
+
+#include <errno.h>
+#include <string.h>
+#include <unistd.h>
+
+int atomic_open(AtomicFile *out, const char *path)
+{
+    if (strlen(path) >= sizeof out->final_path) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    strcpy(out->final_path, path);
+    snprintf(out->temp_path, sizeof out->temp_path, "%s.tmp.%ld", path, (long)getpid());
+    out->file = fopen(out->temp_path, "wb");
+    return out->file ? 0 : -1;
+}
+
+int atomic_close(AtomicFile *out, int failed)
+{
+    failed |= ferror(out->file);
+    failed |= fclose(out->file) != 0;
+    out->file = NULL;
+    if (!failed && rename(out->temp_path, out->final_path) == 0)
+        return 0;
+    int saved_errno = errno ? errno : EIO;
+    remove(out->temp_path);
+    errno = saved_errno;
+    return -1;
+}

@@ -1,0 +1,71 @@
+/* render.h: the image as a Monte Carlo estimate, one pixel at a time (report §3.3).
+ *
+ * Introduced in chapter 1. A pixel's value is the mean of `spp` samples; sample s of
+ * pixel p traces one camera ray (camera.h) and asks an estimator for the radiance
+ * arriving along it, with its own random generator rng_for_sample(seed, p, s).
+ *
+ * The estimator is a function, so the same loop serves Whitted (whitted.h) and the
+ * path tracer (path.h):
+ *     Vec3 estimate(const Scene *, Ray, Rng *, const void *settings, RayCounts *)
+ *
+ * Samples are taken in passes (pass s takes sample s of every pixel), each pass split
+ * among the threads by rows. The sum for each pixel is always accumulated in sample
+ * order, so the image is bit-for-bit the same for any thread count. Per pixel we keep
+ * the count of samples, their sum and their sum of squares, so that
+ *   - a non-finite sample (NaN or infinity) is dropped and counted, never averaged in;
+ *   - an interrupted render (SIGINT, see render_install_interrupt) stops after the rows
+ *     in progress and is still normalised correctly, pixel by pixel;
+ *   - the standard error of every pixel's mean is known (measure.h uses it).
+ */
+#ifndef RENDER_H
+#define RENDER_H
+
+#include "image.h"
+#include "rng.h"
+#include "scene.h"
+#include "stats.h"
+
+typedef Vec3 (*Estimator)(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                          RayCounts *counts);
+
+typedef struct {
+    int width, height;
+    int spp;
+    PixelSampling sampling;
+    int threads;    /* 0: one per core */
+    uint64_t seed;
+    int progress;   /* show progress on stderr (only if it is a terminal) */
+    const char *label; /* what the progress line names */
+} RenderSettings;
+
+typedef struct {
+    Image image;    /* per-pixel mean */
+    Image std_error; /* per-pixel standard error of that mean, sqrt(var / n) */
+    double seconds;
+    int threads;
+    RayCounts rays;
+    uint64_t samples;    /* samples taken (finite or not) */
+    uint64_t nonfinite;  /* samples dropped for being NaN or infinite */
+    int interrupted;     /* stopped early by SIGINT */
+} RenderResult;
+
+/* Render. Returns 0, or -1 when memory runs out (nothing is then allocated). */
+int render(const Scene *scene, const RenderSettings *settings, Estimator estimate,
+           const void *estimator_settings, RenderResult *result);
+
+void render_result_free(RenderResult *result);
+
+/* Mean samples per pixel actually taken (less than spp after an interruption). */
+double render_samples_per_pixel(const RenderResult *result);
+
+/* From now on, SIGINT asks a running render to stop early instead of killing the
+ * program; a second SIGINT kills as usual. */
+void render_install_interrupt(void);
+
+/* Whether SIGINT has asked to stop. */
+int render_interrupted(void);
+
+/* Number of cores online. */
+int render_core_count(void);
+
+#endif

@@ -1,0 +1,20 @@
+/* schlick.c: Schlick's reflectance with the erratum of SPEC §8.4 (chapter 1). */
+#include "schlick.h"
+
+#include <math.h>
+
+#include "snell.h"
+
+double schlick_reflectance(double cos_i, double n_i, double n_t)
+{
+    double cos_theta = cos_i;
+    if (n_i > n_t) {
+        cos_theta = snell_cos_transmitted(cos_i, n_i, n_t);
+        if (cos_theta < 0.0)
+            return 1.0;
+    }
+    double r0 = (n_i - n_t) / (n_i + n_t);
+    r0 *= r0;
+    double m = 1.0 - cos_theta;
+    return r0 + (1.0 - r0) * m * m * m * m * m;
+}

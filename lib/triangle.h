@@ -1,0 +1,41 @@
+/* triangle.h: a triangle and the Möller-Trumbore ray intersection (report §3.6.1,
+ * eqs. 15-18).
+ *
+ * Introduced in chapter 1. A point of the triangle is T(u, v) = (1-u-v) v0 + u v1 + v v2
+ * with u, v >= 0 and u + v <= 1 (eqs. 15-16); setting it equal to the ray (eq. 17/20)
+ * gives the 3 x 3 linear system of eq. 18,
+ *     [-d, e1, e2] (t, u, v)^T = o - v0,   e1 = v1 - v0, e2 = v2 - v0,
+ * which Möller and Trumbore solve by Cramer's rule with scalar triple products, never
+ * forming the plane equation.
+ *
+ * Watertight shared edges: a ray through the common edge of two triangles computes u, v
+ * for each from different rounding, so with exact bounds both could reject it and leave
+ * a pinhole. We accept barycentrics down to -TRIANGLE_EDGE_SLACK (relative), so that
+ * both triangles accept a ray on their shared edge; the overlap is far below a pixel.
+ * A ray parallel to the plane (determinant 0 relative to the edge lengths) misses.
+ *
+ * The front side is the one the normal (v1 - v0) x (v2 - v0) points to (SPEC §4).
+ */
+#ifndef TRIANGLE_H
+#define TRIANGLE_H
+
+#include "ray.h"
+
+#define TRIANGLE_EDGE_SLACK 1e-12
+
+typedef struct {
+    Vec3 v0, e1, e2;
+    Vec3 normal; /* unit (e1 x e2): the front side */
+    double area;
+    int material;
+} Triangle;
+
+Triangle triangle_make(Vec3 v0, Vec3 v1, Vec3 v2, int material);
+
+/* Smallest t in (tmin, tmax) where the ray meets the triangle (either side), or INFINITY. */
+double triangle_intersect(const Triangle *triangle, Ray ray, double tmin, double tmax);
+
+/* The point T(u, v) of eq. 16. */
+Vec3 triangle_point(const Triangle *triangle, double u, double v);
+
+#endif

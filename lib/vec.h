@@ -1,0 +1,55 @@
+/* vec.h: three-component vectors, used for points, directions and RGB colours.
+ *
+ * Introduced in chapter 1. Doubles throughout (SPEC §9): the room is about 16 units
+ * across and is also tested scaled by 1e-3 and 1e3, where floats would lose the
+ * offsets that keep secondary rays off their own surface (ray.h).
+ *
+ * Everything here is a small pure function, defined inline so the compiler can keep
+ * vectors in registers; vec.c holds the one longer routine, the orthonormal basis.
+ */
+#ifndef VEC_H
+#define VEC_H
+
+#include <math.h>
+
+#define PI 3.14159265358979323846
+
+typedef struct { double x, y, z; } Vec3;
+
+static inline Vec3 vec3(double x, double y, double z) { Vec3 v = {x, y, z}; return v; }
+static inline Vec3 vec3_add(Vec3 a, Vec3 b) { return vec3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline Vec3 vec3_sub(Vec3 a, Vec3 b) { return vec3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline Vec3 vec3_scale(Vec3 a, double s) { return vec3(a.x * s, a.y * s, a.z * s); }
+/* Component-wise product: how a colour filters a colour. */
+static inline Vec3 vec3_mul(Vec3 a, Vec3 b) { return vec3(a.x * b.x, a.y * b.y, a.z * b.z); }
+static inline Vec3 vec3_neg(Vec3 a) { return vec3(-a.x, -a.y, -a.z); }
+static inline double vec3_dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline Vec3 vec3_cross(Vec3 a, Vec3 b)
+{
+    return vec3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline double vec3_length(Vec3 a) { return sqrt(vec3_dot(a, a)); }
+static inline Vec3 vec3_normalize(Vec3 a) { return vec3_scale(a, 1.0 / vec3_length(a)); }
+/* a + s * b, the step along a ray. */
+static inline Vec3 vec3_add_scaled(Vec3 a, Vec3 b, double s)
+{
+    return vec3(a.x + s * b.x, a.y + s * b.y, a.z + s * b.z);
+}
+static inline double vec3_max_abs(Vec3 a) { return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z))); }
+static inline double vec3_max_component(Vec3 a) { return fmax(a.x, fmax(a.y, a.z)); }
+static inline double vec3_average(Vec3 a) { return (a.x + a.y + a.z) / 3.0; }
+static inline int vec3_is_finite(Vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+
+/* Two unit vectors t, b that with the unit vector n form a right-handed orthonormal
+ * basis (t, b, n): the local frame in which hemisphere directions are sampled. */
+void vec3_basis(Vec3 n, Vec3 *t, Vec3 *b);
+
+/* Express a local direction (x along t, y along b, z along n) in world space. */
+static inline Vec3 vec3_from_local(Vec3 local, Vec3 t, Vec3 b, Vec3 n)
+{
+    return vec3(local.x * t.x + local.y * b.x + local.z * n.x,
+                local.x * t.y + local.y * b.y + local.z * n.y,
+                local.x * t.z + local.y * b.z + local.z * n.z);
+}
+
+#endif
