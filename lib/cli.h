@@ -1,0 +1,71 @@
+/* cli.h: the command line every chapter program shares (SPEC §9).
+ *
+ * Introduced in chapter 1. Each program declares which flags it takes (a chapter
+ * accepts only what it uses) and its defaults, which reproduce the report. Values
+ * may follow the flag as the next word or after '=' (--size 200, --size=200).
+ * A bad value is an error that names the flag, on stderr, with exit status 2:
+ *     ch01_whitted: --size: expected a whole number from 1 to 16384, got '0'
+ * --help prints the usage with the defaults and exits 0.
+ */
+#ifndef CLI_H
+#define CLI_H
+
+#include <stdint.h>
+
+enum {
+    FLAG_SCENE = 1u << 0,       /* --scene FILE */
+    FLAG_SIZE = 1u << 1,        /* --size N: image width; height follows the image plane */
+    FLAG_SPP = 1u << 2,         /* --spp N: samples per pixel */
+    FLAG_SHADOW_RAYS = 1u << 3, /* --shadow-rays N: M of eq. 21 (0: lights found by hitting) */
+    FLAG_RR = 1u << 4,          /* --rr ALPHA: Russian roulette survival probability */
+    FLAG_DEPTH = 1u << 5,       /* --depth N: maximum ray depth */
+    FLAG_THREADS = 1u << 6,     /* --threads N: 0 = one per core */
+    FLAG_SEED = 1u << 7,        /* --seed N */
+    FLAG_OUT = 1u << 8,         /* --out DIR */
+    FLAG_QUIET = 1u << 9,       /* --quiet: no progress display */
+    FLAG_FRESNEL = 1u << 10,    /* --fresnel schlick|exact */
+    FLAG_QUICK = 1u << 11,      /* --quick: small and fast, for a first look */
+    FLAG_REFERENCE_SPP = 1u << 12 /* --reference-spp N: samples of the reference image */
+};
+
+/* Flags every chapter program takes. */
+#define FLAGS_COMMON (FLAG_SCENE | FLAG_SIZE | FLAG_THREADS | FLAG_SEED | FLAG_OUT | FLAG_QUIET | FLAG_QUICK)
+
+typedef enum { FRESNEL_SCHLICK, FRESNEL_EXACT } FresnelMode;
+
+typedef struct {
+    const char *scene;
+    int size;
+    int spp;
+    int shadow_rays;
+    double rr;
+    int depth;
+    int threads;
+    uint64_t seed;
+    const char *out;
+    int quiet;
+    FresnelMode fresnel;
+    int quick;
+    int reference_spp;
+    unsigned given; /* the FLAG_ bits the user set on the command line */
+} Options;
+
+typedef struct {
+    const char *summary; /* one line: what the program teaches and reproduces */
+    unsigned flags;      /* the FLAG_ bits it accepts */
+    Options defaults;
+} ProgramInfo;
+
+/* The program's name (argv[0] without its directory), for messages. */
+extern const char *cli_program;
+
+/* Parse argv into *options, starting from info->defaults. Exits on --help (status 0)
+ * and on any error (status 2). */
+void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options);
+
+/* Print "PROGRAM: message" on stderr and exit with `status`. */
+void cli_fail(int status, const char *format, ...);
+
+static inline int cli_given(const Options *options, unsigned flag) { return (options->given & flag) != 0; }
+
+#endif

@@ -1,0 +1,209 @@
+/* render.c: the Monte Carlo pixel loop, threads, progress and interruption
+ * (chapter 1; report §3.3). See render.h for the design. */
+#include "render.h"
+
+#include <pthread.h>
+#include <signal.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+/* What one pixel has received so far. */
+typedef struct {
+    double sum[3];
+    double sum_squares[3];
+    uint32_t finite;   /* samples averaged in */
+} PixelSum;
+
+typedef struct {
+    const Scene *scene;
+    const RenderSettings *settings;
+    Estimator estimate;
+    const void *estimator_settings;
+    PixelSum *pixels;
+    int pass;
+    atomic_int next_row;
+    atomic_long rows_done;   /* over all passes, for the progress display */
+    double start_time;
+} Job;
+
+typedef struct {
+    Job *job;
+    int index;
+    RayCounts rays;
+    uint64_t samples, nonfinite;
+} Worker;
+
+static volatile sig_atomic_t interrupt_requested = 0;
+
+static void on_interrupt(int signal_number)
+{
+    (void)signal_number;
+    interrupt_requested = 1;
+}
+
+void render_install_interrupt(void)
+{
+    struct sigaction action = {0};
+    action.sa_handler = on_interrupt;
+    action.sa_flags = SA_RESETHAND; /* a second SIGINT kills as usual */
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, NULL);
+}
+
+int render_interrupted(void)
+{
+    return interrupt_requested != 0;
+}
+
+int render_core_count(void)
+{
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    return cores > 0 ? (int)cores : 1;
+}
+
+static void show_progress(Job *job)
+{
+    const RenderSettings *s = job->settings;
+    double fraction = (double)atomic_load(&job->rows_done) / ((double)s->spp * s->height);
+    double elapsed = stats_now() - job->start_time;
+    fprintf(stderr, "\r%s: %3.0f%%  sample %d/%d  %.1f s elapsed, about %.0f s left   ",
+            s->label ? s->label : "render", 100.0 * fraction, job->pass + 1, s->spp, elapsed,
+            fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0);
+}
+
+/* Take sample `pass` of every pixel in one row. */
+static void render_row(Worker *worker, int row)
+{
+    Job *job = worker->job;
+    const RenderSettings *s = job->settings;
+    for (int col = 0; col < s->width; col++) {
+        uint64_t index = (uint64_t)row * s->width + col;
+        Rng rng = rng_for_sample(s->seed, index, (uint64_t)job->pass);
+        double u, v;
+        camera_pixel_position(s->sampling, job->pass, s->spp, &rng, &u, &v);
+        Ray ray = camera_ray(&job->scene->camera, s->width, s->height, col, row, u, v);
+        worker->rays.camera++;
+        Vec3 radiance = job->estimate(job->scene, ray, &rng, job->estimator_settings, &worker->rays);
+        worker->samples++;
+        if (!vec3_is_finite(radiance)) {
+            worker->nonfinite++;
+            continue;
+        }
+        PixelSum *pixel = &job->pixels[index];
+        double value[3] = {radiance.x, radiance.y, radiance.z};
+        for (int c = 0; c < 3; c++) {
+            pixel->sum[c] += value[c];
+            pixel->sum_squares[c] += value[c] * value[c];
+        }
+        pixel->finite++;
+    }
+}
+
+static void *work(void *argument)
+{
+    Worker *worker = argument;
+    Job *job = worker->job;
+    int show = worker->index == 0 && job->settings->progress && isatty(STDERR_FILENO);
+    double last_shown = 0.0;
+    for (;;) {
+        if (render_interrupted())
+            break;
+        int row = atomic_fetch_add(&job->next_row, 1);
+        if (row >= job->settings->height)
+            break;
+        render_row(worker, row);
+        atomic_fetch_add(&job->rows_done, 1);
+        if (show && stats_now() - last_shown > 0.25) {
+            last_shown = stats_now();
+            show_progress(job);
+        }
+    }
+    return NULL;
+}
+
+/* Mean and standard error of every pixel from its sums. */
+static void finish_images(const PixelSum *pixels, RenderResult *result)
+{
+    Image *mean = &result->image, *error = &result->std_error;
+    for (int row = 0; row < mean->height; row++) {
+        for (int col = 0; col < mean->width; col++) {
+            const PixelSum *p = &pixels[(long)row * mean->width + col];
+            double n = p->finite, m[3] = {0, 0, 0}, e[3] = {0, 0, 0};
+            for (int c = 0; c < 3 && n > 0; c++) {
+                m[c] = p->sum[c] / n;
+                if (n > 1) {
+                    double variance = (p->sum_squares[c] - n * m[c] * m[c]) / (n - 1);
+                    e[c] = sqrt(fmax(variance, 0.0) / n);
+                }
+            }
+            image_set(mean, col, row, vec3(m[0], m[1], m[2]));
+            image_set(error, col, row, vec3(e[0], e[1], e[2]));
+        }
+    }
+}
+
+int render(const Scene *scene, const RenderSettings *settings, Estimator estimate,
+           const void *estimator_settings, RenderResult *result)
+{
+    RenderResult r = {0};
+    r.threads = settings->threads > 0 ? settings->threads : render_core_count();
+    if (r.threads > settings->height)
+        r.threads = settings->height;
+    r.image = image_new(settings->width, settings->height);
+    r.std_error = image_new(settings->width, settings->height);
+    PixelSum *pixels = calloc((size_t)settings->width * settings->height, sizeof *pixels);
+    Worker *workers = calloc((size_t)r.threads, sizeof *workers);
+    pthread_t *threads = calloc((size_t)r.threads, sizeof *threads);
+    if (!r.image.pixels || !r.std_error.pixels || !pixels || !workers || !threads) {
+        free(pixels);
+        free(workers);
+        free(threads);
+        render_result_free(&r);
+        return -1;
+    }
+
+    Job job = {scene, settings, estimate, estimator_settings, pixels, 0, 0, 0, stats_now()};
+    for (int i = 0; i < r.threads; i++)
+        workers[i] = (Worker){&job, i, {0, 0, 0}, 0, 0};
+    for (job.pass = 0; job.pass < settings->spp && !render_interrupted(); job.pass++) {
+        atomic_store(&job.next_row, 0);
+        int started = 1;
+        for (int i = 1; i < r.threads; i++)
+            if (pthread_create(&threads[i], NULL, work, &workers[i]) == 0)
+                started = i + 1;
+            else
+                break; /* fewer threads this pass: the rows are still all taken */
+        work(&workers[0]);
+        for (int i = 1; i < started; i++)
+            pthread_join(threads[i], NULL);
+    }
+    r.seconds = stats_now() - job.start_time;
+    if (settings->progress && isatty(STDERR_FILENO))
+        fprintf(stderr, "\r%*s\r", 79, "");
+
+    for (int i = 0; i < r.threads; i++) {
+        ray_counts_add(&r.rays, workers[i].rays);
+        r.samples += workers[i].samples;
+        r.nonfinite += workers[i].nonfinite;
+    }
+    r.interrupted = render_interrupted();
+    finish_images(pixels, &r);
+    free(pixels);
+    free(workers);
+    free(threads);
+    *result = r;
+    return 0;
+}
+
+void render_result_free(RenderResult *result)
+{
+    image_free(&result->image);
+    image_free(&result->std_error);
+}
+
+double render_samples_per_pixel(const RenderResult *result)
+{
+    return (double)result->samples / ((double)result->image.width * result->image.height);
+}

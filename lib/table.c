@@ -1,0 +1,67 @@
+/* table.c: printing the cost/accuracy table and its CSV (chapter 1). See table.h. */
+#include "table.h"
+
+#include <math.h>
+
+#include "atomic_file.h"
+
+double table_mrays_per_second(const TableRow *row)
+{
+    return row->seconds > 0.0 ? 1e-6 * (double)ray_counts_total(row->rays) / row->seconds : 0.0;
+}
+
+/* A measured value in a fixed-width column, or "-". */
+static void print_measure(FILE *out, const char *format, double value)
+{
+    if (isnan(value))
+        fprintf(out, " %10s", "-");
+    else
+        fprintf(out, format, value);
+}
+
+void table_print(FILE *out, const TableRow *rows, int count)
+{
+    fprintf(out, "%-22s %-34s %7s %8s %3s %10s %10s %10s %7s %10s %10s %10s %5s\n", "panel",
+            "settings", "spp", "seconds", "thr", "camera", "bounce", "shadow", "Mray/s", "rmse",
+            "rel_mse", "efficiency", "nan");
+    for (int i = 0; i < count; i++) {
+        const TableRow *r = &rows[i];
+        fprintf(out, "%-22s %-34s %7.1f %8.2f %3d %10llu %10llu %10llu %7.2f", r->panel,
+                r->settings, r->spp, r->seconds, r->threads, (unsigned long long)r->rays.camera,
+                (unsigned long long)r->rays.bounce, (unsigned long long)r->rays.shadow,
+                table_mrays_per_second(r));
+        print_measure(out, " %10.5f", r->rmse);
+        print_measure(out, " %10.3e", r->rel_mse);
+        print_measure(out, " %10.3g", r->efficiency);
+        fprintf(out, " %5llu\n", r->nonfinite);
+    }
+}
+
+static void csv_measure(FILE *out, double value)
+{
+    if (isnan(value))
+        fputc(',', out);
+    else
+        fprintf(out, ",%.9g", value);
+}
+
+int table_write_csv(const char *path, const TableRow *rows, int count)
+{
+    AtomicFile file;
+    if (atomic_open(&file, path) != 0)
+        return -1;
+    fprintf(file.file, "panel,settings,spp,seconds,threads,camera_rays,bounce_rays,shadow_rays,"
+                       "mrays_per_second,rmse,rel_mse,efficiency,nonfinite\n");
+    for (int i = 0; i < count; i++) {
+        const TableRow *r = &rows[i];
+        fprintf(file.file, "%s,\"%s\",%.6g,%.6f,%d,%llu,%llu,%llu,%.6g", r->panel, r->settings,
+                r->spp, r->seconds, r->threads, (unsigned long long)r->rays.camera,
+                (unsigned long long)r->rays.bounce, (unsigned long long)r->rays.shadow,
+                table_mrays_per_second(r));
+        csv_measure(file.file, r->rmse);
+        csv_measure(file.file, r->rel_mse);
+        csv_measure(file.file, r->efficiency);
+        fprintf(file.file, ",%llu\n", r->nonfinite);
+    }
+    return atomic_close(&file, 0);
+}
