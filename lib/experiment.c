@@ -169,6 +169,30 @@ TableRow experiment_row(const char *panel, const char *settings, const RenderRes
     return row;
 }
 
+TableRow experiment_panel(const Options *options, const Scene *scene,
+                          const RenderSettings *settings, Estimator estimate,
+                          const void *estimator_settings, const char *name,
+                          const char *settings_text, const Reference *reference,
+                          RenderResult *result)
+{
+    experiment_render(scene, settings, estimate, estimator_settings, result);
+    experiment_write_image(options, name, &result->image, PANEL_EXPOSURE);
+    experiment_exit_if_interrupted(result);
+    TableRow row = experiment_row(name, settings_text, result);
+    if (reference)
+        measure_fill_row(&row, &result->image, reference);
+    return row;
+}
+
+void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size)
+{
+    if (isnan(row->rmse))
+        snprintf(caption, size, "%s\n%s\n%.2f s", title, row->settings, row->seconds);
+    else
+        snprintf(caption, size, "%s\n%s\n%.2f s, RMSE %.4f", title, row->settings,
+                 row->seconds, row->rmse);
+}
+
 void experiment_exit_if_interrupted(const RenderResult *result)
 {
     if (!result->interrupted)

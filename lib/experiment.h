@@ -37,6 +37,9 @@ void experiment_render(const Scene *scene, const RenderSettings *settings, Estim
 /* The path of `file_name` in the output directory, which is created if needed. */
 void experiment_path(const Options *options, const char *file_name, char *path, size_t size);
 
+/* Exposure of every panel's PNG: radiance 1 is white. */
+#define PANEL_EXPOSURE 1.0
+
 /* Where references are cached (measure.h). */
 #define REFERENCE_DIRECTORY "build/references"
 
@@ -62,6 +65,19 @@ void experiment_write_table(const Options *options, const char *name, const Tabl
 
 /* A table row with the cost columns of a render filled in and no error measured. */
 TableRow experiment_row(const char *panel, const char *settings, const RenderResult *result);
+
+/* One panel of a figure: render it, write it as NAME.png/.pfm, and return its table
+ * row, with the error columns filled when a reference is given (else NULL). The
+ * rendered image stays in *result for the figure. An interrupted render is saved,
+ * then the program exits (experiment_exit_if_interrupted). */
+TableRow experiment_panel(const Options *options, const Scene *scene,
+                          const RenderSettings *settings, Estimator estimate,
+                          const void *estimator_settings, const char *name,
+                          const char *settings_text, const Reference *reference,
+                          RenderResult *result);
+
+/* A figure caption from a table row: its settings, then time and error. */
+void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size);
 
 /* After an interrupted render has been saved: say so and exit with status 130. */
 void experiment_exit_if_interrupted(const RenderResult *result);

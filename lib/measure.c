@@ -53,6 +53,19 @@ double measure_rms(const Image *image)
     return sqrt(sum / n);
 }
 
+void measure_image_mean(const Image *image, const Image *std_error, double *mean,
+                        double *mean_std_error)
+{
+    long n = 3L * image->width * image->height;
+    double sum = 0.0, variance = 0.0;
+    for (long i = 0; i < n; i++) {
+        sum += image->pixels[i];
+        variance += (double)std_error->pixels[i] * std_error->pixels[i];
+    }
+    *mean = sum / n;
+    *mean_std_error = sqrt(variance) / n;
+}
+
 void measure_fill_row(TableRow *row, const Image *image, const Reference *reference)
 {
     measure_error(image, &reference->image, &row->rmse, &row->rel_mse);

@@ -48,6 +48,12 @@ void measure_error(const Image *image, const Image *reference, double *rmse, dou
 /* Root mean square over all pixels and channels. */
 double measure_rms(const Image *image);
 
+/* The mean over all pixels and channels of an image of per-pixel means, and the
+ * standard error of that mean from the per-pixel standard errors (pixels are
+ * independent: se = sqrt(sum se_i^2) / N). */
+void measure_image_mean(const Image *image, const Image *std_error, double *mean,
+                        double *mean_std_error);
+
 /* Fill a table row's error columns from an image and the reference. */
 void measure_fill_row(TableRow *row, const Image *image, const Reference *reference);
 

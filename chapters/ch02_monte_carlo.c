@@ -1,0 +1,93 @@
+/* Chapter 2: Monte Carlo diffuse (report §2.2, §3.3, §3.5.3; Figures 2 and 8).
+ *
+ * New concepts (lib/): lambert (eq. 8), hemisphere (cosine-weighted sampling by
+ * inverting the CDF, eqs. 9-12), diffuse, path (the path tracer, here with M = 0:
+ * light is found only when a path happens to hit the lamp), measure (errors against a
+ * reference), chi_square (tests only).
+ *
+ * The experiment:
+ *   - Figure 2: the room by Monte Carlo path tracing: colour bleeding (red tint on the
+ *     left of the ceiling, green on the right) and soft shadows, and noise;
+ *   - Figure 8: 1 vs 4 samples per pixel on sub-pixels;
+ *   - what the report only describes (§3.3.1): sub-pixels vs random positions at equal
+ *     samples, with their errors.
+ * The reference is the path tracer with one shadow ray (chapter 3), which estimates the
+ * same quantity with less noise.
+ */
+#include <stdio.h>
+
+#include "experiment.h"
+#include "path.h"
+
+typedef struct {
+    const char *name;
+    const char *title;
+    int spp;
+    PixelSampling sampling;
+} Panel;
+
+int main(int argc, char **argv)
+{
+    ProgramInfo info = {
+        "Chapter 2, Monte Carlo diffuse: reproduces the report's Figures 2 and 8 and compares\n"
+        "sub-pixels with random positions.",
+        FLAGS_COMMON | FLAG_SPP | FLAG_DEPTH | FLAG_REFERENCE_SPP,
+        {.scene = "scenes/room.scene", .size = 800, .spp = 16, .depth = 8, .seed = 1,
+         .out = "build/figures", .reference_spp = 256},
+    };
+    Options options;
+    cli_parse(argc, argv, &info, &options);
+    if (options.quick && !cli_given(&options, FLAG_SIZE))
+        options.size = 200;
+
+    Scene scene;
+    experiment_load_scene(&options, NEEDS_AREA_LIGHT, &scene);
+    PathSettings hitting = {0, 1.0, options.depth, FRESNEL_SCHLICK};
+    PathSettings with_shadow_ray = {1, 1.0, options.depth, FRESNEL_SCHLICK};
+    char description[96];
+    path_describe(&with_shadow_ray, description, sizeof description);
+    Reference reference;
+    experiment_reference(&options, &scene, path_radiance, &with_shadow_ray, description,
+                         options.reference_spp, &reference);
+
+    const Panel panels[] = {
+        {"ch02_figure8_1spp", "Figure 8, left", 1, PIXEL_SUBPIXELS},
+        {"ch02_figure8_4spp", "Figure 8, right", 4, PIXEL_SUBPIXELS},
+        {"ch02_random_4spp", "random positions", 4, PIXEL_RANDOM},
+        {"ch02_figure2", "Figure 2", options.spp, PIXEL_SUBPIXELS},
+        {"ch02_random", "random positions", options.spp, PIXEL_RANDOM},
+    };
+    enum { PANELS = sizeof panels / sizeof panels[0] };
+    TableRow rows[PANELS];
+    Image images[PANELS];
+    char captions[PANELS][256];
+    for (int i = 0; i < PANELS; i++) {
+        char settings_text[96];
+        snprintf(settings_text, sizeof settings_text, "%d spp %s, M=0 depth=%d", panels[i].spp,
+                 panels[i].sampling == PIXEL_RANDOM ? "random" : "sub-pixels", options.depth);
+        RenderSettings settings = experiment_render_settings(&options, &scene, panels[i].spp,
+                                                             panels[i].sampling, panels[i].name);
+        RenderResult result;
+        rows[i] = experiment_panel(&options, &scene, &settings, path_radiance, &hitting,
+                                   panels[i].name, settings_text, &reference, &result);
+        experiment_caption(&rows[i], panels[i].title, captions[i], sizeof captions[i]);
+        images[i] = result.image;
+        image_free(&result.std_error);
+    }
+
+    const char *figure2[] = {captions[3]};
+    const char *figure8[] = {captions[0], captions[1]};
+    const char *supersampling[] = {captions[1], captions[2], captions[3], captions[4]};
+    Image supersampling_images[] = {images[1], images[2], images[3], images[4]};
+    experiment_write_figure(&options, "ch02_figure2", &images[3], figure2, 1, PANEL_EXPOSURE);
+    experiment_write_figure(&options, "ch02_figure8", images, figure8, 2, PANEL_EXPOSURE);
+    experiment_write_figure(&options, "ch02_subpixels_vs_random", supersampling_images,
+                            supersampling, 4, PANEL_EXPOSURE);
+    experiment_write_table(&options, "ch02_table", rows, PANELS);
+
+    for (int i = 0; i < PANELS; i++)
+        image_free(&images[i]);
+    measure_reference_free(&reference);
+    scene_free(&scene);
+    return 0;
+}

@@ -1,0 +1,78 @@
+/* path.c: the Monte Carlo path tracer (chapters 2-7). See path.h. */
+#include "path.h"
+
+#include <stdio.h>
+
+#include "area_light.h"
+#include "diffuse.h"
+#include "fresnel.h"
+#include "mirror.h"
+#include "roulette.h"
+#include "schlick.h"
+#include "snell.h"
+
+/* Glass: pick reflection (probability R) or refraction for ray direction d hitting a
+ * surface with normal n facing d's origin. Returns the new direction. */
+static Vec3 glass_scatter(Vec3 d, Vec3 n, int entering, double ior, FresnelMode mode, Rng *rng)
+{
+    double n_i = entering ? 1.0 : ior, n_t = entering ? ior : 1.0;
+    double cos_i = -vec3_dot(d, n);
+    double reflectance = mode == FRESNEL_EXACT ? fresnel_reflectance(cos_i, n_i, n_t)
+                                               : schlick_reflectance(cos_i, n_i, n_t);
+    Vec3 refracted;
+    if (rng_uniform(rng) >= reflectance && snell_refract(d, n, n_i, n_t, &refracted))
+        return refracted;
+    return mirror_reflect(d, n);
+}
+
+Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_pointer,
+                   RayCounts *counts)
+{
+    const PathSettings *s = settings_pointer;
+    Vec3 radiance = vec3(0, 0, 0), throughput = vec3(1, 1, 1);
+    int add_emission = 1; /* camera ray, or after a specular bounce, or M = 0 */
+    for (int segment = 1;; segment++) {
+        Hit hit;
+        if (!scene_intersect(scene, ray, INFINITY, &hit))
+            break;
+        const Material *m = &scene->materials[hit.material];
+        int front = vec3_dot(ray.dir, hit.normal) < 0.0;
+        Vec3 n = front ? hit.normal : vec3_neg(hit.normal); /* facing the incoming ray */
+        Vec3 wo = vec3_neg(ray.dir);
+        if (front && add_emission)
+            radiance = vec3_add(radiance, vec3_mul(throughput, m->emission));
+        if (m->kind == MATERIAL_LIGHT || segment >= s->max_depth)
+            break; /* an emitter reflects nothing; or no segment may follow this one */
+
+        Vec3 direction;
+        if (material_is_diffuse(m)) {
+            if (s->shadow_rays > 0) {
+                Vec3 direct = area_light_direct(scene, hit.point, n, wo, m, s->shadow_rays, rng, counts);
+                radiance = vec3_add(radiance, vec3_mul(throughput, direct));
+            }
+            if (!roulette_survives(s->rr_survival, rng))
+                break;
+            if (s->rr_survival < 1.0)
+                throughput = vec3_scale(throughput, 1.0 / s->rr_survival);
+            double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+            throughput = vec3_mul(throughput, diffuse_sample(m, n, wo, u1, u2, &direction));
+            add_emission = s->shadow_rays == 0;
+        } else if (m->kind == MATERIAL_MIRROR) {
+            direction = mirror_reflect(ray.dir, n);
+            throughput = vec3_mul(throughput, m->reflectance);
+            add_emission = 1;
+        } else {
+            direction = glass_scatter(ray.dir, n, front, m->ior, s->fresnel, rng);
+            add_emission = 1;
+        }
+        counts->bounce++;
+        ray = ray_spawn(hit.point, n, direction);
+    }
+    return radiance;
+}
+
+void path_describe(const PathSettings *s, char *text, int size)
+{
+    snprintf(text, (size_t)size, "M=%d rr=%g depth=%d %s", s->shadow_rays, s->rr_survival,
+             s->max_depth, s->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
+}

@@ -1,0 +1,46 @@
+/* path.h: the Monte Carlo path tracer (report §2.2, §3.4-3.7; eq. 1).
+ *
+ * Introduced in chapter 2; chapters 3-7 switch on its options one by one:
+ *   shadow_rays  M of eq. 21 (chapter 3). M = 0: light is found only when a path hits
+ *                it (chapter 2). M >= 1: at every diffuse hit, M shadow rays estimate
+ *                the direct light (area_light.h), and emission that a path then hits
+ *                right after a diffuse bounce is not added again (it was counted by
+ *                the shadow rays); emission seen from the camera or after a mirror or
+ *                glass bounce is added, since no shadow ray accounts for it.
+ *   rr_survival  Russian roulette's alpha (chapter 6; roulette.h); 1 = no roulette.
+ *   max_depth    a path has at most this many segments, the camera ray being the first.
+ *                The same count bounds both ways of finding light (a shadow ray is the
+ *                segment after its hit), so every M estimates the same quantity.
+ *   fresnel      glass reflectance: Schlick (chapter 1) or exact Fresnel (chapter 4).
+ *
+ * One sample of eq. 1 along a path x_1, x_2, ...: the throughput T (product of
+ * f cos / pdf over the bounces so far, divided by alpha at each roulette survival)
+ * multiplies each light contribution. At a diffuse surface the next direction is drawn
+ * from the cosine-weighted hemisphere (diffuse.h); at a mirror it is the mirror
+ * direction, weighted by the mirror's colour; at glass it is reflection with
+ * probability R and refraction with probability 1 - R, so the weight R / R (or
+ * (1-R)/(1-R)) is 1: one branch per path instead of Whitted's two, unbiased because
+ * the branch probabilities equal the Fresnel weights. An emitter reflects nothing and
+ * ends the path.
+ */
+#ifndef PATH_H
+#define PATH_H
+
+#include "cli.h"
+#include "render.h"
+
+typedef struct {
+    int shadow_rays;
+    double rr_survival;
+    int max_depth;
+    FresnelMode fresnel;
+} PathSettings;
+
+/* An Estimator (render.h); settings points to a PathSettings. */
+Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                   RayCounts *counts);
+
+/* The settings as text for tables and captions, e.g. "M=1 rr=0.25 depth=16 schlick". */
+void path_describe(const PathSettings *settings, char *text, int size);
+
+#endif

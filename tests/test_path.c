@@ -1,0 +1,189 @@
+/* Tests of the path tracer (lib/path.c, chapters 2, 3 and 6): the estimators are
+ * unbiased, checked against closed forms.
+ *
+ * White furnace (SPEC §7): inside a closed box whose every surface is Lambertian with
+ * reflectance rho and emits Le (from the side facing in), the radiance everywhere is
+ *     L = Le + rho L  =>  L = Le / (1 - rho),
+ * and a path limited to D segments sees exactly the first D terms of that series,
+ *     L_D = Le (1 - rho^D) / (1 - rho).
+ * Each test averages many independent samples, computes the standard error of the mean
+ * from their spread, and requires |mean - expected| < 4 standard errors (a false
+ * failure about once in 16,000 runs; the seed is fixed, so a run is reproducible).
+ * Each also requires the standard error to be small, so the test has the power to see
+ * a bias of a few percent.
+ *
+ * Two facts these tests rely on, worth knowing:
+ *   - in the furnace, chapter 2's estimator has zero variance: every vertex adds Le and
+ *     every bounce multiplies by rho, whatever the direction; its mean must then be exact
+ *     (to rounding);
+ *   - roulette multiplies the weight by rho / alpha at each survival, so the second
+ *     moment is a geometric series in rho^2 / alpha: the variance is finite only for
+ *     alpha > rho^2. The roulette tests choose rho and alpha on that side; below it, the
+ *     measured standard error itself cannot be trusted (the room's alpha = 0.01 of
+ *     Figure 12 is far below it, which is why that image is so noisy).
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include "path.h"
+
+#define SAMPLES 200000
+#define TOLERANCE_SIGMAS 4.0
+
+/* A closed box [-1,1]^3 of 12 triangles facing inwards, all of one material, plus
+ * optionally a glass sphere inside. */
+static void furnace_box(Scene *scene, double rho, double emission)
+{
+    scene_init(scene);
+    Material m = {"furnace", MATERIAL_LAMBERT, vec3(rho, rho, rho),
+                  vec3(emission, emission, emission), 0.0, 1.0};
+    int material = scene_add_material(scene, m);
+    /* Each face as corners in counter-clockwise order seen from inside the box. */
+    static const double faces[6][4][3] = {
+        {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}},  /* floor, normal +z */
+        {{-1, -1, 1}, {-1, 1, 1}, {1, 1, 1}, {1, -1, 1}},      /* ceiling, normal -z */
+        {{-1, -1, -1}, {-1, 1, -1}, {-1, 1, 1}, {-1, -1, 1}},  /* x = -1, normal +x */
+        {{1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {1, 1, -1}},      /* x = +1, normal -x */
+        {{-1, -1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, -1, -1}},  /* y = -1, normal +y */
+        {{-1, 1, -1}, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}},      /* y = +1, normal -y */
+    };
+    for (int f = 0; f < 6; f++) {
+        Vec3 p[4];
+        for (int k = 0; k < 4; k++)
+            p[k] = vec3(faces[f][k][0], faces[f][k][1], faces[f][k][2]);
+        scene_add_triangle(scene, triangle_make(p[0], p[1], p[2], material));
+        scene_add_triangle(scene, triangle_make(p[0], p[2], p[3], material));
+    }
+    assert_int_equal(scene_prepare(scene), 0);
+}
+
+/* Mean radiance (average of the channels) and its standard error over SAMPLES rays
+ * from `origin` in random directions. */
+static void estimate(const Scene *scene, const PathSettings *settings, Vec3 origin,
+                     uint64_t seed, double *mean, double *std_error)
+{
+    double sum = 0.0, sum_squares = 0.0;
+    RayCounts counts = {0, 0, 0};
+    for (int i = 0; i < SAMPLES; i++) {
+        Rng rng = rng_for_sample(seed, 0, (uint64_t)i);
+        double z = 2.0 * rng_uniform(&rng) - 1.0, phi = 2.0 * PI * rng_uniform(&rng);
+        double r = sqrt(1.0 - z * z);
+        Ray ray = {origin, vec3(r * cos(phi), r * sin(phi), z)};
+        double value = vec3_average(path_radiance(scene, ray, &rng, settings, &counts));
+        sum += value;
+        sum_squares += value * value;
+    }
+    *mean = sum / SAMPLES;
+    *std_error = sqrt((sum_squares / SAMPLES - *mean * *mean) / (SAMPLES - 1));
+}
+
+/* |mean - expected| within TOLERANCE_SIGMAS standard errors (plus rounding, for the
+ * zero-variance cases), and a standard error below max_relative_error * expected. */
+static void assert_close(double mean, double std_error, double expected, double max_relative_error)
+{
+    print_message("    mean %.6f +- %.6f, expected %.6f\n", mean, std_error, expected);
+    assert_true(fabs(mean - expected) <= TOLERANCE_SIGMAS * std_error + 1e-12 * expected);
+    assert_true(std_error < max_relative_error * expected);
+}
+
+static void furnace(const PathSettings *settings, double rho, double expected)
+{
+    Scene scene;
+    furnace_box(&scene, rho, 1.0);
+    double mean, std_error;
+    estimate(&scene, settings, vec3(0.1, -0.2, 0.3), 7, &mean, &std_error);
+    assert_close(mean, std_error, expected, 0.01);
+    scene_free(&scene);
+}
+
+/* Chapter 2's estimator (no shadow rays, no roulette) with depth D sees the first D
+ * terms of the series: rho = 0.5, D = 6 gives (1 - 0.5^6) / 0.5 = 1.96875. */
+static void test_furnace_chapter2_truncated_series(void **state)
+{
+    (void)state;
+    PathSettings settings = {0, 1.0, 6, FRESNEL_SCHLICK};
+    furnace(&settings, 0.5, (1.0 - pow(0.5, 6)) / 0.5);
+}
+
+/* Chapter 3's estimator (one and several shadow rays): the same series. */
+static void test_furnace_chapter3_shadow_rays(void **state)
+{
+    (void)state;
+    PathSettings one = {1, 1.0, 6, FRESNEL_SCHLICK};
+    furnace(&one, 0.5, (1.0 - pow(0.5, 6)) / 0.5);
+    PathSettings four = {4, 1.0, 6, FRESNEL_SCHLICK};
+    furnace(&four, 0.5, (1.0 - pow(0.5, 6)) / 0.5);
+}
+
+/* Chapter 6's estimator (roulette, depth practically unlimited): the full series
+ * Le / (1 - rho) = 4 for rho = 0.75, with and without shadow rays (alpha = 0.75 >
+ * rho^2 = 0.5625: finite variance). */
+static void test_furnace_chapter6_roulette(void **state)
+{
+    (void)state;
+    PathSettings hitting = {0, 0.75, 200, FRESNEL_SCHLICK};
+    furnace(&hitting, 0.75, 4.0);
+    PathSettings shadow = {1, 0.75, 200, FRESNEL_SCHLICK};
+    furnace(&shadow, 0.75, 4.0);
+}
+
+/* Reflectance 0 and 1 (SPEC §7): rho = 0 sees only the emission; rho = 1 with depth D
+ * sees exactly D times it (every term of the series is Le). Without shadow rays both
+ * have zero variance; with them, eq. 21 estimates rho * Le = 1 at each of the 9
+ * vertices that may still send a shadow ray (every direction sees an emitting wall),
+ * with the large variance of area sampling near the box's edges (1/d^2). */
+static void test_furnace_reflectance_extremes(void **state)
+{
+    (void)state;
+    PathSettings black = {1, 0.5, 10, FRESNEL_SCHLICK};
+    furnace(&black, 0.0, 1.0);
+    PathSettings white_hitting = {0, 1.0, 10, FRESNEL_SCHLICK};
+    furnace(&white_hitting, 1.0, 10.0);
+    PathSettings white_shadow = {1, 1.0, 10, FRESNEL_SCHLICK};
+    Scene scene;
+    furnace_box(&scene, 1.0, 1.0);
+    double mean, std_error;
+    estimate(&scene, &white_shadow, vec3(0, 0, 0), 3, &mean, &std_error);
+    assert_close(mean, std_error, 10.0, 0.05);
+    scene_free(&scene);
+}
+
+/* Roulette is unbiased (chapter 6 "must show"): in the furnace, alpha = 0.05, 0.5 and
+ * 1 give the same mean within their combined standard errors. rho = 0.2, so that even
+ * alpha = 0.05 > rho^2 = 0.04 has finite variance. */
+static void test_roulette_unbiased(void **state)
+{
+    (void)state;
+    Scene scene;
+    furnace_box(&scene, 0.2, 1.0);
+    const double alphas[] = {0.05, 0.5, 1.0};
+    double means[3], errors[3];
+    for (int i = 0; i < 3; i++) {
+        PathSettings settings = {1, alphas[i], 40, FRESNEL_SCHLICK};
+        estimate(&scene, &settings, vec3(0.3, 0.3, -0.5), 11 + (uint64_t)i, &means[i], &errors[i]);
+        print_message("    alpha %.2f: %.5f +- %.5f\n", alphas[i], means[i], errors[i]);
+    }
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 3; j++)
+            assert_true(fabs(means[i] - means[j]) <
+                        TOLERANCE_SIGMAS * sqrt(errors[i] * errors[i] + errors[j] * errors[j]));
+    /* And they all agree with the closed form, (1 - 0.2^40) / (1 - 0.2). */
+    for (int i = 0; i < 3; i++)
+        assert_close(means[i], errors[i], (1.0 - pow(0.2, 40)) / 0.8, 0.02);
+    scene_free(&scene);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_furnace_chapter2_truncated_series),
+        cmocka_unit_test(test_furnace_chapter3_shadow_rays),
+        cmocka_unit_test(test_furnace_chapter6_roulette),
+        cmocka_unit_test(test_furnace_reflectance_extremes),
+        cmocka_unit_test(test_roulette_unbiased),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
