@@ -1,0 +1,233 @@
+/* Tests of area-light sampling and the direct-light estimator of eq. 21
+ * (lib/area_light.c, chapter 3).
+ *
+ * 1. Chi-square goodness of fit (chi_square.h) of area_light_sample: two lights of
+ *    different areas; each sample is binned by which light it landed on and where, in
+ *    the light's own (u, v) coordinates (eq. 16) on an n x n grid. Uniform density
+ *    over the total area means each light gets area_i / A of the samples, spread
+ *    uniformly over its triangle {u, v >= 0, u + v <= 1}: a grid cell below the
+ *    diagonal expects all of its share, a cell the diagonal cuts expects half.
+ *    Significance level 1%, 400,000 samples, fixed seed. The same test rejects a
+ *    deliberately wrong sampler (s = u1 instead of sqrt(u1), which crowds the samples
+ *    towards v0): observed X^2 = 330,686 with 71 degrees of freedom, p = 0
+ *    (the correct sampler: X^2 = 83.8, p = 0.14).
+ * 2. Eq. 21 against a closed form: a point on the floor right under the corner of a
+ *    parallel a x b rectangular light at height h. Its configuration factor is
+ *        F = 1/(2 pi) [ A/sqrt(1+A^2) atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2) atan(A/sqrt(1+B^2)) ],
+ *    A = a/h, B = b/h, so a Lambertian point there reflects L = rho Le F.
+ *    The mean of many estimates must be within 4 standard errors of it, for M = 1 and
+ *    M = 64 shadow rays; and M = 64 must have about 1/64 of the variance of M = 1.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include "area_light.h"
+#include "chi_square.h"
+
+#define GRID 8
+#define SAMPLES 400000
+
+/* Two lights: a triangle of area 2 and one of area 0.5, in different places. */
+static void two_lights(Scene *scene)
+{
+    scene_init(scene);
+    Material lamp = {"lamp", MATERIAL_LIGHT, vec3(0, 0, 0), vec3(1, 2, 3), 0.0, 1.0};
+    int m = scene_add_material(scene, lamp);
+    scene_add_triangle(scene, triangle_make(vec3(0, 0, 0), vec3(2, 0, 0), vec3(0, 2, 0), m));
+    scene_add_triangle(scene, triangle_make(vec3(5, 0, 1), vec3(5, 1, 1), vec3(5, 0, 2), m));
+    assert_int_equal(scene_prepare(scene), 0);
+}
+
+/* The bin of point p on light triangle `light` (its (u, v) cell). */
+static int bin_of(const Scene *scene, int light, Vec3 p)
+{
+    const Triangle *t = &scene->triangles[scene->light_triangles[light]];
+    /* Solve p - v0 = u e1 + v e2 in the least-squares sense (exact for p in the plane). */
+    Vec3 d = vec3_sub(p, t->v0);
+    double a = vec3_dot(t->e1, t->e1), b = vec3_dot(t->e1, t->e2), c = vec3_dot(t->e2, t->e2);
+    double r = vec3_dot(d, t->e1), s = vec3_dot(d, t->e2), det = a * c - b * b;
+    double u = (c * r - b * s) / det, v = (a * s - b * r) / det;
+    int i = (int)fmin(GRID - 1, fmax(0, floor(u * GRID)));
+    int j = (int)fmin(GRID - 1, fmax(0, floor(v * GRID)));
+    return (light * GRID + i) * GRID + j;
+}
+
+/* Which light a point lies on: the one whose plane it is in. */
+static int light_of(const Scene *scene, Vec3 p)
+{
+    for (int k = 0; k < scene->light_count; k++) {
+        const Triangle *t = &scene->triangles[scene->light_triangles[k]];
+        if (fabs(vec3_dot(vec3_sub(p, t->v0), t->normal)) < 1e-9)
+            return k;
+    }
+    fail_msg("sample on no light");
+    return -1;
+}
+
+typedef LightSample (*Sampler)(const Scene *scene, double u_select, double u1, double u2);
+
+/* The p-value of the chi-square test of `sample` against uniform density by area. */
+static double area_sampling_p_value(Sampler sample)
+{
+    Scene scene;
+    two_lights(&scene);
+    enum { BINS = 2 * GRID * GRID };
+    double observed[BINS] = {0}, expected[BINS];
+    for (int i = 0; i < SAMPLES; i++) {
+        Rng rng = rng_for_sample(99, 0, (uint64_t)i);
+        double u_select = rng_uniform(&rng), u1 = rng_uniform(&rng), u2 = rng_uniform(&rng);
+        LightSample s = sample(&scene, u_select, u1, u2);
+        observed[bin_of(&scene, light_of(&scene, s.point), s.point)] += 1.0;
+    }
+    for (int k = 0; k < 2; k++) {
+        double share = scene.triangles[scene.light_triangles[k]].area / scene.light_area;
+        for (int i = 0; i < GRID; i++)
+            for (int j = 0; j < GRID; j++) {
+                /* Fraction of the (u, v) triangle (area 1/2) in cell (i, j). */
+                double cell = 1.0 / (GRID * GRID);
+                double inside = i + j < GRID - 1 ? cell : i + j == GRID - 1 ? cell / 2 : 0.0;
+                expected[(k * GRID + i) * GRID + j] = SAMPLES * share * inside / 0.5;
+            }
+    }
+    int dof;
+    double statistic = chi_square_statistic(observed, expected, BINS, &dof);
+    double p = chi_square_p_value(statistic, dof);
+    print_message("    X^2 = %.1f, %d degrees of freedom, p = %.3g\n", statistic, dof, p);
+    scene_free(&scene);
+    return p;
+}
+
+/* The wrong sampler of the header comment: s = u1 instead of sqrt(u1). */
+static LightSample wrong_sample(const Scene *scene, double u_select, double u1, double u2)
+{
+    LightSample right = area_light_sample(scene, u_select, u1, u2);
+    int k = light_of(scene, right.point);
+    const Triangle *t = &scene->triangles[scene->light_triangles[k]];
+    right.point = triangle_point(t, u1 * (1.0 - u2), u1 * u2);
+    return right;
+}
+
+static void test_sampling_is_uniform_by_area(void **state)
+{
+    (void)state;
+    assert_true(area_sampling_p_value(area_light_sample) > 0.01);
+}
+
+static void test_wrong_sampler_is_rejected(void **state)
+{
+    (void)state;
+    assert_true(area_sampling_p_value(wrong_sample) < 0.01);
+}
+
+/* Samples carry their light's normal and emission. */
+static void test_sample_fields(void **state)
+{
+    (void)state;
+    Scene scene;
+    two_lights(&scene);
+    LightSample s = area_light_sample(&scene, 0.99, 0.3, 0.3);
+    assert_true(fabs(s.point.x - 5.0) < 1e-12); /* u_select 0.99 > 2/2.5: the second light */
+    assert_true(fabs(s.normal.x - 1.0) < 1e-12);
+    assert_true(s.emission.z == 3.0);
+    scene_free(&scene);
+}
+
+/* The rectangle light of the closed form; an optional occluder in between. */
+static void rectangle_light(Scene *scene, double a, double b, double h, int occluded)
+{
+    scene_init(scene);
+    Material lamp = {"lamp", MATERIAL_LIGHT, vec3(0, 0, 0), vec3(2, 2, 2), 0.0, 1.0};
+    Material white = {"white", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
+    int light = scene_add_material(scene, lamp), diffuse = scene_add_material(scene, white);
+    Vec3 p0 = vec3(0, 0, h), p1 = vec3(0, b, h), p2 = vec3(a, b, h), p3 = vec3(a, 0, h);
+    scene_add_triangle(scene, triangle_make(p0, p1, p2, light)); /* facing down */
+    scene_add_triangle(scene, triangle_make(p0, p2, p3, light));
+    if (occluded)
+        scene_add_sphere(scene, (Sphere){vec3(0, 0, 0.5 * h), 0.25 * h, diffuse});
+    assert_int_equal(scene_prepare(scene), 0);
+}
+
+static double configuration_factor(double a, double b, double h)
+{
+    double A = a / h, B = b / h, sa = sqrt(1 + A * A), sb = sqrt(1 + B * B);
+    return (A / sa * atan(B / sa) + B / sb * atan(A / sb)) / (2.0 * PI);
+}
+
+/* Mean and variance of eq. 21's estimate at the origin (normal +z), M shadow rays. */
+static void direct_light_statistics(const Scene *scene, int m, int samples, double *mean,
+                                    double *variance)
+{
+    const Material *white = &scene->materials[1];
+    RayCounts counts = {0, 0, 0};
+    double sum = 0.0, sum_squares = 0.0;
+    for (int i = 0; i < samples; i++) {
+        Rng rng = rng_for_sample(5, (uint64_t)m, (uint64_t)i);
+        Vec3 value = area_light_direct(scene, vec3(0, 0, 0), vec3(0, 0, 1), vec3(0, 0, 1),
+                                       white, m, &rng, &counts);
+        sum += value.x;
+        sum_squares += value.x * value.x;
+    }
+    *mean = sum / samples;
+    *variance = (sum_squares / samples - *mean * *mean) * samples / (samples - 1);
+    assert_int_equal(counts.shadow, (uint64_t)m * samples); /* every sample faces the point */
+}
+
+static void test_direct_light_matches_closed_form(void **state)
+{
+    (void)state;
+    const double a = 2.0, b = 1.0, h = 1.5;
+    Scene scene;
+    rectangle_light(&scene, a, b, h, 0);
+    double expected = 0.5 * 2.0 * configuration_factor(a, b, h); /* rho Le F */
+    double mean1, variance1, mean64, variance64;
+    direct_light_statistics(&scene, 1, 200000, &mean1, &variance1);
+    direct_light_statistics(&scene, 64, 20000, &mean64, &variance64);
+    double error1 = sqrt(variance1 / 200000), error64 = sqrt(variance64 / 20000);
+    print_message("    expected %.6f; M=1: %.6f +- %.6f; M=64: %.6f +- %.6f\n", expected, mean1,
+                  error1, mean64, error64);
+    assert_true(fabs(mean1 - expected) < 4.0 * error1);
+    assert_true(fabs(mean64 - expected) < 4.0 * error64);
+    assert_true(error1 < 0.01 * expected && error64 < 0.01 * expected);
+    /* Variance of the mean of M independent shadow rays is 1/M of one's: within 10%. */
+    double ratio = variance1 / variance64;
+    print_message("    variance ratio M=1 / M=64: %.1f\n", ratio);
+    assert_true(ratio > 0.9 * 64 && ratio < 1.1 * 64);
+    scene_free(&scene);
+}
+
+/* A sphere between the point and the light's corner blocks some shadow rays: the
+ * estimate drops but stays positive; a point facing away gets nothing. */
+static void test_occlusion_and_facing(void **state)
+{
+    (void)state;
+    Scene open, blocked;
+    rectangle_light(&open, 2.0, 1.0, 1.5, 0);
+    rectangle_light(&blocked, 2.0, 1.0, 1.5, 1);
+    double open_mean, blocked_mean, variance;
+    direct_light_statistics(&open, 1, 20000, &open_mean, &variance);
+    direct_light_statistics(&blocked, 1, 20000, &blocked_mean, &variance);
+    assert_true(blocked_mean < 0.9 * open_mean && blocked_mean > 0.0);
+
+    RayCounts counts = {0, 0, 0};
+    Rng rng = rng_for_sample(1, 2, 3);
+    Vec3 away = area_light_direct(&open, vec3(0, 0, 0), vec3(0, 0, -1), vec3(0, 0, -1),
+                                  &open.materials[1], 8, &rng, &counts);
+    assert_true(away.x == 0.0 && counts.shadow == 0); /* no shadow ray wasted */
+    scene_free(&open);
+    scene_free(&blocked);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sampling_is_uniform_by_area),
+        cmocka_unit_test(test_wrong_sampler_is_rejected),
+        cmocka_unit_test(test_sample_fields),
+        cmocka_unit_test(test_direct_light_matches_closed_form),
+        cmocka_unit_test(test_occlusion_and_facing),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
