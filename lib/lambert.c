@@ -1,0 +1,8 @@
+/* lambert.c: the Lambertian BRDF, eq. 8 (chapter 2). See lambert.h. */
+#include "lambert.h"
+
+/* Eq. 8. */
+Vec3 lambert_brdf(Vec3 rho)
+{
+    return vec3_scale(rho, 1.0 / PI);
+}

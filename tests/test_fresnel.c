@@ -1,0 +1,165 @@
+/* test_fresnel.c: the exact Fresnel reflectance with the errata of SPEC §8.2-8.3
+ * (fresnel.h, chapter 4).
+ *
+ * Landmark values (normal and grazing incidence, Brewster's angle, the critical angle,
+ * no interface), a value at 80 degrees against Schlick's approximation, and a sweep over
+ * angles and indices in both directions: never NaN, always in [0, 1].
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+
+#include "fresnel.h"
+#include "schlick.h"
+#include "snell.h"
+
+#define GLASS 1.5
+#define DEGREES (PI / 180.0)
+
+/* Normal incidence: both polarisations reflect ((n1 - n2) / (n1 + n2))^2, the same
+ * entering and leaving: 0.04 for air and glass, 0.1739 for air and index 2.5. */
+static void test_normal_incidence(void **state)
+{
+    (void)state;
+    const double n2s[] = {GLASS, 2.5, 1.0001, 4.0};
+    for (int k = 0; k < 4; k++) {
+        double r0 = (1.0 - n2s[k]) / (1.0 + n2s[k]);
+        r0 *= r0;
+        assert_float_equal(fresnel_reflectance(1.0, 1.0, n2s[k]), r0, 1e-15);
+        assert_float_equal(fresnel_reflectance(1.0, n2s[k], 1.0), r0, 1e-15);
+        assert_float_equal(fresnel_s(1.0, 1.0, n2s[k]), r0, 1e-15);
+        assert_float_equal(fresnel_p(1.0, n2s[k], 1.0), r0, 1e-15);
+    }
+    assert_float_equal(fresnel_reflectance(1.0, 1.0, GLASS), 0.04, 1e-15);
+}
+
+/* 80 degrees from air into glass, by hand: sin_t = sin(80) / 1.5 = 0.656539,
+ * cos_t = 0.754293, R_s = (-0.957791 / 1.305087)^2 = 0.538595,
+ * R_p = (0.493820 / 1.014765)^2 = 0.236814, R = 0.387704. Schlick gives
+ * 0.04 + 0.96 (1 - cos 80)^5 = 0.409910 there: 2.2 percentage points too high. */
+static void test_value_at_80_degrees(void **state)
+{
+    (void)state;
+    double cos_i = cos(80.0 * DEGREES);
+    assert_float_equal(fresnel_s(cos_i, 1.0, GLASS), 0.538595, 1e-6);
+    assert_float_equal(fresnel_p(cos_i, 1.0, GLASS), 0.236814, 1e-6);
+    assert_float_equal(fresnel_reflectance(cos_i, 1.0, GLASS), 0.3877, 1e-3);
+    assert_float_equal(schlick_reflectance(cos_i, 1.0, GLASS), 0.4099, 1e-3);
+}
+
+/* Leaving glass: R = 1 at the critical angle arcsin(1 / 1.5) = 41.81 degrees and
+ * beyond (total internal reflection), and R rises to it continuously: just below the
+ * critical angle R is already close to 1 and it never decreases on the way. */
+static void test_total_internal_reflection(void **state)
+{
+    (void)state;
+    double critical = snell_critical_angle(GLASS, 1.0);
+    assert_float_equal(critical, asin(1.0 / GLASS), 1e-15);
+    assert_float_equal(fresnel_reflectance(cos(critical), GLASS, 1.0), 1.0, 1e-6);
+    for (double angle = critical + 1e-9; angle <= 0.5 * PI; angle += 0.001)
+        assert_true(fresnel_reflectance(cos(angle), GLASS, 1.0) == 1.0);
+    assert_true(fresnel_reflectance(0.0, GLASS, 1.0) == 1.0);
+    assert_float_equal(fresnel_reflectance(cos(critical - 1e-10), GLASS, 1.0), 1.0, 1e-3);
+    double previous = 0.0;
+    for (int k = 0; k <= 100000; k++) {
+        double r = fresnel_reflectance(cos(critical * k / 100000.0), GLASS, 1.0);
+        assert_true(r >= previous - 1e-12);
+        previous = r;
+    }
+}
+
+/* No interface (n_i = n_t): nothing is reflected, at any angle including grazing. */
+static void test_no_interface_reflects_nothing(void **state)
+{
+    (void)state;
+    for (int degrees = 0; degrees <= 90; degrees++) {
+        double cos_i = cos(degrees * DEGREES);
+        assert_true(fresnel_reflectance(cos_i, GLASS, GLASS) == 0.0);
+        assert_true(fresnel_reflectance(cos_i, 1.0, 1.0) == 0.0);
+    }
+    assert_true(fresnel_reflectance(0.0, GLASS, GLASS) == 0.0);
+}
+
+/* Grazing incidence (90 degrees) entering a denser medium: everything is reflected. */
+static void test_grazing_reflects_everything(void **state)
+{
+    (void)state;
+    const double n2s[] = {1.0001, GLASS, 4.0};
+    for (int k = 0; k < 3; k++) {
+        assert_float_equal(fresnel_reflectance(0.0, 1.0, n2s[k]), 1.0, 1e-15);
+        assert_float_equal(fresnel_s(0.0, 1.0, n2s[k]), 1.0, 1e-15);
+        assert_float_equal(fresnel_p(0.0, 1.0, n2s[k]), 1.0, 1e-15);
+    }
+}
+
+/* Brewster's angle atan(n_t / n_i): the p-polarised reflectance vanishes (56.31 degrees
+ * entering glass, 33.69 degrees leaving it), while R_s does not. */
+static void test_brewster_angle(void **state)
+{
+    (void)state;
+    double entering = atan(GLASS / 1.0), leaving = atan(1.0 / GLASS);
+    assert_float_equal(fresnel_p(cos(entering), 1.0, GLASS), 0.0, 1e-15);
+    assert_float_equal(fresnel_p(cos(leaving), GLASS, 1.0), 0.0, 1e-15);
+    assert_true(fresnel_s(cos(entering), 1.0, GLASS) > 0.1);
+}
+
+/* With the labels corrected (SPEC §8.3), R_s >= R_p at every angle entering glass: the
+ * s-polarised wave is always reflected at least as strongly. */
+static void test_s_reflects_at_least_p(void **state)
+{
+    (void)state;
+    for (int k = 0; k <= 9000; k++) {
+        double cos_i = cos(k * 0.01 * DEGREES);
+        assert_true(fresnel_s(cos_i, 1.0, GLASS) >= fresnel_p(cos_i, 1.0, GLASS));
+    }
+}
+
+/* R_s, R_p and R are finite and in [0, 1] at incidence cosine cos_i, index n, both
+ * from air into n and from n into air. */
+static void assert_bounded_both_ways(double cos_i, double n)
+{
+    for (int leaving = 0; leaving < 2; leaving++) {
+        double n_i = leaving ? n : 1.0, n_t = leaving ? 1.0 : n;
+        const double r[] = {fresnel_s(cos_i, n_i, n_t), fresnel_p(cos_i, n_i, n_t),
+                            fresnel_reflectance(cos_i, n_i, n_t)};
+        for (int j = 0; j < 3; j++) {
+            assert_true(isfinite(r[j]));
+            assert_true(r[j] >= 0.0 && r[j] <= 1.0);
+        }
+    }
+}
+
+/* A sweep over angles 0 to 90 degrees in 0.01 degree steps, the exact end points
+ * cos = 0 and 1, and cosines a rounding step outside [0, 1], for indices from 1.0001 to
+ * 4, both directions: never NaN, never outside [0, 1]. */
+static void test_sweep_finite_and_bounded(void **state)
+{
+    (void)state;
+    const double edges[] = {0.0, 1.0, -1e-17, 1.0 + 1e-15};
+    for (int step = 0; step <= 60; step++) {
+        double n = 1.0001 + step * (4.0 - 1.0001) / 60.0;
+        for (int k = 0; k <= 9000; k++)
+            assert_bounded_both_ways(cos(k * 0.01 * DEGREES), n);
+        for (int e = 0; e < 4; e++)
+            assert_bounded_both_ways(edges[e], n);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_normal_incidence),
+        cmocka_unit_test(test_value_at_80_degrees),
+        cmocka_unit_test(test_total_internal_reflection),
+        cmocka_unit_test(test_no_interface_reflects_nothing),
+        cmocka_unit_test(test_grazing_reflects_everything),
+        cmocka_unit_test(test_brewster_angle),
+        cmocka_unit_test(test_s_reflects_at_least_p),
+        cmocka_unit_test(test_sweep_finite_and_bounded),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
