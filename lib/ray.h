@@ -8,20 +8,25 @@
  * rounding error above or below the true surface, so a ray started there may hit the
  * surface it just left at t ~ 1e-16. We move the origin off the surface along the
  * geometric normal, to the side the new ray travels into, by
- *     RAY_OFFSET * (1 + max |p_i|),
- * an offset relative to the size of the coordinates (so it scales with the scene,
- * tested at 1e-3 and 1e3) that is many orders of magnitude above the intersection
- * routines' rounding error (a few ulps, about 1e-16 relative in double) and far below
- * any feature of the scene. Moving along the normal rather than along the ray keeps
- * the offset effective at grazing angles, and choosing the side by the new direction
- * makes refraction into a sphere and shadow rays behave alike.
+ *     RAY_OFFSET * (1 + max |p_i|).
+ * Where the coordinates exceed 1 the offset is relative to them, so it scales with
+ * the scene; below 1 it is RAY_OFFSET itself. That floor is needed: a hit point's
+ * rounding error is relative to the coordinates of the ray's origin and of the
+ * surface, not of the point, so a point near (0,0,0) on a large floor needs more than
+ * a relative offset. RAY_OFFSET sits between two limits, both tested at scene scales
+ * 1e-3, 1 and 1e3 (tests/test_scene.c): above the rounding error of hit points (a few
+ * ulps of coordinates up to ~1e4), and below the gap to the nearest other surface:
+ * two planes 1e-6 of the scene apart are 1e-9 apart at scale 1e-3, which an offset
+ * of 1e-9 skipped and 1e-10 finds. Moving along the normal rather than along the ray
+ * keeps the offset effective at grazing angles, and choosing the side by the new
+ * direction makes refraction into a sphere and shadow rays behave alike.
  */
 #ifndef RAY_H
 #define RAY_H
 
 #include "vec.h"
 
-#define RAY_OFFSET 1e-9
+#define RAY_OFFSET 1e-10
 
 typedef struct { Vec3 origin, dir; } Ray;
 

@@ -9,6 +9,8 @@
  * transmitted angle, otherwise R stays well below 1 up to the critical angle and then
  * jumps to 1; with cos_t, R rises continuously to 1 at the critical angle. Beyond it
  * (total internal reflection) R = 1.
+ * With n_i = n_t there is no interface and R = 0 at every angle, as the exact Fresnel
+ * equations give; eq. 6 alone would still reflect (1 - cos theta)^5.
  */
 #ifndef SCHLICK_H
 #define SCHLICK_H

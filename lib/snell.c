@@ -5,7 +5,8 @@ double snell_cos_transmitted(double cos_i, double n_i, double n_t)
 {
     double eta = n_i / n_t;
     double sin2_t = eta * eta * fmax(0.0, 1.0 - cos_i * cos_i);
-    if (sin2_t > 1.0)
+    /* Total internal reflection, from the critical angle on (snell.h) */
+    if (n_i > n_t && sin2_t >= 1.0 - SNELL_GRAZING_MARGIN)
         return -1.0;
     return sqrt(1.0 - sin2_t);
 }

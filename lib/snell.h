@@ -11,18 +11,30 @@
  *     theta_c = arcsin(n_t / n_i).
  * Erratum (SPEC §8.2): the report writes arcsin(n_i / n_refr), whose argument exceeds 1
  * exactly when total internal reflection is possible.
+ *
+ * At the critical angle itself theta_t = 90 degrees and the Fresnel reflectance is 1:
+ * no light is transmitted, so that angle belongs to total internal reflection. But an
+ * incidence direction built at the critical angle is rounded, and puts
+ * eta^2 sin^2(theta_i) up to a few dozen ulps either side of 1; we therefore call it
+ * total internal reflection from 1 - SNELL_GRAZING_MARGIN on, which otherwise only
+ * drops transmitted rays within 2.4e-7 rad of the surface.
  */
 #ifndef SNELL_H
 #define SNELL_H
 
+#include <float.h>
+
 #include "vec.h"
+
+#define SNELL_GRAZING_MARGIN (256 * DBL_EPSILON)
 
 /* Refract unit direction d at a surface with unit normal n facing the incident side
  * (d . n <= 0), from index n_i into index n_t. Returns 1 and the unit refracted
  * direction in *t, or 0 for total internal reflection. */
 int snell_refract(Vec3 d, Vec3 n, double n_i, double n_t, Vec3 *t);
 
-/* cos(theta_t) for incidence cosine cos_i, or -1 for total internal reflection. */
+/* cos(theta_t) for incidence cosine cos_i, or -1 for total internal reflection
+ * (only possible for n_i > n_t). */
 double snell_cos_transmitted(double cos_i, double n_i, double n_t);
 
 /* The critical angle in radians for n_i > n_t (SPEC §8.2); pi/2 when n_i <= n_t. */

@@ -25,12 +25,16 @@ double triangle_intersect(const Triangle *tri, Ray ray, double tmin, double tmax
         return INFINITY;
     double inv_det = 1.0 / det;
     Vec3 s = vec3_sub(ray.origin, tri->v0);
+    /* Rounding error bound of u and v (triangle.h): accepting down to -slack closes
+     * shared edges. */
+    double edge = fmax(vec3_max_abs(tri->e1), vec3_max_abs(tri->e2));
+    double slack = TRIANGLE_EDGE_SLACK * (vec3_max_abs(s) + edge) * edge * fabs(inv_det);
     double u = vec3_dot(s, p) * inv_det;
-    if (u < -TRIANGLE_EDGE_SLACK || u > 1.0 + TRIANGLE_EDGE_SLACK)
+    if (u < -slack || u > 1.0 + slack)
         return INFINITY;
     Vec3 q = vec3_cross(s, tri->e1);
     double v = vec3_dot(ray.dir, q) * inv_det;
-    if (v < -TRIANGLE_EDGE_SLACK || u + v > 1.0 + TRIANGLE_EDGE_SLACK)
+    if (v < -slack || u + v > 1.0 + slack)
         return INFINITY;
     double t = vec3_dot(tri->e2, q) * inv_det;
     return (t > tmin && t < tmax) ? t : INFINITY;

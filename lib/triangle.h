@@ -10,18 +10,28 @@
  *
  * Watertight shared edges: a ray through the common edge of two triangles computes u, v
  * for each from different rounding, so with exact bounds both could reject it and leave
- * a pinhole. We accept barycentrics down to -TRIANGLE_EDGE_SLACK (relative), so that
- * both triangles accept a ray on their shared edge; the overlap is far below a pixel.
- * A ray parallel to the plane (determinant 0 relative to the edge lengths) misses.
+ * a pinhole. We accept a barycentric down to minus a bound on its own rounding error,
+ *     TRIANGLE_EDGE_SLACK * (|s| + |e|) |e| / |det|,   s = o - v0,
+ * |e| the longer edge (|x| meaning max_i |x_i| here), so that both triangles accept a
+ * ray on their shared edge. The error, and so the slack, grows with the distance |s|
+ * of the ray's origin and with obliquity (|det| = 2 area cos): a fixed slack (1e-12)
+ * let about 1 in 1000 far or grazing rays through a shared diagonal
+ * (tests/test_triangle.c). The overlap is the rounding error itself, far below a
+ * pixel. A ray parallel to the plane (determinant 0 relative to the edge lengths)
+ * misses.
  *
  * The front side is the one the normal (v1 - v0) x (v2 - v0) points to (SPEC §4).
  */
 #ifndef TRIANGLE_H
 #define TRIANGLE_H
 
+#include <float.h>
+
 #include "ray.h"
 
-#define TRIANGLE_EDGE_SLACK 1e-12
+/* In units of (|s| + |e|) |e| / |det|: 5e-16 already closes every hole the tests
+ * find; 16 DBL_EPSILON (3.6e-15) keeps a margin of 7. */
+#define TRIANGLE_EDGE_SLACK (16 * DBL_EPSILON)
 
 typedef struct {
     Vec3 v0, e1, e2;

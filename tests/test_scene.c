@@ -1,0 +1,387 @@
+/* test_scene.c: ray queries against a whole scene (scene.h, chapter 1).
+ *
+ * Scenes are built in code with scene_add_*. Beyond "the nearest hit wins" this is
+ * where rays start on surfaces, so it is where SPEC §7's acne and near-hit cases live:
+ * a ray re-launched from a hit point with ray_spawn must never find the surface it
+ * left at t ~ 0, must still find a surface a hair away, and a shadow ray between two
+ * surface points must not be blocked by either end's own surface. All of it at scene
+ * scales 1e-3, 1 and 1e3.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <string.h>
+
+#include "check.h"
+#include "rng.h"
+#include "scene.h"
+
+static const double scales[] = {1e-3, 1.0, 1e3};
+
+/* A random direction on the side of the surface that `normal` points to. */
+static Vec3 random_direction_along(Rng *rng, Vec3 normal)
+{
+    Vec3 d = random_unit_vector(rng);
+    return vec3_dot(d, normal) < 0 ? vec3_neg(d) : d;
+}
+
+/* A uniformly random point of a triangle. */
+static Vec3 random_point_on(const Triangle *tri, Rng *rng)
+{
+    double a = sqrt(rng_uniform(rng)), b = rng_uniform(rng);
+    return triangle_point(tri, a * (1 - b), a * b);
+}
+
+static int add_material(Scene *scene, MaterialKind kind, double emission)
+{
+    Material m;
+    memset(&m, 0, sizeof m);
+    m.kind = kind;
+    m.reflectance = vec3(0.5, 0.5, 0.5);
+    m.emission = vec3(emission, emission, emission);
+    return scene_add_material(scene, m);
+}
+
+/* The quad P0 P1 P2 P3 as the scene file splits it: (P0,P1,P2) and (P0,P2,P3). */
+static void add_quad(Scene *scene, Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3, int material)
+{
+    scene_add_triangle(scene, triangle_make(p0, p1, p2, material));
+    scene_add_triangle(scene, triangle_make(p0, p2, p3, material));
+}
+
+/* A square of half-size `half` centred on `centre`, spanned by unit vectors a, b; its
+ * front faces a x b. */
+static void add_square(Scene *scene, Vec3 centre, Vec3 a, Vec3 b, double half, int material)
+{
+    Vec3 lo = vec3_add_scaled(centre, vec3_add(a, b), -half);
+    add_quad(scene, lo, vec3_add_scaled(lo, a, 2 * half),
+             vec3_add_scaled(lo, vec3_add(a, b), 2 * half), vec3_add_scaled(lo, b, 2 * half),
+             material);
+}
+
+/* Nearest of several: along +z a sphere (t = 2) in front of two triangles (t = 5, 10)
+ * added before it; beside the sphere the nearer triangle wins; the Hit carries the
+ * point, the front normal (not flipped towards the ray), material and triangle index. */
+static void test_nearest_hit(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    int grey = add_material(&scene, MATERIAL_LAMBERT, 0);
+    int glass = add_material(&scene, MATERIAL_GLASS, 0);
+    int lamp = add_material(&scene, MATERIAL_LIGHT, 1);
+    scene_add_triangle(&scene, triangle_make(vec3(-9, -9, 10), vec3(9, -9, 10), vec3(0, 9, 10), grey));
+    scene_add_triangle(&scene, triangle_make(vec3(-9, -9, 5), vec3(0, 9, 5), vec3(9, -9, 5), lamp));
+    Sphere sphere = {vec3(0, 0, 3), 1, glass};
+    scene_add_sphere(&scene, sphere);
+    assert_int_equal(scene_prepare(&scene), 0);
+
+    Hit hit;
+    Ray up = {vec3(0, 0, 0), vec3(0, 0, 1)};
+    assert_true(scene_intersect(&scene, up, INFINITY, &hit));
+    assert_close(hit.t, 2, 1e-15);
+    assert_close(hit.point.z, 2, 1e-15);
+    assert_close(hit.normal.z, -1, 1e-15);
+    assert_int_equal(hit.material, glass);
+    assert_int_equal(hit.triangle, -1);
+
+    Ray beside = {vec3(2, 0, 0), vec3(0, 0, 1)};
+    assert_true(scene_intersect(&scene, beside, INFINITY, &hit));
+    assert_close(hit.t, 5, 1e-15);
+    assert_close(hit.point.x, 2, 1e-15);
+    assert_close(hit.normal.z, -1, 1e-15); /* the lamp's front faces down, towards -z */
+    assert_int_equal(hit.material, lamp);
+    assert_int_equal(hit.triangle, 1);
+
+    Ray down = {vec3(2, 0, 20), vec3(0, 0, -1)};
+    assert_true(scene_intersect(&scene, down, INFINITY, &hit));
+    assert_close(hit.t, 10, 1e-15);
+    assert_close(hit.normal.z, 1, 1e-15);
+    assert_int_equal(hit.triangle, 0);
+
+    assert_false(scene_intersect(&scene, up, 1.99, &hit));
+    Ray away = {vec3(0, 0, 0), vec3(0, 0, -1)};
+    assert_false(scene_intersect(&scene, away, INFINITY, &hit));
+    scene_free(&scene);
+}
+
+/* From inside a sphere the hit is its far side and the normal still points out,
+ * along the ray. */
+static void test_hit_from_inside_sphere(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    Sphere sphere = {vec3(1, 2, 3), 2, add_material(&scene, MATERIAL_GLASS, 0)};
+    scene_add_sphere(&scene, sphere);
+    scene_prepare(&scene);
+    Hit hit;
+    Ray ray = {vec3(1, 2, 4), vec3(0, 0, 1)};
+    assert_true(scene_intersect(&scene, ray, INFINITY, &hit));
+    assert_close(hit.t, 1, 1e-15);
+    assert_close(hit.normal.z, 1, 1e-15);
+    scene_free(&scene);
+}
+
+/* A triangle-only scene: one large awkwardly oriented square, once off the origin
+ * and aimed at uniformly, once through the origin and aimed at points 1e-12 to 1
+ * (times the scale, log-uniform) from it -- where an offset relative to |p| alone
+ * would fail, because a hit point's rounding error is set by the eye's and the
+ * square's coordinates, not by |p| (ray.h). From 2000 hit points per case, seen from
+ * 10 units away on either side, rays spawned into random directions of either
+ * hemisphere must hit nothing: the only surface is the plane they left. */
+static void test_no_acne_on_triangles(void **state)
+{
+    (void)state;
+    Rng rng = rng_for_sample(31, 0, 0);
+    for (int i = 0; i < 3; i++)
+        for (int near_origin = 0; near_origin < 2; near_origin++) {
+            double s = scales[i];
+            Scene scene;
+            scene_init(&scene);
+            Vec3 n = vec3_normalize(vec3(0.3, -0.4, 0.87)), a, b;
+            vec3_basis(n, &a, &b);
+            Vec3 centre = near_origin ? vec3(0, 0, 0) : vec3(1.7 * s, -3.1 * s, 2.3 * s);
+            add_square(&scene, centre, a, b, 5 * s, add_material(&scene, MATERIAL_LAMBERT, 0));
+            scene_prepare(&scene);
+            for (int k = 0; k < 2000; k++) {
+                double r = s * pow(10.0, -12.0 * rng_uniform(&rng)), phi = 2 * PI * rng_uniform(&rng);
+                Vec3 target = near_origin ? vec3_add(vec3_scale(a, r * cos(phi)), vec3_scale(b, r * sin(phi)))
+                                          : random_point_on(&scene.triangles[k % 2], &rng);
+                Vec3 eye = vec3_add_scaled(centre, random_unit_vector(&rng), 10 * s);
+                Hit hit, again;
+                assert_true(scene_intersect(&scene, ray_through(eye, target), INFINITY, &hit));
+                Vec3 dir = random_direction_along(&rng, rng_uniform(&rng) < 0.5 ? n : vec3_neg(n));
+                if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir), INFINITY, &again))
+                    fail_msg("scale %g: self-hit at t = %g, %g from the origin", s, again.t,
+                             vec3_length(hit.point));
+            }
+            scene_free(&scene);
+        }
+}
+
+/* A sphere, hit from outside and from inside, 2000 times per scale. Spawned outwards
+ * (as a reflection from the outside would be) a ray meets nothing; spawned inwards (a
+ * refraction) it meets the far side, at least half the chord 2 r cos(theta) away, never
+ * the near side at t ~ 0. */
+static void test_no_acne_on_spheres(void **state)
+{
+    (void)state;
+    Rng rng = rng_for_sample(32, 0, 0);
+    for (int i = 0; i < 3; i++) {
+        double s = scales[i];
+        Scene scene;
+        scene_init(&scene);
+        Sphere sphere = {vec3(-2.3 * s, 1.9 * s, 0.7 * s), 1.3 * s, add_material(&scene, MATERIAL_GLASS, 0)};
+        scene_add_sphere(&scene, sphere);
+        scene_prepare(&scene);
+        for (int k = 0; k < 2000; k++) {
+            double start_distance = (k % 2 ? 5.0 : 0.9 * rng_uniform(&rng)) * sphere.radius;
+            Vec3 start = vec3_add_scaled(sphere.center, random_unit_vector(&rng), start_distance);
+            Ray first = {start, random_unit_vector(&rng)};
+            Hit hit, again;
+            if (!scene_intersect(&scene, first, INFINITY, &hit))
+                continue;
+            Vec3 out = random_direction_along(&rng, hit.normal);
+            if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, out), INFINITY, &again))
+                fail_msg("scale %g: outward ray hit the sphere at t = %g", s, again.t);
+            Vec3 in = random_direction_along(&rng, vec3_neg(hit.normal));
+            double cos_theta = -vec3_dot(in, hit.normal);
+            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, in), INFINITY, &again));
+            if (!(again.t > sphere.radius * cos_theta))
+                fail_msg("scale %g: inward ray hit at t = %g, chord %g", s, again.t,
+                         2 * sphere.radius * cos_theta);
+        }
+        scene_free(&scene);
+    }
+}
+
+/* No missed near hit: two parallel squares 1e-6 * scale apart (awkwardly oriented).
+ * From 2000 hit points on the lower one, a ray spawned towards the upper one finds it
+ * (not the lower one, not nothing) at t = gap / cos(theta), and the other way round. */
+static void test_near_parallel_planes(void **state)
+{
+    (void)state;
+    Rng rng = rng_for_sample(33, 0, 0);
+    for (int i = 0; i < 3; i++) {
+        double s = scales[i], gap = 1e-6 * s;
+        Scene scene;
+        scene_init(&scene);
+        Vec3 n = vec3_normalize(vec3(-0.2, 0.9, 0.4)), a, b;
+        vec3_basis(n, &a, &b);
+        Vec3 centre = vec3(0.6 * s, 2.2 * s, -1.4 * s);
+        int m = add_material(&scene, MATERIAL_LAMBERT, 0);
+        add_square(&scene, centre, a, b, s, m);                          /* triangles 0, 1 */
+        add_square(&scene, vec3_add_scaled(centre, n, gap), a, b, s, m); /* triangles 2, 3 */
+        scene_prepare(&scene);
+        for (int k = 0; k < 2000; k++) {
+            int up = k % 2;
+            Vec3 side = up ? vec3_neg(n) : vec3_scale(n, 2);
+            Vec3 target = random_point_on(&scene.triangles[k % 4], &rng);
+            target = vec3_add_scaled(target, n, up ? 0.0 : gap);
+            Vec3 eye = vec3_add_scaled(target, random_direction_along(&rng, side), 0.5 * s);
+            Hit hit, near;
+            assert_true(scene_intersect(&scene, ray_through(eye, target), INFINITY, &hit));
+            /* Towards the other plane, at most 60 degrees from its normal so the hit
+             * stays inside the squares. */
+            Vec3 towards = up ? n : vec3_neg(n), dir;
+            do
+                dir = random_direction_along(&rng, towards);
+            while (vec3_dot(dir, towards) < 0.5);
+            int found = scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir), INFINITY, &near);
+            if (!found || (near.triangle >= 2) != up)
+                fail_msg("scale %g: missed the plane %g away (found %d, triangle %d)", s, gap,
+                         found, found ? near.triangle : -1);
+            /* t is the gap along the ray, less the start's offset (ray.h) */
+            double expected = gap / vec3_dot(dir, towards);
+            assert_close(near.t, expected, 0.2 * expected);
+        }
+        scene_free(&scene);
+    }
+}
+
+/* No missed near hit in a corner: a floor and a wall meeting at a right angle. From
+ * floor points 1e-6 * scale from the wall, rays towards the wall find the wall. */
+static void test_corner(void **state)
+{
+    (void)state;
+    Rng rng = rng_for_sample(34, 0, 0);
+    for (int i = 0; i < 3; i++) {
+        double s = scales[i], d = 1e-6 * s;
+        Scene scene;
+        scene_init(&scene);
+        int m = add_material(&scene, MATERIAL_LAMBERT, 0);
+        Vec3 o = vec3(3 * s, -2 * s, 5 * s);
+        /* floor z = o.z over x in [o.x, o.x + s]; wall x = o.x over z in [o.z, o.z + s] */
+        add_quad(&scene, o, vec3_add(o, vec3(s, 0, 0)), vec3_add(o, vec3(s, s, 0)),
+                 vec3_add(o, vec3(0, s, 0)), m);
+        add_quad(&scene, o, vec3_add(o, vec3(0, s, 0)), vec3_add(o, vec3(0, s, s)),
+                 vec3_add(o, vec3(0, 0, s)), m);
+        scene_prepare(&scene);
+        for (int k = 0; k < 2000; k++) {
+            Vec3 target = vec3_add(o, vec3(d, (0.25 + 0.5 * rng_uniform(&rng)) * s, 0));
+            Hit hit, wall;
+            assert_true(scene_intersect(&scene, ray_through(vec3_add(target, vec3(0.3 * s, 0, s)), target),
+                                        INFINITY, &hit));
+            assert_true(hit.triangle < 2);
+            /* towards the wall (-x), rising at most 45 degrees above the floor */
+            double rise = rng_uniform(&rng), swing = rng_uniform(&rng) - 0.5;
+            Vec3 dir = vec3_normalize(vec3(-1, swing, rise));
+            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir), INFINITY, &wall));
+            if (wall.triangle < 2)
+                fail_msg("scale %g: hit the floor again at t = %g", s, wall.t);
+        }
+        scene_free(&scene);
+    }
+}
+
+/* Shadow rays, at each scale: a floor and a light square above it, without and with
+ * a blocker exactly half-way. Between 2000 random points of the floor and of the
+ * light: never occluded by the end points' own surfaces; always by the blocker. */
+static void test_occluded(void **state)
+{
+    (void)state;
+    Rng rng = rng_for_sample(35, 0, 0);
+    for (int i = 0; i < 3; i++)
+        for (int blocked = 0; blocked < 2; blocked++) {
+            double s = scales[i];
+            Scene scene;
+            scene_init(&scene);
+            int white = add_material(&scene, MATERIAL_LAMBERT, 0);
+            int lamp = add_material(&scene, MATERIAL_LIGHT, 10);
+            Vec3 x = vec3(1, 0, 0), y = vec3(0, 1, 0), base = vec3(0.7 * s, -0.3 * s, 1.1 * s);
+            add_square(&scene, base, x, y, s, white);                          /* floor, up */
+            add_square(&scene, vec3_add(base, vec3(0, 0, 2 * s)), y, x, s, lamp); /* light, down */
+            if (blocked)
+                add_square(&scene, vec3_add(base, vec3(0, 0, s)), x, y, 3 * s, white);
+            scene_prepare(&scene);
+            for (int k = 0; k < 2000; k++) {
+                Vec3 from = random_point_on(&scene.triangles[k % 2], &rng);
+                Vec3 to = random_point_on(&scene.triangles[2 + k % 2], &rng);
+                int occluded = scene_occluded(&scene, from, scene.triangles[0].normal, to,
+                                              scene.triangles[2].normal);
+                if (occluded != blocked)
+                    fail_msg("scale %g, blocker %d: occluded = %d", s, blocked, occluded);
+            }
+            scene_free(&scene);
+        }
+}
+
+/* Shadow rays to a sphere's surface: a point on the side facing us is visible, one on
+ * the far side is hidden by the sphere itself; a sphere in between hides; points on
+ * the floor under the sphere's shadow and beside it. */
+static void test_occluded_by_spheres(void **state)
+{
+    (void)state;
+    for (int i = 0; i < 3; i++) {
+        double s = scales[i];
+        Scene scene;
+        scene_init(&scene);
+        Sphere sphere = {vec3(0, 0, 3 * s), s, add_material(&scene, MATERIAL_LAMBERT, 0)};
+        scene_add_sphere(&scene, sphere);
+        scene_prepare(&scene);
+        Vec3 floor_up = vec3(0, 0, 1);
+        Vec3 under = vec3(0, 0, 0), beside = vec3(3 * s, 0, 0), above = vec3(0, 0, 6 * s);
+        Vec3 near_side = vec3(0, 0, 2 * s), far_side = vec3(0, 0, 4 * s);
+        assert_false(scene_occluded(&scene, under, floor_up, near_side, vec3(0, 0, -1)));
+        assert_true(scene_occluded(&scene, under, floor_up, far_side, vec3(0, 0, 1)));
+        assert_true(scene_occluded(&scene, under, floor_up, above, floor_up));
+        assert_false(scene_occluded(&scene, beside, floor_up, vec3(3 * s, 0, 6 * s), floor_up));
+        scene_free(&scene);
+    }
+}
+
+/* scene_prepare lists exactly the emitting triangles, in order, with the running sum
+ * of their areas (2 and 0.5 here): choosing a light by area needs exactly this. A
+ * second call rebuilds the same list, and a scene without lights has none. */
+static void test_light_list(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    int white = add_material(&scene, MATERIAL_LAMBERT, 0);
+    int lamp = add_material(&scene, MATERIAL_LIGHT, 25);
+    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 0), vec3(9, 0, 0), vec3(0, 9, 0), white));
+    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 5), vec3(0, 2, 5), vec3(2, 0, 5), lamp));
+    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 1), vec3(3, 0, 1), vec3(0, 3, 1), white));
+    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 6), vec3(0, 1, 6), vec3(1, 0, 6), lamp));
+    Sphere ball = {vec3(5, 5, 5), 1, lamp}; /* emitting spheres are not area lights */
+    scene_add_sphere(&scene, ball);
+    for (int round = 0; round < 2; round++) {
+        assert_int_equal(scene_prepare(&scene), 0);
+        assert_int_equal(scene.light_count, 2);
+        assert_int_equal(scene.light_triangles[0], 1);
+        assert_int_equal(scene.light_triangles[1], 3);
+        assert_close(scene.light_cumulative[0], 2.0, 1e-15);
+        assert_close(scene.light_cumulative[1], 2.5, 1e-15);
+        assert_close(scene.light_area, 2.5, 1e-15);
+    }
+    scene_free(&scene);
+
+    scene_init(&scene);
+    white = add_material(&scene, MATERIAL_LAMBERT, 0);
+    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), white));
+    assert_int_equal(scene_prepare(&scene), 0);
+    assert_int_equal(scene.light_count, 0);
+    assert_close(scene.light_area, 0, 0);
+    scene_free(&scene);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_nearest_hit),
+        cmocka_unit_test(test_hit_from_inside_sphere),
+        cmocka_unit_test(test_no_acne_on_triangles),
+        cmocka_unit_test(test_no_acne_on_spheres),
+        cmocka_unit_test(test_near_parallel_planes),
+        cmocka_unit_test(test_corner),
+        cmocka_unit_test(test_occluded),
+        cmocka_unit_test(test_occluded_by_spheres),
+        cmocka_unit_test(test_light_list),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
