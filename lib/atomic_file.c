@@ -19,13 +19,21 @@ int atomic_open(AtomicFile *out, const char *path)
 
 int atomic_close(AtomicFile *out, int failed)
 {
-    failed |= ferror(out->file);
-    failed |= fclose(out->file) != 0;
+    /* The first failure names the errno: the caller's (its errno on entry), a write
+     * error (the errno the failed write left), the final flush, or the rename. */
+    int reason = errno;
+    failed = failed || ferror(out->file);
+    if (fclose(out->file) != 0 && !failed) {
+        failed = 1;
+        reason = errno;
+    }
     out->file = NULL;
-    if (!failed && rename(out->temp_path, out->final_path) == 0)
-        return 0;
-    int saved_errno = errno ? errno : EIO;
+    if (!failed) {
+        if (rename(out->temp_path, out->final_path) == 0)
+            return 0;
+        reason = errno;
+    }
     remove(out->temp_path);
-    errno = saved_errno;
+    errno = reason ? reason : EIO;
     return -1;
 }

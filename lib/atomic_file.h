@@ -20,7 +20,8 @@ typedef struct {
 int atomic_open(AtomicFile *out, const char *path);
 
 /* Close and rename into place; `failed` non-zero (or a write error) discards instead.
- * Returns 0 when the file is in place, else -1 with errno set. */
+ * Returns 0 when the file is in place, else -1 with errno set: to the caller's errno
+ * when `failed` is given, else to that of the failed write, flush or rename. */
 int atomic_close(AtomicFile *out, int failed);
 
 #endif

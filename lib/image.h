@@ -50,7 +50,18 @@ uint8_t image_tonemap(double value, double exposure);
 int image_write_png(const Image *image, const char *path, double exposure);
 int image_write_pfm(const Image *image, const char *path);
 
-/* Returns 0, or -1 with a message in error[error_size] (the image is then empty). */
+/* Reads an RGB PFM ("PF") of either byte order (the sign of the scale: negative is
+ * little-endian; its magnitude is not applied). Everything is checked: the magic, each
+ * side from 1 to IMAGE_MAX_SIDE, a finite non-zero scale, exactly 12 * width * height
+ * bytes of data, every value finite. Returns 0, or -1 with "PATH: what is wrong" in
+ * error[error_size] (the image is then empty). */
+#define IMAGE_MAX_SIDE (1 << 15)
 int image_read_pfm(const char *path, Image *image, char *error, int error_size);
+
+/* The two halves of image_write_png, for figure.c, which tone maps several images into
+ * one picture: tone map every pixel into 8-bit RGB rows `stride` bytes apart; write
+ * width x height 8-bit RGB pixels (rows 3 * width bytes apart) as a PNG. */
+void image_tonemap_rgb8(const Image *image, double exposure, uint8_t *rgb, long stride);
+int image_write_rgb8_png(const uint8_t *rgb, int width, int height, const char *path);
 
 #endif
