@@ -93,7 +93,7 @@ sanitize:
 	    LDFLAGS="-fsanitize=address,undefined" test
 
 FUZZ_BIN := $(BUILD)/fuzz/fuzz_scene_file
-FUZZ_SRC := $(addprefix lib/,scene_file.c scene.c triangle.c sphere.c camera.c ray.c vec.c rng.c)
+FUZZ_SRC := $(addprefix lib/,scene_file.c scene.c bvh.c triangle.c sphere.c camera.c ray.c vec.c rng.c)
 $(FUZZ_BIN): tests/fuzz_scene_file.c $(FUZZ_SRC) | $(DEPS_OK)
 	@sh .ci/install-deps clang
 	@mkdir -p $(@D) $(BUILD)/fuzz/corpus

@@ -8,11 +8,13 @@
  *
  * Building a scene: scene_file.c reads one from text; tests may also call the
  * scene_add_* functions directly. Either way, call scene_prepare() once before the
- * first query: it builds the light list and the acceleration structure.
+ * first query: it builds the light list and the bounding volume hierarchy (bvh.h)
+ * through which every ray query goes.
  */
 #ifndef SCENE_H
 #define SCENE_H
 
+#include "bvh.h"
 #include "camera.h"
 #include "material.h"
 #include "sphere.h"
@@ -41,6 +43,7 @@ typedef struct {
     double *light_cumulative; /* running sum of their areas, for choosing one by area */
     int light_count;
     double light_area;        /* total emitting area */
+    Bvh bvh;                  /* over all triangles and spheres */
 } Scene;
 
 /* What a ray hit. */
@@ -64,7 +67,7 @@ int scene_add_point_light(Scene *scene, PointLight light);
 /* Index of the material called `name`, or -1. */
 int scene_find_material(const Scene *scene, const char *name);
 
-/* Build the light list. Returns 0, or -1 when memory runs out. */
+/* Build the light list and the hierarchy. Returns 0, or -1 when memory runs out. */
 int scene_prepare(Scene *scene);
 
 /* The nearest hit with t in (0, tmax). Returns 1 and fills *hit, or 0 for a miss. */

@@ -11,6 +11,7 @@ Triangle triangle_make(Vec3 v0, Vec3 v1, Vec3 v2, int material)
     double twice_area = vec3_length(cross);
     tri.area = 0.5 * twice_area;
     tri.normal = twice_area > 0.0 ? vec3_scale(cross, 1.0 / twice_area) : vec3(0, 0, 0);
+    tri.longest_edge = max2(vec3_max_abs(tri.e1), vec3_max_abs(tri.e2));
     tri.material = material;
     return tri;
 }
@@ -27,7 +28,7 @@ double triangle_intersect(const Triangle *tri, Ray ray, double tmin, double tmax
     Vec3 s = vec3_sub(ray.origin, tri->v0);
     /* Rounding error bound of u and v (triangle.h): accepting down to -slack closes
      * shared edges. */
-    double edge = fmax(vec3_max_abs(tri->e1), vec3_max_abs(tri->e2));
+    double edge = tri->longest_edge;
     double slack = TRIANGLE_EDGE_SLACK * (vec3_max_abs(s) + edge) * edge * fabs(inv_det);
     double u = vec3_dot(s, p) * inv_det;
     if (u < -slack || u > 1.0 + slack)

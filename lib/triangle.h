@@ -37,6 +37,7 @@ typedef struct {
     Vec3 v0, e1, e2;
     Vec3 normal; /* unit (e1 x e2): the front side */
     double area;
+    double longest_edge; /* max |component| of e1 and e2, for the edge slack */
     int material;
 } Triangle;
 

@@ -35,8 +35,12 @@ static inline Vec3 vec3_add_scaled(Vec3 a, Vec3 b, double s)
 {
     return vec3(a.x + s * b.x, a.y + s * b.y, a.z + s * b.z);
 }
-static inline double vec3_max_abs(Vec3 a) { return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z))); }
-static inline double vec3_max_component(Vec3 a) { return fmax(a.x, fmax(a.y, a.z)); }
+/* Larger and smaller of two numbers, written out: fmax() and fmin() must honour NaN
+ * rules and are library calls in the renderer's inner loops. */
+static inline double max2(double a, double b) { return a > b ? a : b; }
+static inline double min2(double a, double b) { return a < b ? a : b; }
+static inline double vec3_max_abs(Vec3 a) { return max2(fabs(a.x), max2(fabs(a.y), fabs(a.z))); }
+static inline double vec3_max_component(Vec3 a) { return max2(a.x, max2(a.y, a.z)); }
 static inline double vec3_average(Vec3 a) { return (a.x + a.y + a.z) / 3.0; }
 static inline int vec3_is_finite(Vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
