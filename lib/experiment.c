@@ -29,7 +29,7 @@ void experiment_image_size(const Options *options, const Scene *scene, int *widt
     double exact_height = options->size / aspect;
     *width = options->size;
     *height = (int)lround(exact_height);
-    if (*height < 1 || *height > 16384 || fabs(*height - exact_height) > 0.5)
+    if (*height < 1 || *height > 16384 || fabs(*height - exact_height) > 0.01 * *height)
         cli_fail(2, "%s:%d: --size %d gives no image whose aspect ratio matches the image "
                     "plane's (%.4g)", scene->source, scene->line_count, options->size, aspect);
 }

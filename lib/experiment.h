@@ -21,8 +21,8 @@ typedef enum { NEEDS_POINT_LIGHT, NEEDS_AREA_LIGHT } LightNeed;
  * a scene without the kind of light the chapter needs. */
 void experiment_load_scene(const Options *options, LightNeed need, Scene *scene);
 
-/* Width from --size, height from the image plane's aspect ratio (exit 2 if the two
- * cannot match to within one pixel). */
+/* Width from --size, height from the image plane's aspect ratio, rounded (exit 2 if
+ * the rounded image's aspect ratio is more than 1% off the plane's). */
 void experiment_image_size(const Options *options, const Scene *scene, int *width, int *height);
 
 /* Render settings from the options: size, threads, seed, progress. */

@@ -1,0 +1,166 @@
+/* Tests of the pixel loop (lib/render.c, chapter 1; threads chapter 7).
+ *
+ * - Determinism: the room rendered by the path tracer with 1, 2 and 7 threads is the
+ *   same image bit for bit (every sample has its own generator, and every pixel sums
+ *   its samples in order; SPEC §9).
+ * - Estimates: with an estimator that returns a known value per sample, each pixel is
+ *   the mean of its samples and its standard error is the textbook one.
+ * - Non-finite samples (SPEC §7) are dropped and counted; the pixel is the mean of
+ *   the others.
+ * - An interrupted render (SIGINT) stops early, and every pixel is still the mean of
+ *   the samples it actually received.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <signal.h>
+#include <string.h>
+
+#include "path.h"
+#include "scene_file.h"
+
+static void test_same_image_for_any_thread_count(void **state)
+{
+    (void)state;
+    Scene scene;
+    char error[256];
+    assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
+    PathSettings path = {1, 0.5, 64, FRESNEL_EXACT};
+    const int threads[] = {1, 2, 7};
+    RenderResult results[3];
+    for (int i = 0; i < 3; i++) {
+        RenderSettings settings = {48, 48, 3, PIXEL_RANDOM, threads[i], 2019, 0, "test"};
+        assert_int_equal(render(&scene, &settings, path_radiance, &path, &results[i]), 0);
+        assert_int_equal(results[i].threads, threads[i]);
+    }
+    size_t bytes = 3 * 48 * 48 * sizeof(float);
+    for (int i = 1; i < 3; i++) {
+        assert_memory_equal(results[0].image.pixels, results[i].image.pixels, bytes);
+        assert_memory_equal(results[0].std_error.pixels, results[i].std_error.pixels, bytes);
+        assert_true(results[0].rays.bounce == results[i].rays.bounce);
+        assert_true(results[0].rays.shadow == results[i].rays.shadow);
+    }
+    /* A different seed gives a different image: the test above is not vacuous. */
+    RenderSettings other = {48, 48, 3, PIXEL_RANDOM, 2, 2020, 0, "test"};
+    RenderResult different;
+    assert_int_equal(render(&scene, &other, path_radiance, &path, &different), 0);
+    assert_true(memcmp(results[0].image.pixels, different.image.pixels, bytes) != 0);
+    for (int i = 0; i < 3; i++)
+        render_result_free(&results[i]);
+    render_result_free(&different);
+    scene_free(&scene);
+}
+
+/* (u, 2u, 1) with u the sample's first random number. */
+static Vec3 sample_number(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                          RayCounts *counts)
+{
+    (void)scene, (void)ray, (void)settings, (void)counts;
+    double u = rng_uniform(rng);
+    return vec3(u, 2.0 * u, 1.0);
+}
+
+/* Each pixel's value and standard error against the same samples drawn by hand. */
+static void test_pixel_is_mean_of_samples(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
+    RenderSettings settings = {4, 4, 5, PIXEL_CENTRE, 2, 77, 0, "test"};
+    RenderResult result;
+    assert_int_equal(render(&scene, &settings, sample_number, NULL, &result), 0);
+    for (int pixel = 0; pixel < 16; pixel++) {
+        double sum = 0, sum_squares = 0;
+        for (int s = 0; s < 5; s++) {
+            Rng rng = rng_for_sample(77, (uint64_t)pixel, (uint64_t)s);
+            double u = rng_uniform(&rng);
+            sum += u;
+            sum_squares += u * u;
+        }
+        double mean = sum / 5, std_error = sqrt((sum_squares - 5 * mean * mean) / 4 / 5);
+        Vec3 value = image_get(&result.image, pixel % 4, pixel / 4);
+        Vec3 error = image_get(&result.std_error, pixel % 4, pixel / 4);
+        assert_true(fabs(value.x - mean) < 1e-6 && fabs(value.y - 2 * mean) < 1e-6);
+        assert_true(value.z == 1.0f && error.z == 0.0f);
+        assert_true(fabs(error.x - std_error) < 1e-6);
+    }
+    assert_true(result.samples == 80 && result.nonfinite == 0 && !result.interrupted);
+    render_result_free(&result);
+}
+
+/* Every third sample is NaN or infinite. */
+static Vec3 sometimes_nonfinite(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                                RayCounts *counts)
+{
+    (void)scene, (void)ray, (void)settings, (void)counts;
+    uint32_t r = rng_next(rng) % 3;
+    return r == 0 ? vec3(NAN, 1, 1) : r == 1 ? vec3(1, INFINITY, 1) : vec3(0.5, 0.5, 0.5);
+}
+
+static void test_nonfinite_samples_dropped_and_counted(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
+    RenderSettings settings = {8, 8, 30, PIXEL_CENTRE, 2, 5, 0, "test"};
+    RenderResult result;
+    assert_int_equal(render(&scene, &settings, sometimes_nonfinite, NULL, &result), 0);
+    uint64_t expected = 0;
+    for (int pixel = 0; pixel < 64; pixel++)
+        for (int s = 0; s < 30; s++) {
+            Rng rng = rng_for_sample(5, (uint64_t)pixel, (uint64_t)s);
+            expected += rng_next(&rng) % 3 != 2;
+        }
+    assert_true(result.nonfinite == expected && expected > 0);
+    for (int i = 0; i < 3 * 64; i++)
+        assert_true(result.image.pixels[i] == 0.5f || result.image.pixels[i] == 0.0f);
+    render_result_free(&result);
+}
+
+/* Returns 1 per sample, and raises SIGINT during pass 3. */
+static Vec3 interrupt_midway(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                             RayCounts *counts)
+{
+    (void)scene, (void)ray, (void)rng, (void)counts;
+    const int *pass_to_interrupt = settings;
+    static int calls;
+    if (++calls == 64 * 64 * *pass_to_interrupt + 100)
+        raise(SIGINT);
+    return vec3(1, 1, 1);
+}
+
+static void test_interrupt_keeps_a_normalised_image(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
+    render_install_interrupt();
+    RenderSettings settings = {64, 64, 1000, PIXEL_CENTRE, 1, 5, 0, "test"};
+    int pass_to_interrupt = 3;
+    RenderResult result;
+    assert_int_equal(render(&scene, &settings, interrupt_midway, &pass_to_interrupt, &result), 0);
+    assert_true(result.interrupted);
+    double spp = render_samples_per_pixel(&result);
+    print_message("    stopped after %.3f of 1000 samples per pixel\n", spp);
+    assert_true(spp > 3.0 && spp < 4.0); /* the row in progress finished, then it stopped */
+    for (int i = 0; i < 3 * 64 * 64; i++)
+        assert_true(result.image.pixels[i] == 1.0f); /* each pixel: its sum / its count */
+    render_result_free(&result);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_same_image_for_any_thread_count),
+        cmocka_unit_test(test_pixel_is_mean_of_samples),
+        cmocka_unit_test(test_nonfinite_samples_dropped_and_counted),
+        cmocka_unit_test(test_interrupt_keeps_a_normalised_image),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
