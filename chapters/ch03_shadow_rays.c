@@ -19,7 +19,8 @@
 static const int SWEEP[] = {0, 1, 2, 4, 8, 16, 30};
 enum { SWEEP_COUNT = sizeof SWEEP / sizeof SWEEP[0], SWEEP_SPP = 4 };
 
-/* Render one setting of M into a table row (and its image, when wanted). */
+/* Render one setting of M into a table row. With `image`, it is a panel: its image is
+ * written and kept in *image; without, only measured. */
 static TableRow render_m(const Options *options, const Scene *scene, const Reference *reference,
                          int m, int spp, PixelSampling sampling, const char *name, Image *image)
 {
@@ -28,8 +29,10 @@ static TableRow render_m(const Options *options, const Scene *scene, const Refer
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d depth=%d", spp, m, options->depth);
     RenderSettings settings = experiment_render_settings(options, scene, spp, sampling, name);
     RenderResult result;
-    TableRow row = experiment_panel(options, scene, &settings, path_radiance, &path, name,
-                                    settings_text, reference, &result);
+    TableRow row = image ? experiment_panel(options, scene, &settings, path_radiance, &path, name,
+                                            settings_text, reference, &result)
+                         : experiment_measure(scene, &settings, path_radiance, &path, name,
+                                              settings_text, reference, &result);
     image_free(&result.std_error);
     if (image)
         *image = result.image;
@@ -92,7 +95,7 @@ int main(int argc, char **argv)
     TableRow sweep[SWEEP_COUNT];
     for (int i = 0; i < SWEEP_COUNT; i++) {
         char name[64];
-        snprintf(name, sizeof name, "ch03_sweep_m%d", SWEEP[i]);
+        snprintf(name, sizeof name, "sweep, M=%d", SWEEP[i]);
         sweep[i] = render_m(&sweep_options, &scene, &reference, SWEEP[i], SWEEP_SPP,
                             PIXEL_RANDOM, name, NULL);
     }

@@ -19,18 +19,23 @@
 static const double SWEEP[] = {0.01, 0.05, 0.1, 0.25, 0.5, 0.75, 0.9, 1.0};
 enum { SWEEP_COUNT = sizeof SWEEP / sizeof SWEEP[0] };
 
-/* Render one alpha into a table row; its image and standard error stay in *result. */
+/* Render one alpha into a table row; its image and standard error stay in *result.
+ * A panel (`panel` non-zero) also has its image written. */
 static TableRow render_alpha(const Options *options, const Scene *scene,
-                             const Reference *reference, double alpha, PixelSampling sampling,
+                             const Reference *reference, double alpha, int panel,
                              const char *name, RenderResult *result)
 {
     PathSettings path = {options->shadow_rays, alpha, options->depth, FRESNEL_SCHLICK};
     char settings_text[96];
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d alpha=%g", options->spp,
              options->shadow_rays, alpha);
+    PixelSampling sampling = panel ? PIXEL_SUBPIXELS : PIXEL_RANDOM;
     RenderSettings settings = experiment_render_settings(options, scene, options->spp, sampling, name);
-    return experiment_panel(options, scene, &settings, path_radiance, &path, name,
-                            settings_text, reference, result);
+    if (panel)
+        return experiment_panel(options, scene, &settings, path_radiance, &path, name,
+                                settings_text, reference, result);
+    return experiment_measure(scene, &settings, path_radiance, &path, name, settings_text,
+                              reference, result);
 }
 
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
@@ -69,8 +74,7 @@ int main(int argc, char **argv)
         char name[64];
         snprintf(name, sizeof name, "ch06_figure12_alpha%g", figure_alpha[i]);
         RenderResult result;
-        rows[i] = render_alpha(&options, &scene, &reference, figure_alpha[i], PIXEL_SUBPIXELS,
-                               name, &result);
+        rows[i] = render_alpha(&options, &scene, &reference, figure_alpha[i], 1, name, &result);
         experiment_caption(&rows[i], i == 0 ? "Figure 12, left" : "Figure 12, right",
                            captions[i], sizeof captions[i]);
         images[i] = result.image;
@@ -94,10 +98,9 @@ int main(int argc, char **argv)
     printf("  reference        %.5f +- %.5f\n", reference_mean, reference_error);
     for (int i = 0; i < SWEEP_COUNT; i++) {
         char name[64];
-        snprintf(name, sizeof name, "ch06_sweep_alpha%g", SWEEP[i]);
+        snprintf(name, sizeof name, "sweep, alpha=%g", SWEEP[i]);
         RenderResult result;
-        sweep[i] = render_alpha(&sweep_options, &scene, &reference, SWEEP[i], PIXEL_RANDOM, name,
-                                &result);
+        sweep[i] = render_alpha(&sweep_options, &scene, &reference, SWEEP[i], 0, name, &result);
         double mean, error;
         measure_image_mean(&result.image, &result.std_error, &mean, &error);
         double z = (mean - reference_mean) / sqrt(error * error + reference_error * reference_error);

@@ -169,6 +169,25 @@ TableRow experiment_row(const char *panel, const char *settings, const RenderRes
     return row;
 }
 
+static TableRow measured_row(const char *name, const char *settings_text,
+                             const RenderResult *result, const Reference *reference)
+{
+    TableRow row = experiment_row(name, settings_text, result);
+    if (reference)
+        measure_fill_row(&row, &result->image, reference);
+    return row;
+}
+
+TableRow experiment_measure(const Scene *scene, const RenderSettings *settings,
+                            Estimator estimate, const void *estimator_settings,
+                            const char *name, const char *settings_text,
+                            const Reference *reference, RenderResult *result)
+{
+    experiment_render(scene, settings, estimate, estimator_settings, result);
+    experiment_exit_if_interrupted(result);
+    return measured_row(name, settings_text, result, reference);
+}
+
 TableRow experiment_panel(const Options *options, const Scene *scene,
                           const RenderSettings *settings, Estimator estimate,
                           const void *estimator_settings, const char *name,
@@ -178,10 +197,7 @@ TableRow experiment_panel(const Options *options, const Scene *scene,
     experiment_render(scene, settings, estimate, estimator_settings, result);
     experiment_write_image(options, name, &result->image, PANEL_EXPOSURE);
     experiment_exit_if_interrupted(result);
-    TableRow row = experiment_row(name, settings_text, result);
-    if (reference)
-        measure_fill_row(&row, &result->image, reference);
-    return row;
+    return measured_row(name, settings_text, result, reference);
 }
 
 void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size)

@@ -66,10 +66,16 @@ void experiment_write_table(const Options *options, const char *name, const Tabl
 /* A table row with the cost columns of a render filled in and no error measured. */
 TableRow experiment_row(const char *panel, const char *settings, const RenderResult *result);
 
-/* One panel of a figure: render it, write it as NAME.png/.pfm, and return its table
- * row, with the error columns filled when a reference is given (else NULL). The
- * rendered image stays in *result for the figure. An interrupted render is saved,
- * then the program exits (experiment_exit_if_interrupted). */
+/* One measurement: render, and return its table row (labelled `name`) with the error
+ * columns filled when a reference is given (else NULL). The rendered image stays in
+ * *result. An interrupted render exits the program (experiment_exit_if_interrupted). */
+TableRow experiment_measure(const Scene *scene, const RenderSettings *settings,
+                            Estimator estimate, const void *estimator_settings,
+                            const char *name, const char *settings_text,
+                            const Reference *reference, RenderResult *result);
+
+/* One panel of a figure: experiment_measure, and the image written as NAME.png/.pfm
+ * (also when interrupted, before the program exits). */
 TableRow experiment_panel(const Options *options, const Scene *scene,
                           const RenderSettings *settings, Estimator estimate,
                           const void *estimator_settings, const char *name,

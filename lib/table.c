@@ -21,12 +21,12 @@ static void print_measure(FILE *out, const char *format, double value)
 
 void table_print(FILE *out, const TableRow *rows, int count)
 {
-    fprintf(out, "%-22s %-34s %7s %8s %3s %10s %10s %10s %7s %10s %10s %10s %5s\n", "panel",
+    fprintf(out, "%-26s %-40s %7s %8s %3s %10s %10s %10s %7s %10s %10s %10s %5s\n", "panel",
             "settings", "spp", "seconds", "thr", "camera", "bounce", "shadow", "Mray/s", "rmse",
             "rel_mse", "efficiency", "nan");
     for (int i = 0; i < count; i++) {
         const TableRow *r = &rows[i];
-        fprintf(out, "%-22s %-34s %7.1f %8.2f %3d %10llu %10llu %10llu %7.2f", r->panel,
+        fprintf(out, "%-26s %-40s %7.1f %8.2f %3d %10llu %10llu %10llu %7.2f", r->panel,
                 r->settings, r->spp, r->seconds, r->threads, (unsigned long long)r->rays.camera,
                 (unsigned long long)r->rays.bounce, (unsigned long long)r->rays.shadow,
                 table_mrays_per_second(r));

@@ -1,0 +1,195 @@
+/* Chapter 7: the final image and the benchmarks (report §4.2, §4.8, §5; Figure 7,
+ * Table 1).
+ *
+ * New concepts (lib/): bvh (the bounding volume hierarchy that every chapter's ray
+ * queries already go through), plot (the convergence plot). Multithreading (render.c,
+ * --threads) is what the report's discussion asks for first: its final image took 311
+ * minutes on one thread.
+ *
+ * The experiment:
+ *   - Figure 7: the room with everything on (sub-pixels, shadow rays, glass with
+ *     Fresnel reflectance, Russian roulette; Oren-Nayar where a scene uses it);
+ *   - Table 1: the report's six settings (samples per pixel, shadow rays, roulette
+ *     alpha) at full size, each with its time, rays, error against the reference and
+ *     efficiency, beside the minutes the report measured;
+ *   - a convergence plot: for the five estimators of Table 1, the error against the
+ *     time as the samples double, log-log, on a quarter-size image.
+ * Every setting estimates the same image (roulette and shadow rays are unbiased, and
+ * the depth limit of 64 is never reached in practice), so one reference serves all.
+ *
+ * Watch the roulette constant. A surviving path's weight grows by rho / alpha at each
+ * diffuse bounce, so its variance is finite only when alpha > rho^2 (tests/test_path.c).
+ * The room's white walls have rho^2 = 0.56: Table 1's alpha = 0.25 and 0.01 are below
+ * that, their error is dominated by rare very bright samples ("fireflies") and falls
+ * slower than 1/sqrt(time) on the convergence plot. The final image uses alpha = 0.75,
+ * above the brightest surface's rho^2 = 0.64.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "experiment.h"
+#include "path.h"
+#include "plot.h"
+
+typedef struct {
+    int spp, shadow_rays;
+    double rr;
+    double report_minutes;
+} Table1Setting;
+
+static const Table1Setting TABLE1[] = {
+    {16, 1, 0.25, 7}, {16, 30, 0.25, 132}, {1, 20, 0.25, 5},
+    {4, 20, 0.25, 23}, {4, 20, 0.01, 5},   {4, 20, 0.9, 51},
+};
+enum { TABLE1_ROWS = sizeof TABLE1 / sizeof TABLE1[0] };
+
+/* The convergence plot's estimators: Table 1's, once each, with their colours. */
+static const struct {
+    int shadow_rays;
+    double rr;
+    const char *colour_name;
+    Vec3 colour;
+} ESTIMATORS[] = {
+    {1, 0.25, "red", {0.85, 0.1, 0.1}},   {30, 0.25, "green", {0.1, 0.6, 0.1}},
+    {20, 0.25, "blue", {0.1, 0.2, 0.9}},  {20, 0.01, "orange", {0.95, 0.55, 0.0}},
+    {20, 0.9, "purple", {0.6, 0.1, 0.7}},
+};
+enum { ESTIMATOR_COUNT = sizeof ESTIMATORS / sizeof ESTIMATORS[0], CONVERGENCE_STEPS = 5 };
+
+static void reference_for(const Options *options, const Scene *scene, Reference *reference)
+{
+    PathSettings estimator = {1, 0.75, options->depth, options->fresnel};
+    char description[96];
+    path_describe(&estimator, description, sizeof description);
+    experiment_reference(options, scene, path_radiance, &estimator, description,
+                         options->reference_spp, reference);
+}
+
+/* Render one setting and return its table row. With `image`, it is a panel: its image
+ * is written and kept in *image; without, only measured. */
+static TableRow render_setting(const Options *options, const Scene *scene,
+                               const Reference *reference, int spp, int shadow_rays, double rr,
+                               const char *name, const char *note, Image *image)
+{
+    PathSettings path = {shadow_rays, rr, options->depth, options->fresnel};
+    char settings_text[96];
+    snprintf(settings_text, sizeof settings_text, "%d spp, M=%d, rr=%g%s", spp, shadow_rays, rr, note);
+    RenderSettings settings = experiment_render_settings(options, scene, spp, PIXEL_SUBPIXELS, name);
+    RenderResult result;
+    TableRow row = image ? experiment_panel(options, scene, &settings, path_radiance, &path, name,
+                                            settings_text, reference, &result)
+                         : experiment_measure(scene, &settings, path_radiance, &path, name,
+                                              settings_text, reference, &result);
+    image_free(&result.std_error);
+    if (image)
+        *image = result.image;
+    else
+        image_free(&result.image);
+    return row;
+}
+
+static void final_image(const Options *options, const Scene *scene, const Reference *reference)
+{
+    Image image;
+    TableRow row = render_setting(options, scene, reference, options->spp, options->shadow_rays,
+                                  options->rr, "ch07_figure7", "", &image);
+    char caption[256];
+    experiment_caption(&row, "Figure 7: final image", caption, sizeof caption);
+    const char *captions[] = {caption};
+    experiment_write_figure(options, "ch07_figure7_captioned", &image, captions, 1, PANEL_EXPOSURE);
+    experiment_write_table(options, "ch07_figure7", &row, 1);
+    image_free(&image);
+}
+
+static void table1(const Options *options, const Scene *scene, const Reference *reference)
+{
+    TableRow rows[TABLE1_ROWS];
+    for (int i = 0; i < TABLE1_ROWS; i++) {
+        char name[48], note[48];
+        snprintf(name, sizeof name, "Table 1, row %d", i + 1);
+        snprintf(note, sizeof note, " (report: %g min)", TABLE1[i].report_minutes);
+        rows[i] = render_setting(options, scene, reference, TABLE1[i].spp, TABLE1[i].shadow_rays,
+                                 TABLE1[i].rr, name, note, NULL);
+    }
+    printf("\nTable 1 of the report, measured here:\n");
+    experiment_write_table(options, "ch07_table1", rows, TABLE1_ROWS);
+    printf("\n%-28s %12s %12s %10s\n", "setting", "report (s)", "here (s)", "speed-up");
+    for (int i = 0; i < TABLE1_ROWS; i++) {
+        char setting[48];
+        snprintf(setting, sizeof setting, "%d spp, M=%d, rr=%g", TABLE1[i].spp,
+                 TABLE1[i].shadow_rays, TABLE1[i].rr);
+        printf("%-28s %12.0f %12.2f %10.0f\n", setting, 60.0 * TABLE1[i].report_minutes,
+               rows[i].seconds, 60.0 * TABLE1[i].report_minutes / rows[i].seconds);
+    }
+}
+
+/* Error against time as the samples double, for each estimator; CSV and plot. */
+static void convergence(const Options *options, const Scene *scene)
+{
+    Options small = *options;
+    small.size = options->size / 4 > 16 ? options->size / 4 : 16;
+    Reference reference;
+    reference_for(&small, scene, &reference);
+    double seconds[ESTIMATOR_COUNT][CONVERGENCE_STEPS], rmse[ESTIMATOR_COUNT][CONVERGENCE_STEPS];
+    TableRow rows[ESTIMATOR_COUNT * CONVERGENCE_STEPS];
+    PlotSeries series[ESTIMATOR_COUNT];
+    char legend[512] = "";
+    for (int e = 0; e < ESTIMATOR_COUNT; e++) {
+        for (int step = 0; step < CONVERGENCE_STEPS; step++) {
+            char name[64];
+            snprintf(name, sizeof name, "%s, %d spp", ESTIMATORS[e].colour_name, 1 << step);
+            TableRow *row = &rows[e * CONVERGENCE_STEPS + step];
+            *row = render_setting(&small, scene, &reference, 1 << step, ESTIMATORS[e].shadow_rays,
+                                  ESTIMATORS[e].rr, name, "", NULL);
+            seconds[e][step] = row->seconds;
+            rmse[e][step] = row->rmse;
+        }
+        series[e] = (PlotSeries){seconds[e], rmse[e], CONVERGENCE_STEPS, ESTIMATORS[e].colour};
+        size_t used = strlen(legend);
+        snprintf(legend + used, sizeof legend - used, "%s: M=%d rr=%g\n", ESTIMATORS[e].colour_name,
+                 ESTIMATORS[e].shadow_rays, ESTIMATORS[e].rr);
+    }
+    printf("\nconvergence at %d pixels wide, 1 to %d spp:\n", small.size, 1 << (CONVERGENCE_STEPS - 1));
+    experiment_write_table(options, "ch07_convergence", rows, ESTIMATOR_COUNT * CONVERGENCE_STEPS);
+
+    int decades[4];
+    Image plot = plot_log_log(series, ESTIMATOR_COUNT, 600, 400, decades);
+    if (!plot.pixels)
+        cli_fail(1, "out of memory drawing the plot");
+    char caption[768];
+    snprintf(caption, sizeof caption,
+             "RMSE against time, log-log, 1 to %d spp\nx: 1e%d to 1e%d s, y: 1e%d to 1e%d,"
+             " a grey line per decade\n%s",
+             1 << (CONVERGENCE_STEPS - 1), decades[0], decades[1], decades[2], decades[3], legend);
+    const char *captions[] = {caption};
+    experiment_write_figure(options, "ch07_convergence", &plot, captions, 1, 1.0);
+    image_free(&plot);
+    measure_reference_free(&reference);
+}
+
+int main(int argc, char **argv)
+{
+    ProgramInfo info = {
+        "Chapter 7, the final image and the benchmarks: reproduces the report's Figure 7 and\n"
+        "Table 1 (with times, errors and efficiency), and plots error against time.",
+        FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_RR | FLAG_DEPTH | FLAG_FRESNEL |
+            FLAG_REFERENCE_SPP,
+        {.scene = "scenes/room.scene", .size = 800, .spp = 64, .shadow_rays = 4, .rr = 0.75,
+         .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = 256},
+    };
+    Options options;
+    cli_parse(argc, argv, &info, &options);
+    if (options.quick && !cli_given(&options, FLAG_SIZE))
+        options.size = 200;
+
+    Scene scene;
+    experiment_load_scene(&options, NEEDS_AREA_LIGHT, &scene);
+    Reference reference;
+    reference_for(&options, &scene, &reference);
+    final_image(&options, &scene, &reference);
+    table1(&options, &scene, &reference);
+    measure_reference_free(&reference);
+    convergence(&options, &scene);
+    scene_free(&scene);
+    return 0;
+}
