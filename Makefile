@@ -103,6 +103,11 @@ fuzz: $(FUZZ_BIN)
 	$(FUZZ_BIN) -max_total_time=$(FUZZ_SECONDS) -timeout=5 -max_len=4096 \
 	    $(BUILD)/fuzz/corpus tests/fuzz_corpus scenes
 
+# The benchmark: speed, not correctness (BENCH_ARGS="--size 400" to change it).
+BENCH_ARGS ?=
+bench: $(BUILD)/tests/bench
+	$(BUILD)/tests/bench $(BENCH_ARGS)
+
 clean:
 	rm -rf $(BUILD)
 
