@@ -97,7 +97,7 @@ FUZZ_SRC := $(addprefix lib/,scene_file.c scene.c bvh.c triangle.c sphere.c came
 $(FUZZ_BIN): tests/fuzz_scene_file.c $(FUZZ_SRC) | $(DEPS_OK)
 	@sh .ci/install-deps clang
 	@mkdir -p $(@D) $(BUILD)/fuzz/corpus
-	clang $(REQUIRED) -Ilib -g -O1 -fsanitize=fuzzer,address,undefined $^ -lm -o $@
+	clang $(REQUIRED) -Ilib -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $^ -lm -o $@
 
 fuzz: $(FUZZ_BIN)
 	$(FUZZ_BIN) -max_total_time=$(FUZZ_SECONDS) -timeout=5 -max_len=4096 \
