@@ -59,7 +59,7 @@ static Vec3 panel_radiance(int i, int col, int row, int width, int height)
 static Decoded figure_of(int count, int width, int height, const char *const *captions,
                          double exposure)
 {
-    Image panels[3];
+    Image panels[3] = {{0, 0, NULL}, {0, 0, NULL}, {0, 0, NULL}};
     for (int i = 0; i < count; i++) {
         panels[i] = image_new(width, height);
         assert_non_null(panels[i].pixels);
