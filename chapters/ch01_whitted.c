@@ -25,8 +25,6 @@ int main(int argc, char **argv)
     };
     Options options;
     cli_parse(argc, argv, &info, &options);
-    if (options.quick && !cli_given(&options, FLAG_SIZE))
-        options.size = 200;
 
     Scene scene;
     experiment_load_scene(&options, NEEDS_POINT_LIGHT, &scene);

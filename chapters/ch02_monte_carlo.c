@@ -37,18 +37,13 @@ int main(int argc, char **argv)
     };
     Options options;
     cli_parse(argc, argv, &info, &options);
-    if (options.quick && !cli_given(&options, FLAG_SIZE))
-        options.size = 200;
 
     Scene scene;
     experiment_load_scene(&options, NEEDS_AREA_LIGHT, &scene);
     PathSettings hitting = {0, 1.0, options.depth, FRESNEL_SCHLICK};
     PathSettings with_shadow_ray = {1, 1.0, options.depth, FRESNEL_SCHLICK};
-    char description[96];
-    path_describe(&with_shadow_ray, description, sizeof description);
     Reference reference;
-    experiment_reference(&options, &scene, path_radiance, &with_shadow_ray, description,
-                         options.reference_spp, &reference);
+    experiment_path_reference(&options, &scene, &with_shadow_ray, &reference);
 
     const Panel panels[] = {
         {"ch02_figure8_1spp", "Figure 8, left", 1, PIXEL_SUBPIXELS},
@@ -65,14 +60,9 @@ int main(int argc, char **argv)
         char settings_text[96];
         snprintf(settings_text, sizeof settings_text, "%d spp %s, M=0 depth=%d", panels[i].spp,
                  panels[i].sampling == PIXEL_RANDOM ? "random" : "sub-pixels", options.depth);
-        RenderSettings settings = experiment_render_settings(&options, &scene, panels[i].spp,
-                                                             panels[i].sampling, panels[i].name);
-        RenderResult result;
-        rows[i] = experiment_panel(&options, &scene, &settings, path_radiance, &hitting,
-                                   panels[i].name, settings_text, &reference, &result);
+        rows[i] = experiment_path_row(&options, &scene, &hitting, panels[i].spp, panels[i].sampling,
+                                      panels[i].name, settings_text, &reference, &images[i]);
         experiment_caption(&rows[i], panels[i].title, captions[i], sizeof captions[i]);
-        images[i] = result.image;
-        image_free(&result.std_error);
     }
 
     const char *figure2[] = {captions[3]};

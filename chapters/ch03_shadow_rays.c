@@ -19,35 +19,22 @@
 static const int SWEEP[] = {0, 1, 2, 4, 8, 16, 30};
 enum { SWEEP_COUNT = sizeof SWEEP / sizeof SWEEP[0], SWEEP_SPP = 4 };
 
-/* Render one setting of M into a table row. With `image`, it is a panel: its image is
- * written and kept in *image; without, only measured. */
+/* One setting of M as a table row; with `image`, a panel (experiment_path_row). */
 static TableRow render_m(const Options *options, const Scene *scene, const Reference *reference,
                          int m, int spp, PixelSampling sampling, const char *name, Image *image)
 {
     PathSettings path = {m, 1.0, options->depth, FRESNEL_SCHLICK};
     char settings_text[96];
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d depth=%d", spp, m, options->depth);
-    RenderSettings settings = experiment_render_settings(options, scene, spp, sampling, name);
-    RenderResult result;
-    TableRow row = image ? experiment_panel(options, scene, &settings, path_radiance, &path, name,
-                                            settings_text, reference, &result)
-                         : experiment_measure(scene, &settings, path_radiance, &path, name,
-                                              settings_text, reference, &result);
-    image_free(&result.std_error);
-    if (image)
-        *image = result.image;
-    else
-        image_free(&result.image);
-    return row;
+    return experiment_path_row(options, scene, &path, spp, sampling, name, settings_text,
+                               reference, image);
 }
 
+/* Every M estimates the same image; the reference uses one shadow ray. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
 {
     PathSettings with_shadow_ray = {1, 1.0, options->depth, FRESNEL_SCHLICK};
-    char description[96];
-    path_describe(&with_shadow_ray, description, sizeof description);
-    experiment_reference(options, scene, path_radiance, &with_shadow_ray, description,
-                         options->reference_spp, reference);
+    experiment_path_reference(options, scene, &with_shadow_ray, reference);
 }
 
 int main(int argc, char **argv)
@@ -61,8 +48,6 @@ int main(int argc, char **argv)
     };
     Options options;
     cli_parse(argc, argv, &info, &options);
-    if (options.quick && !cli_given(&options, FLAG_SIZE))
-        options.size = 200;
 
     Scene scene;
     experiment_load_scene(&options, NEEDS_AREA_LIGHT, &scene);

@@ -56,17 +56,15 @@ static const struct {
 };
 enum { ESTIMATOR_COUNT = sizeof ESTIMATORS / sizeof ESTIMATORS[0], CONVERGENCE_STEPS = 5 };
 
+/* Every setting estimates the same image; the reference uses one shadow ray and
+ * alpha = 0.75. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
 {
     PathSettings estimator = {1, 0.75, options->depth, options->fresnel};
-    char description[96];
-    path_describe(&estimator, description, sizeof description);
-    experiment_reference(options, scene, path_radiance, &estimator, description,
-                         options->reference_spp, reference);
+    experiment_path_reference(options, scene, &estimator, reference);
 }
 
-/* Render one setting and return its table row. With `image`, it is a panel: its image
- * is written and kept in *image; without, only measured. */
+/* One setting as a table row; with `image`, a panel (experiment_path_row). */
 static TableRow render_setting(const Options *options, const Scene *scene,
                                const Reference *reference, int spp, int shadow_rays, double rr,
                                const char *name, const char *note, Image *image)
@@ -74,18 +72,8 @@ static TableRow render_setting(const Options *options, const Scene *scene,
     PathSettings path = {shadow_rays, rr, options->depth, options->fresnel};
     char settings_text[96];
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d, rr=%g%s", spp, shadow_rays, rr, note);
-    RenderSettings settings = experiment_render_settings(options, scene, spp, PIXEL_SUBPIXELS, name);
-    RenderResult result;
-    TableRow row = image ? experiment_panel(options, scene, &settings, path_radiance, &path, name,
-                                            settings_text, reference, &result)
-                         : experiment_measure(scene, &settings, path_radiance, &path, name,
-                                              settings_text, reference, &result);
-    image_free(&result.std_error);
-    if (image)
-        *image = result.image;
-    else
-        image_free(&result.image);
-    return row;
+    return experiment_path_row(options, scene, &path, spp, PIXEL_SUBPIXELS, name, settings_text,
+                               reference, image);
 }
 
 static void final_image(const Options *options, const Scene *scene, const Reference *reference)
@@ -179,8 +167,6 @@ int main(int argc, char **argv)
     };
     Options options;
     cli_parse(argc, argv, &info, &options);
-    if (options.quick && !cli_given(&options, FLAG_SIZE))
-        options.size = 200;
 
     Scene scene;
     experiment_load_scene(&options, NEEDS_AREA_LIGHT, &scene);

@@ -33,7 +33,7 @@ static const FlagSpec FLAG_SPECS[] = {
     {FLAG_OUT, "--out", VALUE_TEXT, 0, 0, "DIR     directory for the figures"},
     {FLAG_QUIET, "--quiet", VALUE_NONE, 0, 0, "        no progress display"},
     {FLAG_FRESNEL, "--fresnel", VALUE_FRESNEL, 0, 0, "MODE    glass reflectance: schlick (the report's) or exact"},
-    {FLAG_QUICK, "--quick", VALUE_NONE, 0, 0, "        small and fast, for a first look"},
+    {FLAG_QUICK, "--quick", VALUE_NONE, 0, 0, "        small and fast, for a first look: a quarter of the size and of the reference's samples"},
     {FLAG_REFERENCE_SPP, "--reference-spp", VALUE_INT, 1, 1 << 20, "N       samples per pixel of the reference image"},
 };
 #define FLAG_SPEC_COUNT ((int)(sizeof FLAG_SPECS / sizeof FLAG_SPECS[0]))
@@ -178,4 +178,8 @@ void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options)
             cli_fail(2, "%s: missing value", spec->name);
         set_value(spec, value, options);
     }
+    if (options->quick && !cli_given(options, FLAG_SIZE))
+        options->size = options->size / 4 > 16 ? options->size / 4 : 16;
+    if (options->quick && !cli_given(options, FLAG_REFERENCE_SPP))
+        options->reference_spp = options->reference_spp / 4 > 1 ? options->reference_spp / 4 : 1;
 }

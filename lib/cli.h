@@ -24,7 +24,7 @@ enum {
     FLAG_OUT = 1u << 8,         /* --out DIR */
     FLAG_QUIET = 1u << 9,       /* --quiet: no progress display */
     FLAG_FRESNEL = 1u << 10,    /* --fresnel schlick|exact */
-    FLAG_QUICK = 1u << 11,      /* --quick: small and fast, for a first look */
+    FLAG_QUICK = 1u << 11,      /* --quick: a quarter of the default size and reference samples */
     FLAG_REFERENCE_SPP = 1u << 12 /* --reference-spp N: samples of the reference image */
 };
 
@@ -59,8 +59,9 @@ typedef struct {
 /* The program's name (argv[0] without its directory), for messages. */
 extern const char *cli_program;
 
-/* Parse argv into *options, starting from info->defaults. Exits on --help (status 0)
- * and on any error (status 2). */
+/* Parse argv into *options, starting from info->defaults. With --quick, the size and
+ * the reference's samples not given on the command line are a quarter of their
+ * defaults. Exits on --help (status 0) and on any error (status 2). */
 void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options);
 
 /* Print "PROGRAM: message" on stderr and exit with `status`. */

@@ -200,6 +200,34 @@ TableRow experiment_panel(const Options *options, const Scene *scene,
     return measured_row(name, settings_text, result, reference);
 }
 
+void experiment_path_reference(const Options *options, const Scene *scene,
+                               const PathSettings *path, Reference *reference)
+{
+    char description[96];
+    path_describe(path, description, sizeof description);
+    experiment_reference(options, scene, path_radiance, path, description,
+                         options->reference_spp, reference);
+}
+
+TableRow experiment_path_row(const Options *options, const Scene *scene,
+                             const PathSettings *path, int spp, PixelSampling sampling,
+                             const char *name, const char *settings_text,
+                             const Reference *reference, Image *image)
+{
+    RenderSettings settings = experiment_render_settings(options, scene, spp, sampling, name);
+    RenderResult result;
+    TableRow row = image ? experiment_panel(options, scene, &settings, path_radiance, path, name,
+                                            settings_text, reference, &result)
+                         : experiment_measure(scene, &settings, path_radiance, path, name,
+                                              settings_text, reference, &result);
+    image_free(&result.std_error);
+    if (image)
+        *image = result.image;
+    else
+        image_free(&result.image);
+    return row;
+}
+
 void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size)
 {
     if (isnan(row->rmse))

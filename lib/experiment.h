@@ -12,6 +12,7 @@
 
 #include "cli.h"
 #include "measure.h"
+#include "path.h"
 #include "render.h"
 #include "table.h"
 
@@ -50,6 +51,17 @@ void experiment_path(const Options *options, const char *file_name, char *path, 
 void experiment_reference(const Options *options, const Scene *scene, Estimator estimate,
                           const void *estimator_settings, const char *description, int spp,
                           Reference *reference);
+
+/* experiment_reference for the path tracer with these settings (they describe it). */
+void experiment_path_reference(const Options *options, const Scene *scene,
+                               const PathSettings *path, Reference *reference);
+
+/* The path tracer at `spp` samples per pixel as one table row. With `image`, a panel:
+ * written as NAME.png/.pfm and kept in *image; without, only measured. */
+TableRow experiment_path_row(const Options *options, const Scene *scene,
+                             const PathSettings *path, int spp, PixelSampling sampling,
+                             const char *name, const char *settings_text,
+                             const Reference *reference, Image *image);
 
 /* Write NAME.png and NAME.pfm in the output directory (exit 1 on failure). */
 void experiment_write_image(const Options *options, const char *name, const Image *image,
