@@ -1,8 +1,8 @@
 /* Tests of the path tracer (lib/path.c, chapters 2, 3 and 6): the estimators are
  * unbiased, checked against closed forms.
  *
- * White furnace (SPEC §7): inside a closed box whose every surface is Lambertian with
- * reflectance rho and emits Le (from the side facing in), the radiance everywhere is
+ * White furnace (SPEC §7; the boxes are in furnace.h): in a closed box whose every
+ * surface is Lambertian with reflectance rho and emits Le, the radiance everywhere is
  *     L = Le + rho L  =>  L = Le / (1 - rho),
  * and a path limited to D segments sees exactly the first D terms of that series,
  *     L_D = Le (1 - rho^D) / (1 - rho).
@@ -12,10 +12,12 @@
  * Each also requires the standard error to be small, so the test has the power to see
  * a bias of a few percent.
  *
- * Two facts these tests rely on, worth knowing:
- *   - in the furnace, chapter 2's estimator has zero variance: every vertex adds Le and
- *     every bounce multiplies by rho, whatever the direction; its mean must then be exact
- *     (to rounding);
+ * Three facts these tests rely on, worth knowing:
+ *   - in the uniform box, chapter 2's estimator has zero variance: every vertex adds Le
+ *     and every bounce multiplies by rho, whatever the direction; its mean must then be
+ *     exact (to rounding);
+ *   - shadow rays in a box that emits up to its edges have infinite variance (furnace.h),
+ *     so every test with shadow rays uses the bordered box, whose radiance is 2;
  *   - roulette multiplies the weight by rho / alpha at each survival, so the second
  *     moment is a geometric series in rho^2 / alpha: the variance is finite only for
  *     alpha > rho^2. The roulette tests choose rho and alpha on that side; below it, the
@@ -29,39 +31,13 @@
 #include <cmocka.h>
 
 #include "chi_square.h"
+#include "furnace.h"
 #include "measure.h"
 #include "path.h"
 #include "scene_file.h"
 
 #define SAMPLES 200000
 #define TOLERANCE_SIGMAS 4.0
-
-/* A closed box [-1,1]^3 of 12 triangles facing inwards, all of one material, plus
- * optionally a glass sphere inside. */
-static void furnace_box(Scene *scene, double rho, double emission)
-{
-    scene_init(scene);
-    Material m = {"furnace", MATERIAL_LAMBERT, vec3(rho, rho, rho),
-                  vec3(emission, emission, emission), 0.0, 1.0};
-    int material = scene_add_material(scene, m);
-    /* Each face as corners in counter-clockwise order seen from inside the box. */
-    static const double faces[6][4][3] = {
-        {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}},  /* floor, normal +z */
-        {{-1, -1, 1}, {-1, 1, 1}, {1, 1, 1}, {1, -1, 1}},      /* ceiling, normal -z */
-        {{-1, -1, -1}, {-1, 1, -1}, {-1, 1, 1}, {-1, -1, 1}},  /* x = -1, normal +x */
-        {{1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {1, 1, -1}},      /* x = +1, normal -x */
-        {{-1, -1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, -1, -1}},  /* y = -1, normal +y */
-        {{-1, 1, -1}, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}},      /* y = +1, normal -y */
-    };
-    for (int f = 0; f < 6; f++) {
-        Vec3 p[4];
-        for (int k = 0; k < 4; k++)
-            p[k] = vec3(faces[f][k][0], faces[f][k][1], faces[f][k][2]);
-        scene_add_triangle(scene, triangle_make(p[0], p[1], p[2], material));
-        scene_add_triangle(scene, triangle_make(p[0], p[2], p[3], material));
-    }
-    assert_int_equal(scene_prepare(scene), 0);
-}
 
 /* Mean radiance (average of the channels) and its standard error over SAMPLES rays
  * from `origin` in random directions. */
@@ -92,13 +68,27 @@ static void assert_close(double mean, double std_error, double expected, double 
     assert_true(std_error < max_relative_error * expected);
 }
 
-static void furnace(const PathSettings *settings, double rho, double expected)
+/* The uniform box of furnace.h: rho, Le = 1. */
+static void uniform_furnace(const PathSettings *settings, double rho, double expected)
 {
     Scene scene;
-    furnace_box(&scene, rho, 1.0);
+    furnace_box_uniform(&scene, rho, 1.0);
+    assert_int_equal(scene_prepare(&scene), 0);
     double mean, std_error;
     estimate(&scene, settings, vec3(0.1, -0.2, 0.3), 7, &mean, &std_error);
     assert_close(mean, std_error, expected, 0.01);
+    scene_free(&scene);
+}
+
+/* The bordered box of furnace.h: radiance 2 everywhere (for an unlimited depth). */
+static void bordered_furnace(const PathSettings *settings)
+{
+    Scene scene;
+    furnace_box_bordered(&scene);
+    assert_int_equal(scene_prepare(&scene), 0);
+    double mean, std_error;
+    estimate(&scene, settings, vec3(0.1, -0.2, 0.3), 7, &mean, &std_error);
+    assert_close(mean, std_error, FURNACE_BORDERED_RADIANCE, 0.01);
     scene_free(&scene);
 }
 
@@ -108,64 +98,57 @@ static void test_furnace_chapter2_truncated_series(void **state)
 {
     (void)state;
     PathSettings settings = {0, 1.0, 6, FRESNEL_SCHLICK};
-    furnace(&settings, 0.5, (1.0 - pow(0.5, 6)) / 0.5);
+    uniform_furnace(&settings, 0.5, (1.0 - pow(0.5, 6)) / 0.5);
 }
 
-/* Chapter 3's estimator (one and several shadow rays): the same series. */
+/* Chapter 3's estimator, one and four shadow rays, no roulette; depth 40 leaves out
+ * ~1e-7 of the series (furnace.h). */
 static void test_furnace_chapter3_shadow_rays(void **state)
 {
     (void)state;
-    PathSettings one = {1, 1.0, 6, FRESNEL_SCHLICK};
-    furnace(&one, 0.5, (1.0 - pow(0.5, 6)) / 0.5);
-    PathSettings four = {4, 1.0, 6, FRESNEL_SCHLICK};
-    furnace(&four, 0.5, (1.0 - pow(0.5, 6)) / 0.5);
+    PathSettings one = {1, 1.0, 40, FRESNEL_SCHLICK};
+    bordered_furnace(&one);
+    PathSettings four = {4, 1.0, 40, FRESNEL_SCHLICK};
+    bordered_furnace(&four);
 }
 
-/* Chapter 6's estimator (roulette, depth practically unlimited): the full series
- * Le / (1 - rho) = 4 for rho = 0.75, with and without shadow rays (alpha = 0.75 >
- * rho^2 = 0.5625: finite variance). */
+/* Chapter 6's estimator (roulette alpha = 0.75, depth practically unlimited), with and
+ * without shadow rays. */
 static void test_furnace_chapter6_roulette(void **state)
 {
     (void)state;
     PathSettings hitting = {0, 0.75, 200, FRESNEL_SCHLICK};
-    furnace(&hitting, 0.75, 4.0);
+    bordered_furnace(&hitting);
     PathSettings shadow = {1, 0.75, 200, FRESNEL_SCHLICK};
-    furnace(&shadow, 0.75, 4.0);
+    bordered_furnace(&shadow);
 }
 
-/* Reflectance 0 and 1 (SPEC §7): rho = 0 sees only the emission; rho = 1 with depth D
- * sees exactly D times it (every term of the series is Le). Without shadow rays both
- * have zero variance; with them, eq. 21 estimates rho * Le = 1 at each of the 9
- * vertices that may still send a shadow ray (every direction sees an emitting wall),
- * with the large variance of area sampling near the box's edges (1/d^2). */
+/* Reflectance 0 and 1 (SPEC §7): rho = 0 sees only the emission (with shadow rays too:
+ * they meet rho = 0); rho = 1 with depth D sees exactly D times it (every term of the
+ * series is Le). Both have zero variance. */
 static void test_furnace_reflectance_extremes(void **state)
 {
     (void)state;
     PathSettings black = {1, 0.5, 10, FRESNEL_SCHLICK};
-    furnace(&black, 0.0, 1.0);
-    PathSettings white_hitting = {0, 1.0, 10, FRESNEL_SCHLICK};
-    furnace(&white_hitting, 1.0, 10.0);
-    PathSettings white_shadow = {1, 1.0, 10, FRESNEL_SCHLICK};
-    Scene scene;
-    furnace_box(&scene, 1.0, 1.0);
-    double mean, std_error;
-    estimate(&scene, &white_shadow, vec3(0, 0, 0), 3, &mean, &std_error);
-    assert_close(mean, std_error, 10.0, 0.05);
-    scene_free(&scene);
+    uniform_furnace(&black, 0.0, 1.0);
+    PathSettings white = {0, 1.0, 10, FRESNEL_SCHLICK};
+    uniform_furnace(&white, 1.0, 10.0);
 }
 
-/* Roulette is unbiased (chapter 6 "must show"): in the furnace, alpha = 0.05, 0.5 and
- * 1 give the same mean within their combined standard errors. rho = 0.2, so that even
- * alpha = 0.05 > rho^2 = 0.04 has finite variance. */
+/* Roulette is unbiased (chapter 6 "must show"): in the uniform furnace, alpha = 0.05,
+ * 0.5 and 1 give the same mean within their combined standard errors. rho = 0.2, so
+ * that even alpha = 0.05 > rho^2 = 0.04 has finite variance; no shadow rays, so the
+ * only variance is roulette's. */
 static void test_roulette_unbiased(void **state)
 {
     (void)state;
     Scene scene;
-    furnace_box(&scene, 0.2, 1.0);
+    furnace_box_uniform(&scene, 0.2, 1.0);
+    assert_int_equal(scene_prepare(&scene), 0);
     const double alphas[] = {0.05, 0.5, 1.0};
     double means[3], errors[3];
     for (int i = 0; i < 3; i++) {
-        PathSettings settings = {1, alphas[i], 40, FRESNEL_SCHLICK};
+        PathSettings settings = {0, alphas[i], 40, FRESNEL_SCHLICK};
         estimate(&scene, &settings, vec3(0.3, 0.3, -0.5), 11 + (uint64_t)i, &means[i], &errors[i]);
         print_message("    alpha %.2f: %.5f +- %.5f\n", alphas[i], means[i], errors[i]);
     }

@@ -1,0 +1,230 @@
+/* Chapter 5: the Oren-Nayar reflector (report §3.5.4, §4.5; Figure 10; SPEC §8.1).
+ *
+ * New concepts (lib/): oren_nayar (eqs. 13-14 with the corrections of SPEC §8.1:
+ * A = 1 - sigma^2 / (2 (sigma^2 + 0.33)), and tan(beta) where the report has sin(beta)).
+ *
+ * The experiment, on scenes/oren_nayar.scene: a rough sphere (material `rough`) beside a
+ * Lambertian sphere of the same colour, lit from the viewer's direction.
+ *   - Figure 10: the two spheres. A Lambertian sphere lit from the eye darkens towards
+ *     its rim (its radiance follows cos theta); a rough one looks flat, because near the
+ *     rim the facets that face the viewer also face the light (retro-reflection);
+ *   - a sweep of the roughness sigma of `rough` (0, 0.25, 0.5, 1 rad) on a quarter-size
+ *     image, each against a reference of its own;
+ *   - the number that says "flat": each sphere's brightness at 80% of its radius from
+ *     its centre (left and right, averaged) over the brightness at its centre, measured
+ *     on the references. At sigma = 0 Oren-Nayar is Lambert and the two agree; the rough
+ *     sphere's ratio rises with sigma. Beside them, what eq. 13 predicts for a light
+ *     exactly at the eye and no light from the walls (both directions at theta, with
+ *     sin theta = 0.8): cos theta (A + B sin theta tan theta) / A.
+ */
+#include <stdio.h>
+
+#include "experiment.h"
+#include "oren_nayar.h"
+#include "path.h"
+
+static const double SIGMAS[] = {0.0, 0.25, 0.5, 1.0};
+enum { SIGMA_COUNT = sizeof SIGMAS / sizeof SIGMAS[0], REFERENCE_SHADOW_RAYS = 4 };
+#define RIM_FRACTION 0.8
+
+/* The reference for the scene as it is now, with 4 shadow rays like the panels (the
+ * small lamp's direct light is most of the image). `sigma`, the roughness of `rough`,
+ * is named in its description because the cache knows only the scene file. */
+static void reference_for(const Options *options, const Scene *scene, double sigma,
+                          Reference *reference)
+{
+    PathSettings estimator = {REFERENCE_SHADOW_RAYS, 1.0, options->depth, FRESNEL_SCHLICK};
+    char settings[64], description[96];
+    path_describe(&estimator, settings, sizeof settings);
+    snprintf(description, sizeof description, "%s, rough sigma=%g", settings, sigma);
+    experiment_reference(options, scene, path_radiance, &estimator, description,
+                         options->reference_spp, reference);
+}
+
+/* Render one panel into a table row; its image stays in *image. */
+static TableRow render_panel(const Options *options, const Scene *scene,
+                             const Reference *reference, double sigma, PixelSampling sampling,
+                             const char *name, Image *image)
+{
+    PathSettings path = {options->shadow_rays, 1.0, options->depth, FRESNEL_SCHLICK};
+    char settings_text[96];
+    snprintf(settings_text, sizeof settings_text, "%d spp, M=%d depth=%d, sigma=%g",
+             options->spp, options->shadow_rays, options->depth, sigma);
+    return experiment_path_row(options, scene, &path, options->spp, sampling, name,
+                               settings_text, reference, image);
+}
+
+/* Where world point p appears in a width x height image, as a continuous pixel position
+ * (pixel (c, r) covers [c, c+1) x [r, r+1)). The ray from the eye to p meets the image
+ * plane at BL + a (BR - BL) + b (TL - BL); camera.h maps that to col = a W,
+ * row = (1 - b) H. a and b solve the 2 x 2 system of dot products with the plane's
+ * sides (which need not be perpendicular). */
+static void project(const Camera *camera, int width, int height, Vec3 p, double *col, double *row)
+{
+    Vec3 normal = vec3_cross(camera->right, camera->up);
+    Vec3 to_point = vec3_sub(p, camera->eye);
+    double t = vec3_dot(normal, vec3_sub(camera->bottom_left, camera->eye)) /
+               vec3_dot(normal, to_point);
+    Vec3 q = vec3_sub(vec3_add_scaled(camera->eye, to_point, t), camera->bottom_left);
+    double rr = vec3_dot(camera->right, camera->right), uu = vec3_dot(camera->up, camera->up);
+    double ru = vec3_dot(camera->right, camera->up);
+    double qr = vec3_dot(q, camera->right), qu = vec3_dot(q, camera->up);
+    double determinant = rr * uu - ru * ru;
+    double a = (qr * uu - qu * ru) / determinant, b = (qu * rr - qr * ru) / determinant;
+    *col = a * width;
+    *row = (1.0 - b) * height;
+}
+
+typedef struct {
+    double value, error; /* a brightness or a ratio, and its standard error */
+} Measured;
+
+/* The mean radiance (average of the channels) over the pixels within `half` pixels of
+ * position (col, row), clamped to the image, with its standard error. */
+static Measured brightness(const Reference *reference, double col, double row, int half)
+{
+    const Image *image = &reference->image;
+    int c0 = (int)col, r0 = (int)row;
+    double sum = 0.0, variance = 0.0;
+    int n = 0;
+    for (int r = r0 - half; r <= r0 + half; r++)
+        for (int c = c0 - half; c <= c0 + half; c++) {
+            int cc = c < 0 ? 0 : c >= image->width ? image->width - 1 : c;
+            int rc = r < 0 ? 0 : r >= image->height ? image->height - 1 : r;
+            double se = vec3_average(image_get(&reference->std_error, cc, rc));
+            sum += vec3_average(image_get(image, cc, rc));
+            variance += se * se;
+            n++;
+        }
+    return (Measured){sum / n, sqrt(variance) / n};
+}
+
+/* Brightness at RIM_FRACTION of the sphere's radius, left and right of its centre
+ * (averaged), over the brightness at its centre. The rim points are found by
+ * projecting the centre moved sideways, perpendicular to the line of sight. */
+static Measured rim_to_centre(const Scene *scene, const Reference *reference, const Sphere *sphere)
+{
+    const Camera *camera = &scene->camera;
+    int width = reference->image.width, height = reference->image.height;
+    Vec3 sight = vec3_normalize(vec3_sub(sphere->center, camera->eye));
+    Vec3 sideways = vec3_sub(camera->right, vec3_scale(sight, vec3_dot(camera->right, sight)));
+    Vec3 offset = vec3_scale(vec3_normalize(sideways), RIM_FRACTION * sphere->radius);
+    double col, row, left_col, left_row, right_col, right_row;
+    project(camera, width, height, sphere->center, &col, &row);
+    project(camera, width, height, vec3_sub(sphere->center, offset), &left_col, &left_row);
+    project(camera, width, height, vec3_add(sphere->center, offset), &right_col, &right_row);
+    double radius_pixels = fabs(right_col - left_col) / (2.0 * RIM_FRACTION);
+    int half = (int)(radius_pixels / 10.0); /* a window small beside the sphere */
+    Measured centre = brightness(reference, col, row, half);
+    Measured left = brightness(reference, left_col, left_row, half);
+    Measured right = brightness(reference, right_col, right_row, half);
+    Measured rim = {(left.value + right.value) / 2.0, hypot(left.error, right.error) / 2.0};
+    double ratio = rim.value / centre.value;
+    return (Measured){ratio, ratio * hypot(rim.error / rim.value, centre.error / centre.value)};
+}
+
+/* Eq. 13 with the light at the eye: both directions at theta from the normal, in the
+ * same plane, so the ratio to the centre (theta = 0) is cos theta (A + B sin theta
+ * tan theta) / A. */
+static double eye_lit_ratio(double sigma)
+{
+    double sin_theta = RIM_FRACTION, cos_theta = sqrt(1.0 - sin_theta * sin_theta);
+    double a = oren_nayar_a(sigma), b = oren_nayar_b(sigma);
+    return cos_theta * (a + b * sin_theta * (sin_theta / cos_theta)) / a;
+}
+
+/* The first sphere of material `rough` and the first Lambertian sphere, to compare;
+ * exit 2 when the scene lacks either. */
+static void find_spheres(const Scene *scene, int rough, const Sphere **rough_sphere,
+                         const Sphere **lambert_sphere)
+{
+    *rough_sphere = *lambert_sphere = NULL;
+    for (int i = 0; i < scene->sphere_count; i++) {
+        const Sphere *s = &scene->spheres[i];
+        if (!*rough_sphere && s->material == rough)
+            *rough_sphere = s;
+        if (!*lambert_sphere && scene->materials[s->material].kind == MATERIAL_LAMBERT)
+            *lambert_sphere = s;
+    }
+    if (!*rough_sphere || !*lambert_sphere)
+        cli_fail(2, "%s:%d: no sphere of material 'rough', or no Lambertian sphere: %s "
+                    "compares the two", scene->source, scene->line_count, cli_program);
+}
+
+int main(int argc, char **argv)
+{
+    ProgramInfo info = {
+        "Chapter 5, the Oren-Nayar reflector: reproduces the report's Figure 10 (a rough\n"
+        "sphere beside a Lambertian one) and sweeps the roughness sigma.",
+        FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_REFERENCE_SPP,
+        {.scene = "scenes/oren_nayar.scene", .size = 800, .spp = 16, .shadow_rays = 4,
+         .depth = 8, .seed = 1, .out = "build/figures", .reference_spp = 256},
+    };
+    Options options;
+    cli_parse(argc, argv, &info, &options);
+
+    Scene scene;
+    experiment_load_scene(&options, NEEDS_AREA_LIGHT, &scene);
+    int rough = scene_find_material(&scene, "rough");
+    if (rough < 0 || scene.materials[rough].kind != MATERIAL_OREN_NAYAR)
+        cli_fail(2, "%s:%d: no oren_nayar material named 'rough': %s sweeps its sigma",
+                 scene.source, scene.line_count, cli_program);
+    const Sphere *rough_sphere, *lambert_sphere;
+    find_spheres(&scene, rough, &rough_sphere, &lambert_sphere);
+
+    /* Figure 10: the scene as it is. */
+    double file_sigma = scene.materials[rough].sigma;
+    Reference reference;
+    reference_for(&options, &scene, file_sigma, &reference);
+    Image image;
+    TableRow row = render_panel(&options, &scene, &reference, file_sigma, PIXEL_SUBPIXELS,
+                                "ch05_figure10", &image);
+    char caption[256];
+    experiment_caption(&row, "Figure 10: Oren-Nayar | Lambert", caption, sizeof caption);
+    const char *figure_captions[] = {caption};
+    experiment_write_figure(&options, "ch05_figure10", &image, figure_captions, 1, PANEL_EXPOSURE);
+    experiment_write_table(&options, "ch05_table", &row, 1);
+    image_free(&image);
+    measure_reference_free(&reference);
+
+    /* The sweep of sigma, each against its own reference, on a quarter-size image. */
+    Options sweep_options = options;
+    sweep_options.size = options.size / 4 > 16 ? options.size / 4 : 16;
+    TableRow rows[SIGMA_COUNT];
+    Image images[SIGMA_COUNT];
+    char captions[SIGMA_COUNT][256];
+    Measured rough_ratio[SIGMA_COUNT], lambert_ratio[SIGMA_COUNT];
+    for (int i = 0; i < SIGMA_COUNT; i++) {
+        scene.materials[rough].sigma = SIGMAS[i];
+        reference_for(&sweep_options, &scene, SIGMAS[i], &reference);
+        char name[64], title[64];
+        snprintf(name, sizeof name, "ch05_sigma%g", SIGMAS[i]);
+        snprintf(title, sizeof title, "sigma = %g rad", SIGMAS[i]);
+        rows[i] = render_panel(&sweep_options, &scene, &reference, SIGMAS[i], PIXEL_RANDOM,
+                               name, &images[i]);
+        experiment_caption(&rows[i], title, captions[i], sizeof captions[i]);
+        rough_ratio[i] = rim_to_centre(&scene, &reference, rough_sphere);
+        lambert_ratio[i] = rim_to_centre(&scene, &reference, lambert_sphere);
+        measure_reference_free(&reference);
+    }
+    const char *sweep_captions[SIGMA_COUNT];
+    for (int i = 0; i < SIGMA_COUNT; i++)
+        sweep_captions[i] = captions[i];
+    experiment_write_figure(&options, "ch05_sigma_sweep", images, sweep_captions, SIGMA_COUNT,
+                            PANEL_EXPOSURE);
+    printf("\nsweep of sigma at %d pixels wide:\n", sweep_options.size);
+    experiment_write_table(&options, "ch05_sigma_sweep", rows, SIGMA_COUNT);
+
+    printf("\nbrightness at %.0f%% of the radius over the brightness at the centre (on the "
+           "references):\n  sigma    rough sphere        Lambertian sphere   eq. 13, light at "
+           "the eye\n", 100.0 * RIM_FRACTION);
+    for (int i = 0; i < SIGMA_COUNT; i++) {
+        printf("  %-5g    %.3f +- %.3f     %.3f +- %.3f       %.3f\n", SIGMAS[i],
+               rough_ratio[i].value, rough_ratio[i].error, lambert_ratio[i].value,
+               lambert_ratio[i].error, eye_lit_ratio(SIGMAS[i]));
+        image_free(&images[i]);
+    }
+
+    scene_free(&scene);
+    return 0;
+}
