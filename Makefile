@@ -24,7 +24,8 @@ QUICK_ARGS := --quick
 endif
 
 # stb's headers are third-party: include them as system headers so -Werror judges only ours.
-PKG_CFLAGS := $(patsubst -I%,-isystem %,$(shell pkg-config --cflags stb cmocka 2>/dev/null))
+# Evaluated when used (=, not :=), so after .ci/install-deps has run on a fresh machine.
+PKG_CFLAGS  = $(patsubst -I%,-isystem %,$(shell pkg-config --cflags stb cmocka 2>/dev/null))
 REQUIRED   := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wpedantic -Werror -pthread
 ALL_CFLAGS  = $(REQUIRED) -Ilib $(PKG_CFLAGS) $(CFLAGS) -MMD -MP
 LIBS        = $(shell pkg-config --libs stb 2>/dev/null) -lm -pthread
