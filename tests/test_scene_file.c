@@ -16,14 +16,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "check.h"
 #include "scene_file.h"
-
-#define assert_close(a, b, tol) \
-    do { \
-        double a_ = (a), b_ = (b); \
-        if (!(fabs(a_ - b_) <= (tol))) \
-            fail_msg("%s = %.17g, expected %.17g within %.3g", #a, a_, b_, (double)(tol)); \
-    } while (0)
 
 /* A valid camera line, for scenes that need to load. */
 #define CAMERA "camera -1 0 0  0 1 -1  0 -1 -1  0 1 1\n"
