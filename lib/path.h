@@ -19,9 +19,13 @@
  * from the cosine-weighted hemisphere (diffuse.h); at a mirror it is the mirror
  * direction, weighted by the mirror's colour; at glass it is reflection with
  * probability R and refraction with probability 1 - R, so the weight R / R (or
- * (1-R)/(1-R)) is 1: one branch per path instead of Whitted's two, unbiased because
- * the branch probabilities equal the Fresnel weights. An emitter reflects nothing and
- * ends the path.
+ * (1-R)/(1-R)) is 1: one branch per path, unbiased because the branch probabilities
+ * equal the Fresnel weights. The report (and Whitted, chapter 1) traces both branches,
+ * weighted R and 1 - R: less noise per path, but a path that meets glass k times
+ * becomes a tree of up to 2^k rays (the room's glass sphere alone gives 2 per crossing
+ * and more inside it), spending most of its rays on branches of small weight; splitting
+ * by R keeps one ray per interface and spends the samples on more paths instead.
+ * An emitter reflects nothing and ends the path.
  */
 #ifndef PATH_H
 #define PATH_H
