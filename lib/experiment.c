@@ -97,8 +97,11 @@ void experiment_reference(const Options *options, const Scene *scene, Estimator 
     int length = snprintf(key_text, sizeof key_text, "%s|%dx%d|spp %d|seed %llu", description,
                           settings.width, settings.height, spp,
                           (unsigned long long)settings.seed);
-    uint64_t key = measure_hash(measure_hash_file(MEASURE_HASH_START, scene->source), key_text,
-                                (size_t)length);
+    uint64_t scene_hash = measure_hash_file(MEASURE_HASH_START, options->scene);
+    if (scene_hash == 0)
+        cli_fail(1, "cannot read %s again to name its reference: %s", options->scene,
+                 strerror(errno));
+    uint64_t key = measure_hash(scene_hash, key_text, (size_t)length);
     make_directories(REFERENCE_DIRECTORY);
     if (measure_load_reference(REFERENCE_DIRECTORY, key, reference) != 0) {
         RenderResult result;
