@@ -129,6 +129,21 @@ static int build(Builder *builder, int *items, int count, int first, int level)
     return index;
 }
 
+/* Give inner node i the boxes of its children (node i + 1 and node `first`). */
+static void copy_child_boxes(Bvh *bvh, int i)
+{
+    BvhNode *node = &bvh->nodes[i];
+    const BvhNode *children[2] = {&bvh->nodes[i + 1], &bvh->nodes[node->first]};
+    for (int k = 0; k < 2; k++) {
+        const double lower[3] = {children[k]->lower.x, children[k]->lower.y, children[k]->lower.z};
+        const double upper[3] = {children[k]->upper.x, children[k]->upper.y, children[k]->upper.z};
+        for (int axis = 0; axis < 3; axis++) {
+            node->child_lower[axis][k] = lower[axis];
+            node->child_upper[axis][k] = upper[axis];
+        }
+    }
+}
+
 int bvh_build(Bvh *bvh, BvhPrimitives primitives)
 {
     int n = primitives.triangle_count + primitives.sphere_count;
@@ -151,6 +166,9 @@ int bvh_build(Bvh *bvh, BvhPrimitives primitives)
     }
     bvh->primitive_count = n;
     build(&builder, items, n, 0, 0);
+    for (int i = 0; i < bvh->node_count; i++)
+        if (bvh->nodes[i].count == 0)
+            copy_child_boxes(bvh, i);
     free(builder.boxes);
     free(items);
     return 0;
@@ -163,20 +181,24 @@ void bvh_free(Bvh *bvh)
     memset(bvh, 0, sizeof *bvh);
 }
 
-/* Entry distance of the ray into the node's box, or INFINITY if it misses within
- * (0, tmax): the slab test. inverse = 1/d per axis (huge for d = 0: the slab is then
- * all or nothing). Comparisons are written out rather
- * than with fmin/fmax (which the C library must make NaN-aware), since this is the
- * renderer's innermost loop. */
-static inline double box_entry(const BvhNode *node, Vec3 origin, Vec3 inverse, double tmax)
+/* The distances at which the ray enters the node's two children's boxes, or INFINITY
+ * where it misses one within (0, tmax): the slab test. inverse = 1/d per axis (huge
+ * for d = 0: the slab is then all or nothing). max2/min2 rather than fmax/fmin, which
+ * the C library must make NaN-aware: this is the renderer's innermost loop. */
+static inline void children_entry(const BvhNode *node, const double origin[3],
+                                  const double inverse[3], double tmax, double entry[2])
 {
-    double x0 = (node->lower.x - origin.x) * inverse.x, x1 = (node->upper.x - origin.x) * inverse.x;
-    double y0 = (node->lower.y - origin.y) * inverse.y, y1 = (node->upper.y - origin.y) * inverse.y;
-    double z0 = (node->lower.z - origin.z) * inverse.z, z1 = (node->upper.z - origin.z) * inverse.z;
-    double near = max2(max2(min2(x0, x1), min2(y0, y1)), max2(min2(z0, z1), 0.0));
-    double far = min2(min2(max2(x0, x1), max2(y0, y1)), min2(max2(z0, z1), tmax));
+    double near[2] = {0.0, 0.0}, far[2] = {tmax, tmax};
+    for (int axis = 0; axis < 3; axis++)
+        for (int k = 0; k < 2; k++) {
+            double t0 = (node->child_lower[axis][k] - origin[axis]) * inverse[axis];
+            double t1 = (node->child_upper[axis][k] - origin[axis]) * inverse[axis];
+            near[k] = max2(near[k], min2(t0, t1));
+            far[k] = min2(far[k], max2(t0, t1));
+        }
     /* A relative margin keeps flat boxes (a wall's) and rounding from losing a hit. */
-    return near <= far * (1.0 + 1e-12) ? near : INFINITY;
+    for (int k = 0; k < 2; k++)
+        entry[k] = near[k] <= far[k] * (1.0 + 1e-12) ? near[k] : INFINITY;
 }
 
 static inline double primitive_intersect(BvhPrimitives p, int index, Ray ray, double tmax)
@@ -196,8 +218,10 @@ static double safe_inverse(double d)
 
 static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int any_hit)
 {
-    Vec3 inverse = vec3(safe_inverse(ray.dir.x), safe_inverse(ray.dir.y), safe_inverse(ray.dir.z));
-    if (bvh->node_count == 0 || box_entry(&bvh->nodes[0], ray.origin, inverse, *tmax) == INFINITY)
+    const double origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    const double inverse[3] = {safe_inverse(ray.dir.x), safe_inverse(ray.dir.y),
+                               safe_inverse(ray.dir.z)};
+    if (bvh->node_count == 0)
         return -1;
     struct { int node; double entry; } stack[BVH_SAH_LEVELS + 32];
     int depth = 0, nearest = -1, node = 0;
@@ -215,8 +239,9 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
             }
         } else {
             int near = node + 1, far = n->first;
-            double t_near = box_entry(&bvh->nodes[near], ray.origin, inverse, *tmax);
-            double t_far = box_entry(&bvh->nodes[far], ray.origin, inverse, *tmax);
+            double entry[2];
+            children_entry(n, origin, inverse, *tmax, entry);
+            double t_near = entry[0], t_far = entry[1];
             if (t_far < t_near) {
                 int swap = near;
                 near = far;
@@ -238,7 +263,7 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
             if (depth == 0)
                 return nearest;
             depth--;
-        } while (stack[depth].entry > *tmax * (1.0 + 1e-12)); /* margin as in box_entry */
+        } while (stack[depth].entry > *tmax * (1.0 + 1e-12)); /* margin as in children_entry */
         node = stack[depth].node;
     }
 }
