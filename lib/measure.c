@@ -90,8 +90,11 @@ int measure_load_reference(const char *directory, uint64_t key, Reference *refer
         return -1;
     int fields = fscanf(file, "spp %lf seconds %lf", &reference->spp, &reference->seconds);
     fclose(file);
+    /* Two images of different sizes are a broken entry: their pixels are read in pairs. */
     if (fields != 2 || image_read_pfm(mean, &reference->image, message, sizeof message) != 0 ||
-        image_read_pfm(error, &reference->std_error, message, sizeof message) != 0) {
+        image_read_pfm(error, &reference->std_error, message, sizeof message) != 0 ||
+        reference->std_error.width != reference->image.width ||
+        reference->std_error.height != reference->image.height) {
         measure_reference_free(reference);
         return -1;
     }

@@ -23,11 +23,20 @@ static void line(Image *image, double x0, double y0, double x1, double y1, Vec3 
     }
 }
 
+/* Whether a point can be drawn on log axes: both coordinates positive and finite
+ * (a perfect RMSE of 0, say, cannot). Others are left out. */
+static int drawable(double x, double y)
+{
+    return x > 0.0 && y > 0.0 && isfinite(x) && isfinite(y);
+}
+
 Image plot_log_log(const PlotSeries *series, int count, int width, int height, int decades[4])
 {
     double low[2] = {INFINITY, INFINITY}, high[2] = {-INFINITY, -INFINITY};
     for (int s = 0; s < count; s++)
         for (int i = 0; i < series[s].count; i++) {
+            if (!drawable(series[s].x[i], series[s].y[i]))
+                continue;
             double v[2] = {log10(series[s].x[i]), log10(series[s].y[i])};
             for (int axis = 0; axis < 2; axis++) {
                 low[axis] = fmin(low[axis], v[axis]);
@@ -58,10 +67,13 @@ Image plot_log_log(const PlotSeries *series, int count, int width, int height, i
     }
     for (int s = 0; s < count; s++) {
         double previous_x = 0, previous_y = 0;
+        int drawn = 0;
         for (int i = 0; i < series[s].count; i++) {
+            if (!drawable(series[s].x[i], series[s].y[i]))
+                continue;
             double x = MARGIN + plot_width * (log10(series[s].x[i]) - decades[0]) / x_span;
             double y = height - MARGIN - plot_height * (log10(series[s].y[i]) - decades[2]) / y_span;
-            if (i > 0)
+            if (drawn++ > 0)
                 line(&image, previous_x, previous_y, x, y, series[s].colour);
             dot(&image, x, y, 3, series[s].colour);
             previous_x = x;

@@ -17,7 +17,7 @@
 #include "image.h"
 
 typedef struct {
-    const double *x, *y; /* positive values */
+    const double *x, *y; /* points with a zero, negative or non-finite value are left out */
     int count;
     Vec3 colour;         /* linear RGB in [0, 1] */
 } PlotSeries;

@@ -2,6 +2,7 @@
 #include "table.h"
 
 #include <math.h>
+#include <string.h>
 
 #include "atomic_file.h"
 
@@ -19,17 +20,36 @@ static void print_measure(FILE *out, const char *format, double value)
         fprintf(out, format, value);
 }
 
+/* The width of the panel and settings columns: at least their usual width, wider when a
+ * row's text is longer, so that long names do not push the columns after them out of
+ * line. */
+static void text_widths(const TableRow *rows, int count, int *panel, int *settings)
+{
+    *panel = 26;
+    *settings = 40;
+    for (int i = 0; i < count; i++) {
+        int panel_length = (int)strlen(rows[i].panel);
+        int settings_length = (int)strlen(rows[i].settings);
+        if (panel_length > *panel)
+            *panel = panel_length;
+        if (settings_length > *settings)
+            *settings = settings_length;
+    }
+}
+
 void table_print(FILE *out, const TableRow *rows, int count)
 {
-    fprintf(out, "%-26s %-40s %7s %8s %3s %10s %10s %10s %7s %10s %10s %10s %5s\n", "panel",
-            "settings", "spp", "seconds", "thr", "camera", "bounce", "shadow", "Mray/s", "rmse",
-            "rel_mse", "efficiency", "nan");
+    int panel_width, settings_width;
+    text_widths(rows, count, &panel_width, &settings_width);
+    fprintf(out, "%-*s %-*s %7s %8s %3s %10s %10s %10s %7s %10s %10s %10s %5s\n", panel_width,
+            "panel", settings_width, "settings", "spp", "seconds", "thr", "camera", "bounce",
+            "shadow", "Mray/s", "rmse", "rel_mse", "efficiency", "nan");
     for (int i = 0; i < count; i++) {
         const TableRow *r = &rows[i];
-        fprintf(out, "%-26s %-40s %7.1f %8.2f %3d %10llu %10llu %10llu %7.2f", r->panel,
-                r->settings, r->spp, r->seconds, r->threads, (unsigned long long)r->rays.camera,
-                (unsigned long long)r->rays.bounce, (unsigned long long)r->rays.shadow,
-                table_mrays_per_second(r));
+        fprintf(out, "%-*s %-*s %7.1f %8.2f %3d %10llu %10llu %10llu %7.2f", panel_width,
+                r->panel, settings_width, r->settings, r->spp, r->seconds, r->threads,
+                (unsigned long long)r->rays.camera, (unsigned long long)r->rays.bounce,
+                (unsigned long long)r->rays.shadow, table_mrays_per_second(r));
         print_measure(out, " %10.5f", r->rmse);
         print_measure(out, " %10.3e", r->rel_mse);
         print_measure(out, " %10.3g", r->efficiency);
@@ -45,6 +65,19 @@ static void csv_measure(FILE *out, double value)
         fprintf(out, ",%.9g", value);
 }
 
+/* A text field in double quotes, each quote inside doubled (RFC 4180): commas and
+ * quotes in a panel name or its settings stay inside their field. */
+static void csv_text(FILE *out, const char *text)
+{
+    fputc('"', out);
+    for (; *text; text++) {
+        if (*text == '"')
+            fputc('"', out);
+        fputc(*text, out);
+    }
+    fputc('"', out);
+}
+
 int table_write_csv(const char *path, const TableRow *rows, int count)
 {
     AtomicFile file;
@@ -54,10 +87,12 @@ int table_write_csv(const char *path, const TableRow *rows, int count)
                        "mrays_per_second,rmse,rel_mse,efficiency,nonfinite\n");
     for (int i = 0; i < count; i++) {
         const TableRow *r = &rows[i];
-        fprintf(file.file, "%s,\"%s\",%.6g,%.6f,%d,%llu,%llu,%llu,%.6g", r->panel, r->settings,
-                r->spp, r->seconds, r->threads, (unsigned long long)r->rays.camera,
-                (unsigned long long)r->rays.bounce, (unsigned long long)r->rays.shadow,
-                table_mrays_per_second(r));
+        csv_text(file.file, r->panel);
+        fputc(',', file.file);
+        csv_text(file.file, r->settings);
+        fprintf(file.file, ",%.6g,%.6f,%d,%llu,%llu,%llu,%.6g", r->spp, r->seconds, r->threads,
+                (unsigned long long)r->rays.camera, (unsigned long long)r->rays.bounce,
+                (unsigned long long)r->rays.shadow, table_mrays_per_second(r));
         csv_measure(file.file, r->rmse);
         csv_measure(file.file, r->rel_mse);
         csv_measure(file.file, r->efficiency);
