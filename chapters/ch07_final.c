@@ -120,7 +120,7 @@ static void convergence(const Options *options, const Scene *scene)
     reference_for(&small, scene, &reference);
     double seconds[ESTIMATOR_COUNT][CONVERGENCE_STEPS], rmse[ESTIMATOR_COUNT][CONVERGENCE_STEPS];
     TableRow rows[ESTIMATOR_COUNT * CONVERGENCE_STEPS];
-    PlotSeries series[ESTIMATOR_COUNT];
+    PlotSeries series[ESTIMATOR_COUNT + 1];
     char legend[512] = "";
     for (int e = 0; e < ESTIMATOR_COUNT; e++) {
         for (int step = 0; step < CONVERGENCE_STEPS; step++) {
@@ -140,14 +140,21 @@ static void convergence(const Options *options, const Scene *scene)
     printf("\nconvergence at %d pixels wide, 1 to %d spp:\n", small.size, 1 << (CONVERGENCE_STEPS - 1));
     experiment_write_table(options, "ch07_convergence", rows, ESTIMATOR_COUNT * CONVERGENCE_STEPS);
 
+    /* A guide of slope -1/2 (error ~ 1/sqrt(time), what an estimator of finite variance
+     * follows) over the last estimator's times, twice its first error so that both
+     * lines show: compare slopes. */
+    const int last = ESTIMATOR_COUNT - 1, final_step = CONVERGENCE_STEPS - 1;
+    double guide_x[2] = {seconds[last][0], seconds[last][final_step]};
+    double guide_y[2] = {2.0 * rmse[last][0], 2.0 * rmse[last][0] * sqrt(guide_x[0] / guide_x[1])};
+    series[ESTIMATOR_COUNT] = (PlotSeries){guide_x, guide_y, 2, vec3(0.45, 0.45, 0.45)};
     int decades[4];
-    Image plot = plot_log_log(series, ESTIMATOR_COUNT, 600, 400, decades);
+    Image plot = plot_log_log(series, ESTIMATOR_COUNT + 1, 600, 400, decades);
     if (!plot.pixels)
         cli_fail(1, "out of memory drawing the plot");
     char caption[768];
     snprintf(caption, sizeof caption,
              "RMSE against time, log-log, 1 to %d spp\nx: 1e%d to 1e%d s, y: 1e%d to 1e%d,"
-             " a grey line per decade\n%s",
+             " a grey line per decade\n%sdark grey: slope -1/2",
              1 << (CONVERGENCE_STEPS - 1), decades[0], decades[1], decades[2], decades[3], legend);
     const char *captions[] = {caption};
     experiment_write_figure(options, "ch07_convergence", &plot, captions, 1, 1.0);
