@@ -1,12 +1,23 @@
 # Monte Carlo ray tracer: a teaching renderer, one concept per file, one chapter per program.
 #
-#   make figures        render every chapter's figures into build/figures/ (QUICK=1: small)
-#   make test           build and run the cmocka tests
-#   make chapterN       build and run chapter N (ARGS="--size 200 --spp 4" to change settings)
-#   make sanitize       the tests under AddressSanitizer and UndefinedBehaviorSanitizer
-#   make fuzz           build the scene reader's libFuzzer target and run it (FUZZ_SECONDS)
-#   make bench          the speed benchmark (a benchmark, not a test)
+#   make figures          render every chapter's figures into build/figures/ (QUICK=1: small)
+#   make test             build every chapter's snapshot and run its tests and a smoke render
+#   make chapterN         build chapter N from chapter N's library and run it
+#                         (ARGS="--size 200 --spp 4" to change its settings)
+#   make diff-chapterN    what chapter N adds to chapter N-1, as a unified diff
+#   make source-chapterN  the clean source of chapter N in build/source/chapterN/
+#   make sanitize         the tests under AddressSanitizer and UndefinedBehaviorSanitizer
+#   make fuzz             run the libFuzzer targets (FUZZ_SECONDS each)
+#   make bench            the speed benchmark (a benchmark, not a test)
 #   make clean
+#
+# Chapters are snapshots of one source tree (SPEC §1). The first line of every file in
+# lib/, chapters/ and tests/ says which chapter introduces it, as "/* NAME (chapter N): ...";
+# code that a later chapter adds to an existing file sits in "#if CHAPTER >= N". Chapter N's
+# library is every file of chapters 1..N compiled with -DCHAPTER=N into build/chapterN/, and
+# chapter N's program links only that, so the compiler enforces what a chapter may use.
+# References (measure.h) are rendered by build/reference, built from the last chapter's
+# library, and re-rendered whenever that program is rebuilt.
 #
 # CC, CFLAGS and LDFLAGS are honoured; the flags the project requires are added to them.
 
@@ -27,66 +38,113 @@ endif
 # Evaluated when used (=, not :=), so after .ci/install-deps has run on a fresh machine.
 PKG_CFLAGS  = $(patsubst -I%,-isystem %,$(shell pkg-config --cflags stb cmocka 2>/dev/null))
 REQUIRED   := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wpedantic -Werror -pthread
-ALL_CFLAGS  = $(REQUIRED) -Ilib $(PKG_CFLAGS) $(CFLAGS) -MMD -MP
+ALL_CFLAGS  = $(REQUIRED) -Ilib -Ichapters $(PKG_CFLAGS) $(CFLAGS) -MMD -MP
 LIBS        = $(shell pkg-config --libs stb 2>/dev/null) -lm -pthread
 TEST_LIBS   = $(shell pkg-config --libs cmocka 2>/dev/null) $(LIBS)
-
-LIB_SRC     := $(wildcard lib/*.c)
-LIB_OBJ     := $(patsubst lib/%.c,$(BUILD)/lib/%.o,$(LIB_SRC))
-LIBRARY     := $(BUILD)/libmc.a
-CHAPTER_SRC := $(wildcard chapters/ch*.c)
-CHAPTER_BIN := $(patsubst chapters/%.c,$(BUILD)/%,$(CHAPTER_SRC))
-TEST_SRC    := $(wildcard tests/test_*.c)
-TEST_BIN    := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 DEPS_OK     := $(BUILD)/.deps-ok
 
-.PHONY: all test figures sanitize fuzz bench clean deps
-.DEFAULT_GOAL := all
+# ---- which chapter introduces each file -------------------------------------------------
+SOURCES  := $(wildcard lib/*.c lib/*.h chapters/*.c chapters/*.h tests/*.c tests/*.h)
+TAGS     := $(shell awk 'FNR == 1 && match($$0, /^\/\* [^ ]+ \(chapter [0-9]+\)/) { \
+                t = substr($$0, RSTART, RLENGTH); sub(/.*\(chapter /, "", t); sub(/\)/, "", t); \
+                print FILENAME "=" t }' $(SOURCES))
+chapter_of = $(patsubst $(1)=%,%,$(filter $(1)=%,$(TAGS)))
+UNTAGGED := $(filter-out $(foreach t,$(TAGS),$(firstword $(subst =, ,$(t)))),$(SOURCES))
+ifneq ($(UNTAGGED),)
+$(error these files do not say which chapter introduces them on their first line: $(UNTAGGED))
+endif
+# The files of chapters 1..N among $(2).
+upto = $(foreach f,$(2),$(if $(filter $(call chapter_of,$(f)),$(wordlist 1,$(1),1 2 3 4 5 6 7 8 9)),$(f)))
 
-all: $(LIBRARY) $(CHAPTER_BIN) $(TEST_BIN)
+PROGRAMS := $(wildcard chapters/ch[0-9][0-9]_*.c)
+CHAPTERS := $(foreach p,$(PROGRAMS),$(call chapter_of,$(p)))
+FINAL    := $(lastword $(CHAPTERS))
+program_of = $(patsubst chapters/%.c,$(BUILD)/%,$(filter chapters/ch0$(1)_%,$(PROGRAMS)))
+
+LIB_SOURCES     := $(wildcard lib/*.c)
+SUPPORT_SOURCES := chapters/cli.c chapters/experiment.c
+TEST_SOURCES    := $(wildcard tests/test_*.c)
+REFERENCE_BIN   := $(BUILD)/reference
+
+.PHONY: all test figures sanitize fuzz bench clean deps gallery
+.DEFAULT_GOAL := all
+.SECONDARY:
 
 deps: $(DEPS_OK)
 $(DEPS_OK):
 	@sh .ci/install-deps
 	@mkdir -p $(@D) && touch $@
 
-$(BUILD)/lib/%.o: lib/%.c | $(DEPS_OK)
+# ---- one library, its program and its tests per chapter ---------------------------------
+# $(1): the chapter. Tests of chapter K are built in chapter K and in the final chapter.
+define CHAPTER_RULES
+$(BUILD)/chapter$(1)/%.o: %.c | $(DEPS_OK)
+	@mkdir -p $$(@D)
+	$$(CC) $$(ALL_CFLAGS) -DCHAPTER=$(1) -c $$< -o $$@
+
+$(BUILD)/chapter$(1)/libmc.a: $(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call upto,$(1),$(LIB_SOURCES) $(SUPPORT_SOURCES)))
+	@rm -f $$@
+	$$(AR) rcs $$@ $$^
+
+$(call program_of,$(1)): $(BUILD)/chapter$(1)/chapters/$(notdir $(call program_of,$(1))).o $(BUILD)/chapter$(1)/libmc.a
+	$$(CC) $$^ $$(LDFLAGS) $$(LIBS) -o $$@
+
+$(BUILD)/chapter$(1)/tests/%: $(BUILD)/chapter$(1)/tests/%.o $(BUILD)/chapter$(1)/libmc.a
+	$$(CC) $$^ $$(LDFLAGS) $$(TEST_LIBS) -o $$@
+
+CHAPTER$(1)_TESTS := $(patsubst tests/%.c,$(BUILD)/chapter$(1)/tests/%,$(if $(filter $(1),$(FINAL)),$(call upto,$(1),$(TEST_SOURCES)),$(foreach t,$(TEST_SOURCES),$(if $(filter $(1),$(call chapter_of,$(t))),$(t)))))
+ALL_TESTS += $$(CHAPTER$(1)_TESTS)
+
+.PHONY: chapter$(1) source-chapter$(1) diff-chapter$(1)
+chapter$(1): $(call program_of,$(1)) $(REFERENCE_BIN)
+	$(call program_of,$(1)) --out $$(FIGURES) $$(QUICK_ARGS) $$(ARGS)
+
+source-chapter$(1): | $(DEPS_OK)
+	@sh .ci/install-deps unifdef
+	@rm -rf $(BUILD)/source/chapter$(1)
+	@for f in $(call upto,$(1),$(filter-out chapters/ch%,$(SOURCES)) $(PROGRAMS)); do \
+	    mkdir -p $(BUILD)/source/chapter$(1)/$$$$(dirname $$$$f); \
+	    unifdef -x2 -DCHAPTER=$(1) -o $(BUILD)/source/chapter$(1)/$$$$f $$$$f || exit 1; \
+	done
+	@echo "wrote $(BUILD)/source/chapter$(1)/"
+
+diff-chapter$(1): source-chapter$(1) $(if $(filter-out 1,$(1)),source-chapter$(shell echo $$(($(1) - 1))))
+	@cd $(BUILD)/source && diff -ruN chapter$(shell echo $$(($(1) - 1))) chapter$(1) > ../diff-chapter$(1).diff; \
+	    [ $$$$? -le 1 ] && cat ../diff-chapter$(1).diff
+endef
+$(foreach n,$(CHAPTERS),$(eval $(call CHAPTER_RULES,$(n))))
+
+# The final chapter's tests keep their short path, build/tests/NAME.
+FINAL_TESTS := $(patsubst $(BUILD)/chapter$(FINAL)/tests/%,$(BUILD)/tests/%,$(CHAPTER$(FINAL)_TESTS))
+$(BUILD)/tests/%: $(BUILD)/chapter$(FINAL)/tests/%
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -c $< -o $@
+	cp $< $@
+CHAPTER_TESTS := $(filter-out $(CHAPTER$(FINAL)_TESTS),$(ALL_TESTS))
 
-$(LIBRARY): $(LIB_OBJ)
-	$(AR) rcs $@ $^
+# The reference renderer: the final library's best estimator.
+$(REFERENCE_BIN): $(BUILD)/chapter$(FINAL)/chapters/reference.o $(BUILD)/chapter$(FINAL)/libmc.a
+	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 
-$(BUILD)/ch%: chapters/ch%.c $(LIBRARY)
-	$(CC) $(ALL_CFLAGS) $< $(LIBRARY) $(LDFLAGS) $(LIBS) -o $@
-
-$(BUILD)/tests/%: tests/%.c $(LIBRARY) | $(DEPS_OK)
-	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) $< $(LIBRARY) $(LDFLAGS) $(TEST_LIBS) -o $@
+CHAPTER_BINS := $(foreach n,$(CHAPTERS),$(call program_of,$(n)))
+all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(CHAPTER_TESTS) $(FINAL_TESTS)
 
 # Each test program is run from the top directory (some read scenes/ and run the chapter
-# programs). The last line counts the programs that passed and failed.
-test: $(TEST_BIN) $(CHAPTER_BIN)
+# programs): first every chapter's own tests in its own snapshot, then all of them in the
+# final one. The last line counts the programs that passed and failed.
+test: all
 	@passed=0; failed=0; \
-	for t in $(TEST_BIN); do \
+	for t in $(CHAPTER_TESTS) $(FINAL_TESTS); do \
+	    echo "== $$t"; \
 	    if CHAPTER_DIR=$(BUILD) $$t; then passed=$$((passed+1)); \
 	    else failed=$$((failed+1)); echo "FAILED: $$t"; fi; \
 	done; \
-	echo "test programs: $$passed passed, $$failed failed"; \
+	echo "programs: $$passed passed, $$failed failed"; \
 	[ $$failed -eq 0 ]
 
-# chapterN: build and run chapter N's program, figures into $(FIGURES).
-chapter_bin = $(patsubst chapters/%.c,$(BUILD)/%,$(wildcard chapters/ch0$(1)_*.c))
-define CHAPTER_RULE
-.PHONY: chapter$(1)
-chapter$(1): $(call chapter_bin,$(1))
-	$(call chapter_bin,$(1)) --out $(FIGURES) $(QUICK_ARGS) $(ARGS)
-endef
-CHAPTERS := $(foreach n,1 2 3 4 5 6 7,$(if $(wildcard chapters/ch0$(n)_*.c),$(n)))
-$(foreach n,$(CHAPTERS),$(eval $(call CHAPTER_RULE,$(n))))
-
 figures:
-	@for n in $(CHAPTERS); do $(MAKE) --no-print-directory chapter$$n || exit 1; done
+	@start=$$(date +%s); \
+	for n in $(CHAPTERS); do $(MAKE) --no-print-directory chapter$$n || exit 1; done; \
+	echo "make figures: $$(( $$(date +%s) - start )) s"
 
 sanitize:
 	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize \
@@ -98,7 +156,7 @@ FUZZ_SRC := $(addprefix lib/,scene_file.c scene.c bvh.c triangle.c sphere.c came
 $(FUZZ_BIN): tests/fuzz_scene_file.c $(FUZZ_SRC) | $(DEPS_OK)
 	@sh .ci/install-deps clang
 	@mkdir -p $(@D) $(BUILD)/fuzz/corpus
-	clang $(REQUIRED) -Ilib -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $^ -lm -o $@
+	clang $(REQUIRED) -DCHAPTER=$(FINAL) -Ilib -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $^ -lm -o $@
 
 fuzz: $(FUZZ_BIN)
 	$(FUZZ_BIN) -max_total_time=$(FUZZ_SECONDS) -timeout=5 -max_len=4096 \
@@ -106,10 +164,12 @@ fuzz: $(FUZZ_BIN)
 
 # The benchmark: speed, not correctness (BENCH_ARGS="--size 400" to change it).
 BENCH_ARGS ?=
-bench: $(BUILD)/tests/bench
-	$(BUILD)/tests/bench $(BENCH_ARGS)
+$(BUILD)/bench: $(BUILD)/chapter$(FINAL)/tests/bench.o $(BUILD)/chapter$(FINAL)/libmc.a
+	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
+bench: $(BUILD)/bench
+	$(BUILD)/bench $(BENCH_ARGS)
 
 clean:
 	rm -rf $(BUILD)
 
--include $(LIB_OBJ:.o=.d) $(CHAPTER_BIN:=.d) $(TEST_BIN:=.d)
+-include $(shell find $(BUILD) -name '*.d' -not -path '$(BUILD)/sanitize/*' 2>/dev/null)

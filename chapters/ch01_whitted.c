@@ -1,4 +1,4 @@
-/* Chapter 1: Whitted ray tracing (report §2.1, Figure 1).
+/* ch01_whitted.c (chapter 1): Whitted ray tracing (report §2.1, Figure 1).
  *
  * New concepts (lib/): vec, rng, ray, camera, sphere, triangle, material, scene,
  * scene_file, mirror, snell, schlick, whitted, image, figure, atomic_file, render, stats,
@@ -40,11 +40,14 @@ int main(int argc, char **argv)
     snprintf(caption, sizeof caption, "Figure 1: Whitted ray tracing\n%s\n%.2f s",
              settings_text, result.seconds);
     const char *captions[] = {caption};
+    int whole_pass = render_samples_per_pixel(&result) >= 1.0;
+    if (result.interrupted && !whole_pass)
+        experiment_exit_if_interrupted(&result, NULL);
     experiment_write_image(&options, "ch01_whitted", &result.image, 1.0);
     experiment_write_figure(&options, "ch01_figure1", &result.image, captions, 1, 1.0);
     TableRow row = experiment_row("Figure 1", settings_text, &result);
     experiment_write_table(&options, "ch01_table", &row, 1);
-    experiment_exit_if_interrupted(&result);
+    experiment_exit_if_interrupted(&result, "the image");
 
     render_result_free(&result);
     scene_free(&scene);

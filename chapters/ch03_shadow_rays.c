@@ -1,4 +1,4 @@
-/* Chapter 3: shadow rays (report §3.7, eq. 21; Figure 11).
+/* ch03_shadow_rays.c (chapter 3): shadow rays (report §3.7, eq. 21; Figure 11).
  *
  * New concepts (lib/): area_light (uniform sampling of the lights' area, and the
  * direct-light estimator of eq. 21 with M shadow rays).
@@ -30,7 +30,7 @@ enum { SWEEP_COUNT = sizeof SWEEP / sizeof SWEEP[0], SWEEP_SPP = 4 };
 static TableRow render_m(const Options *options, const Scene *scene, const Reference *reference,
                          int m, int spp, PixelSampling sampling, const char *name, Image *image)
 {
-    PathSettings path = {m, 1.0, options->depth, FRESNEL_SCHLICK};
+    PathSettings path = {.max_depth = options->depth, .shadow_rays = m};
     char settings_text[96];
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d depth=%d", spp, m, options->depth);
     return experiment_path_row(options, scene, &path, spp, sampling, name, settings_text,
@@ -40,8 +40,8 @@ static TableRow render_m(const Options *options, const Scene *scene, const Refer
 /* Every M estimates the same image; the reference uses one shadow ray. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
 {
-    PathSettings with_shadow_ray = {1, 1.0, options->depth, FRESNEL_SCHLICK};
-    experiment_path_reference(options, scene, &with_shadow_ray, reference);
+    PathSettings with_shadow_ray = {.max_depth = options->depth, .shadow_rays = 1};
+    experiment_path_reference(options, scene, &with_shadow_ray, NULL, 0.0, reference);
 }
 
 int main(int argc, char **argv)
@@ -82,7 +82,7 @@ int main(int argc, char **argv)
 
     /* The sweep, on a quarter-size image with a reference of its own. */
     Options sweep_options = options;
-    sweep_options.size = options.size / 4 > 16 ? options.size / 4 : 16;
+    sweep_options.size = cli_quarter(options.size, 16);
     reference_for(&sweep_options, &scene, &reference);
     TableRow sweep[SWEEP_COUNT];
     for (int i = 0; i < SWEEP_COUNT; i++) {

@@ -1,4 +1,4 @@
-/* Chapter 4: Fresnel glass and ray depth (report §3.5.1-3.5.2, §4.4; Figure 9).
+/* ch04_fresnel.c (chapter 4): Fresnel glass and ray depth (report §3.5.1-3.5.2, §4.4; Figure 9).
  *
  * New concepts (lib/): fresnel (the exact Fresnel reflectance, eqs. 3-5, with the
  * labels R_s and R_p corrected, SPEC §8.3). The perfect mirror, Snell's law with total
@@ -21,7 +21,7 @@
  *     difference is what Schlick changes, free of the noise the two share (an upper
  *     bound on its bias, since each flipped choice adds noise of its own).
  * No Russian roulette in the panels (chapter 6). A reference may use any unbiased
- * estimator of its image: the full-depth one uses roulette with a depth limit of 64.
+ * estimator of its image; the reference program uses roulette (experiment.h).
  */
 #include <stdio.h>
 
@@ -44,14 +44,13 @@ enum { FULL_DEPTH = 64, FRESNEL_DEPTH = 8 };
 static const double CROP_LEFT = 0.32, CROP_TOP = 0.445, CROP_SIDE = 0.16;
 enum { CROP_SCALE = 3 };
 
-/* The reference for the full rendering equation up to `depth` segments, with roulette
- * to keep its long paths cheap (alpha = 0.75: above rho^2 of the room's brightest
- * surface, so of finite variance; chapter 6). */
+/* The reference for the full rendering equation up to `depth` segments (the reference
+ * program keeps its long paths cheap with Russian roulette, chapter 6). */
 static void reference_for(const Options *options, const Scene *scene, int depth,
                           FresnelMode fresnel, Reference *reference)
 {
-    PathSettings estimator = {1, 0.75, depth, fresnel};
-    experiment_path_reference(options, scene, &estimator, reference);
+    PathSettings estimator = {.max_depth = depth, .fresnel = fresnel};
+    experiment_path_reference(options, scene, &estimator, NULL, 0.0, reference);
 }
 
 /* Render one panel into a table row; its image and standard error stay in *result. */
@@ -59,7 +58,7 @@ static TableRow render_panel(const Options *options, const Scene *scene,
                              const Reference *reference, int depth, FresnelMode fresnel,
                              PixelSampling sampling, const char *name, RenderResult *result)
 {
-    PathSettings path = {options->shadow_rays, 1.0, depth, fresnel};
+    PathSettings path = {.max_depth = depth, .shadow_rays = options->shadow_rays, .fresnel = fresnel};
     char description[64], settings_text[96];
     path_describe(&path, description, sizeof description);
     snprintf(settings_text, sizeof settings_text, "%d spp, %s", options->spp, description);
@@ -292,7 +291,7 @@ int main(int argc, char **argv)
 
     /* (c) The room with each, against the exact reference, on a quarter-size image. */
     Options sweep_options = options;
-    sweep_options.size = options.size / 4 > 16 ? options.size / 4 : 16;
+    sweep_options.size = cli_quarter(options.size, 16);
     reference_for(&sweep_options, &scene, FRESNEL_DEPTH, FRESNEL_EXACT, &reference);
     const FresnelMode modes[2] = {FRESNEL_SCHLICK, FRESNEL_EXACT};
     TableRow fresnel_rows[2];

@@ -1,4 +1,4 @@
-/* Chapter 5: the Oren-Nayar reflector (report §3.5.4, §4.5; Figure 10; SPEC §8.1).
+/* ch05_oren_nayar.c (chapter 5): the Oren-Nayar reflector (report §3.5.4, §4.5; Figure 10; SPEC §8.1).
  *
  * New concepts (lib/): oren_nayar (eqs. 13-14 with the corrections of SPEC §8.1:
  * A = 1 - sigma^2 / (2 (sigma^2 + 0.33)), and tan(beta) where the report has sin(beta)).
@@ -24,21 +24,15 @@
 #include "path.h"
 
 static const double SIGMAS[] = {0.0, 0.25, 0.5, 1.0};
-enum { SIGMA_COUNT = sizeof SIGMAS / sizeof SIGMAS[0], REFERENCE_SHADOW_RAYS = 4 };
+enum { SIGMA_COUNT = sizeof SIGMAS / sizeof SIGMAS[0] };
 #define RIM_FRACTION 0.8
 
-/* The reference for the scene as it is now, with 4 shadow rays like the panels (the
- * small lamp's direct light is most of the image). `sigma`, the roughness of `rough`,
- * is named in its description because the cache knows only the scene file. */
+/* The reference for the scene with the roughness of `rough` set to `sigma`. */
 static void reference_for(const Options *options, const Scene *scene, double sigma,
                           Reference *reference)
 {
-    PathSettings estimator = {REFERENCE_SHADOW_RAYS, 1.0, options->depth, FRESNEL_SCHLICK};
-    char settings[64], description[96];
-    path_describe(&estimator, settings, sizeof settings);
-    snprintf(description, sizeof description, "%s, rough sigma=%g", settings, sigma);
-    experiment_reference(options, scene, path_radiance, &estimator, description,
-                         options->reference_spp, reference);
+    PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays};
+    experiment_path_reference(options, scene, &path, "rough", sigma, reference);
 }
 
 /* Render one panel into a table row; its image stays in *image. */
@@ -46,7 +40,7 @@ static TableRow render_panel(const Options *options, const Scene *scene,
                              const Reference *reference, double sigma, PixelSampling sampling,
                              const char *name, Image *image)
 {
-    PathSettings path = {options->shadow_rays, 1.0, options->depth, FRESNEL_SCHLICK};
+    PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays};
     char settings_text[96];
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d depth=%d, sigma=%g",
              options->spp, options->shadow_rays, options->depth, sigma);
@@ -178,7 +172,7 @@ int main(int argc, char **argv)
     reference_for(&options, &scene, file_sigma, &reference);
     Image image;
     TableRow row = render_panel(&options, &scene, &reference, file_sigma, PIXEL_SUBPIXELS,
-                                "ch05_figure10", &image);
+                                "ch05_rough_and_lambert", &image);
     char caption[256];
     experiment_caption(&row, "Figure 10: Oren-Nayar | Lambert", caption, sizeof caption);
     const char *figure_captions[] = {caption};
@@ -189,7 +183,7 @@ int main(int argc, char **argv)
 
     /* The sweep of sigma, each against its own reference, on a quarter-size image. */
     Options sweep_options = options;
-    sweep_options.size = options.size / 4 > 16 ? options.size / 4 : 16;
+    sweep_options.size = cli_quarter(options.size, 16);
     TableRow rows[SIGMA_COUNT];
     Image images[SIGMA_COUNT];
     char captions[SIGMA_COUNT][256];

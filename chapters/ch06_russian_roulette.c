@@ -1,4 +1,4 @@
-/* Chapter 6: Russian roulette (report §2.2, §4.7; Figure 12; SPEC §8.5).
+/* ch06_russian_roulette.c (chapter 6): Russian roulette (report §2.2, §4.7; Figure 12; SPEC §8.5).
  *
  * New concepts (lib/): roulette (a path survives each diffuse hit with probability
  * alpha, its weight divided by alpha; alpha is the SURVIVAL probability, erratum §8.5).
@@ -49,7 +49,7 @@ static void settings_text_for(const Options *options, double alpha, char *text, 
 static TableRow measure_alpha(const Options *options, const Scene *scene,
                               const Reference *reference, double alpha, RenderResult *result)
 {
-    PathSettings path = {options->shadow_rays, alpha, options->depth, FRESNEL_SCHLICK};
+    PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays, .rr_survival = alpha};
     char name[64], settings_text[96];
     snprintf(name, sizeof name, "sweep, alpha=%g", alpha);
     settings_text_for(options, alpha, settings_text, sizeof settings_text);
@@ -62,8 +62,8 @@ static TableRow measure_alpha(const Options *options, const Scene *scene,
 /* Every alpha estimates the same image; the reference uses alpha = 0.75. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
 {
-    PathSettings estimator = {1, 0.75, options->depth, FRESNEL_SCHLICK};
-    experiment_path_reference(options, scene, &estimator, reference);
+    PathSettings estimator = {.max_depth = options->depth, .shadow_rays = 1, .rr_survival = 0.75};
+    experiment_path_reference(options, scene, &estimator, NULL, 0.0, reference);
 }
 
 int main(int argc, char **argv)
@@ -91,7 +91,7 @@ int main(int argc, char **argv)
         char name[64], settings_text[96];
         snprintf(name, sizeof name, "ch06_figure12_alpha%g", figure_alpha[i]);
         settings_text_for(&options, figure_alpha[i], settings_text, sizeof settings_text);
-        PathSettings path = {options.shadow_rays, figure_alpha[i], options.depth, FRESNEL_SCHLICK};
+        PathSettings path = {.max_depth = options.depth, .shadow_rays = options.shadow_rays, .rr_survival = figure_alpha[i]};
         rows[i] = experiment_path_row(&options, &scene, &path, options.spp, PIXEL_SUBPIXELS, name,
                                       settings_text, &reference, &images[i]);
         experiment_caption(&rows[i], i == 0 ? "Figure 12, left" : "Figure 12, right",
@@ -105,7 +105,7 @@ int main(int argc, char **argv)
     measure_reference_free(&reference);
 
     Options sweep_options = options;
-    sweep_options.size = options.size / 4 > 16 ? options.size / 4 : 16;
+    sweep_options.size = cli_quarter(options.size, 16);
     reference_for(&sweep_options, &scene, &reference);
     double reference_mean, reference_error;
     measure_image_mean(&reference.image, &reference.std_error, &reference_mean, &reference_error);

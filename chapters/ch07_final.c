@@ -1,4 +1,4 @@
-/* Chapter 7: the final image and the benchmarks (report §4.2, §4.8, §5; Figure 7,
+/* ch07_final.c (chapter 7): the final image and the benchmarks (report §4.2, §4.8, §5; Figure 7,
  * Table 1).
  *
  * New concepts (lib/): bvh (the bounding volume hierarchy that every chapter's ray
@@ -60,8 +60,8 @@ enum { ESTIMATOR_COUNT = sizeof ESTIMATORS / sizeof ESTIMATORS[0], CONVERGENCE_S
  * alpha = 0.75. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
 {
-    PathSettings estimator = {1, 0.75, options->depth, options->fresnel};
-    experiment_path_reference(options, scene, &estimator, reference);
+    PathSettings estimator = {.max_depth = options->depth, .shadow_rays = 1, .fresnel = options->fresnel, .rr_survival = 0.75};
+    experiment_path_reference(options, scene, &estimator, NULL, 0.0, reference);
 }
 
 /* One setting as a table row; with `image`, a panel (experiment_path_row). */
@@ -69,7 +69,7 @@ static TableRow render_setting(const Options *options, const Scene *scene,
                                const Reference *reference, int spp, int shadow_rays, double rr,
                                const char *name, const char *note, Image *image)
 {
-    PathSettings path = {shadow_rays, rr, options->depth, options->fresnel};
+    PathSettings path = {.max_depth = options->depth, .shadow_rays = shadow_rays, .fresnel = options->fresnel, .rr_survival = rr};
     char settings_text[96];
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d, rr=%g%s", spp, shadow_rays, rr, note);
     return experiment_path_row(options, scene, &path, spp, PIXEL_SUBPIXELS, name, settings_text,
@@ -115,7 +115,7 @@ static void table1(const Options *options, const Scene *scene, const Reference *
 static void convergence(const Options *options, const Scene *scene)
 {
     Options small = *options;
-    small.size = options->size / 4 > 16 ? options->size / 4 : 16;
+    small.size = cli_quarter(options->size, 16);
     Reference reference;
     reference_for(&small, scene, &reference);
     double seconds[ESTIMATOR_COUNT][CONVERGENCE_STEPS], rmse[ESTIMATOR_COUNT][CONVERGENCE_STEPS];

@@ -1,4 +1,4 @@
-/* area_light.c: uniform area-light sampling and eq. 21 (chapter 3). See area_light.h. */
+/* area_light.c (chapter 3): uniform area-light sampling and eq. 21. See area_light.h. */
 #include "area_light.h"
 
 #include "diffuse.h"

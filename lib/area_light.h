@@ -1,4 +1,4 @@
-/* area_light.h: sampling area lights, and the direct-light estimator of eq. 21
+/* area_light.h (chapter 3): sampling area lights, and the direct-light estimator of eq. 21
  * (report §3.7).
  *
  * Introduced in chapter 3. The lights are the emitting triangles the scene listed

@@ -1,4 +1,4 @@
-/* atomic_file.c: temporary file, then rename (chapter 1). See atomic_file.h. */
+/* atomic_file.c (chapter 1): temporary file, then rename. See atomic_file.h. */
 #include "atomic_file.h"
 
 #include <errno.h>

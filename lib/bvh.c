@@ -1,4 +1,4 @@
-/* bvh.c: building and traversing the bounding volume hierarchy (chapter 7).
+/* bvh.c (chapter 1): building and traversing the bounding volume hierarchy.
  * See bvh.h. */
 #include "bvh.h"
 

@@ -1,4 +1,4 @@
-/* bvh.h: a bounding volume hierarchy, so a ray tests a few primitives, not all of them.
+/* bvh.h (chapter 1): a bounding volume hierarchy, so a ray tests a few primitives, not all of them.
  *
  * Introduced in chapter 7 (the report's discussion, §5, asks for speed; this is the
  * first thing every fast renderer does). Every chapter's program uses it, because it

@@ -1,4 +1,4 @@
-/* camera.c: the pixel-to-ray mapping of SPEC §4 (chapter 1). See camera.h. */
+/* camera.c (chapter 1): the pixel-to-ray mapping of SPEC §4. See camera.h. */
 #include "camera.h"
 
 Camera camera_make(Vec3 eye, Vec3 bottom_left, Vec3 bottom_right, Vec3 top_left)

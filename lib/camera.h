@@ -1,4 +1,4 @@
-/* camera.h: rays from the eye through the image plane (report §3.3, §4.1, Figure 6).
+/* camera.h (chapter 1): rays from the eye through the image plane (report §3.3, §4.1, Figure 6).
  *
  * Introduced in chapter 1. The scene file gives the eye and three corners of the image
  * plane (SPEC §4). Pixel (col, row) of a W x H image, row 0 at the top, covers

@@ -1,4 +1,4 @@
-/* chi_square.c: Pearson's chi-square statistic and its p-value (chapter 2).
+/* chi_square.c (chapter 1): Pearson's chi-square statistic and its p-value.
  * See chi_square.h. */
 #include "chi_square.h"
 

@@ -1,4 +1,4 @@
-/* chi_square.h: Pearson's chi-square goodness-of-fit test, the tool that checks a
+/* chi_square.h (chapter 1): Pearson's chi-square goodness-of-fit test, the tool that checks a
  * sampling routine against the density it claims to have.
  *
  * Introduced in chapter 2 (its tests check the cosine-weighted hemisphere; later the

@@ -1,4 +1,4 @@
-/* diffuse.h: the diffuse materials' BRDF and sampling in world space.
+/* diffuse.h (chapter 2): the diffuse materials' BRDF and sampling in world space.
  *
  * Introduced in chapter 2. Lambertian (eq. 8) and Oren-Nayar (eqs. 13-14) surfaces are
  * both sampled with the cosine-weighted hemisphere (hemisphere.h, pdf cos/pi), so a

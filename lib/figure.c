@@ -1,4 +1,4 @@
-/* figure.c: the side-by-side comparison figure with its captions (chapter 1). See
+/* figure.c (chapter 1): the side-by-side comparison figure with its captions. See
  * figure.h for the layout.
  *
  * The report's figures (section 4, Figures 8 to 12) set two renderings side by side

@@ -1,4 +1,4 @@
-/* fresnel.c: exact Fresnel reflectance, eqs. 3-5 with the corrected labels of
+/* fresnel.c (chapter 4): exact Fresnel reflectance, eqs. 3-5 with the corrected labels of
  * SPEC §8.3 (chapter 4). See fresnel.h. */
 #include "fresnel.h"
 

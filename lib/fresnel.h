@@ -1,4 +1,4 @@
-/* fresnel.h: the exact Fresnel reflectance of a smooth dielectric interface (report
+/* fresnel.h (chapter 4): the exact Fresnel reflectance of a smooth dielectric interface (report
  * §3.5.2, eqs. 3-5).
  *
  * Introduced in chapter 4, which compares it with Schlick's approximation (schlick.h).
@@ -23,6 +23,10 @@
  */
 #ifndef FRESNEL_H
 #define FRESNEL_H
+
+/* Which reflectance a renderer uses at glass: Schlick's approximation (schlick.h, the
+ * report's choice) or the exact equations below. */
+typedef enum { FRESNEL_SCHLICK, FRESNEL_EXACT } FresnelMode;
 
 /* The reflectances for incidence cosine cos_i in [0, 1] (clamped), from index n_i
  * into n_t, both > 0. All three return 1 for total internal reflection. */

@@ -1,4 +1,4 @@
-/* hemisphere.c: cosine-weighted hemisphere sampling (chapter 2). See hemisphere.h. */
+/* hemisphere.c (chapter 2): cosine-weighted hemisphere sampling. See hemisphere.h. */
 #include "hemisphere.h"
 
 /* Eq. 12 applied to P(theta) = sin^2(theta) and P(phi) = phi / (2 pi). */

@@ -1,4 +1,4 @@
-/* hemisphere.h: cosine-weighted directions on the hemisphere, drawn by inverting the
+/* hemisphere.h (chapter 2): cosine-weighted directions on the hemisphere, drawn by inverting the
  * CDF (report §3.1, §3.5.3, eqs. 9-12).
  *
  * Introduced in chapter 2. Directions are in the local frame: the normal is +z, theta

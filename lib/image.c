@@ -1,4 +1,4 @@
-/* image.c: the linear RGB framebuffer, its tone map, and its PNG and PFM files
+/* image.c (chapter 1): the linear RGB framebuffer, its tone map, and its PNG and PFM files
  * (chapter 1). See image.h.
  *
  * The report shows its results (section 4) as 8-bit pictures but does not say how

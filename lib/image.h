@@ -1,4 +1,4 @@
-/* image.h: a linear RGB framebuffer and its files.
+/* image.h (chapter 1): a linear RGB framebuffer and its files.
  *
  * Introduced in chapter 1. Pixels hold linear radiance (float RGB, row 0 at the top).
  *

@@ -1,4 +1,4 @@
-/* lambert.c: the Lambertian BRDF, eq. 8 (chapter 2). See lambert.h. */
+/* lambert.c (chapter 2): the Lambertian BRDF, eq. 8. See lambert.h. */
 #include "lambert.h"
 
 /* Eq. 8. */

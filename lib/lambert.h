@@ -1,4 +1,4 @@
-/* lambert.h: the Lambertian reflector (report §3.5.3, eq. 8).
+/* lambert.h (chapter 2): the Lambertian reflector (report §3.5.3, eq. 8).
  *
  * Introduced in chapter 2. An ideal diffuse surface reflects the same radiance in every
  * direction, whatever the light's direction, so its BRDF is a constant:

@@ -1,4 +1,4 @@
-/* material.h: what a surface does with light, as the scene file declares it (SPEC §4).
+/* material.h (chapter 1): what a surface does with light, as the scene file declares it (SPEC §4).
  *
  * Introduced in chapter 1; each kind's physics lives in its own file: lambert.c
  * (eq. 8), oren_nayar.c (eqs. 13-14), mirror.c, snell.c and the Fresnel files

@@ -1,6 +1,7 @@
-/* measure.c: error metrics and the reference cache (chapter 2). See measure.h. */
+/* measure.c (chapter 2): error metrics and the reference cache. See measure.h. */
 #include "measure.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -14,20 +15,6 @@ uint64_t measure_hash(uint64_t hash, const void *data, size_t size)
         hash *= 0x100000001b3ULL;
     }
     return hash;
-}
-
-uint64_t measure_hash_file(uint64_t hash, const char *path)
-{
-    FILE *file = fopen(path, "rb");
-    if (!file)
-        return 0;
-    unsigned char buffer[65536];
-    size_t n;
-    while ((n = fread(buffer, 1, sizeof buffer, file)) > 0)
-        hash = measure_hash(hash, buffer, n);
-    int failed = ferror(file);
-    fclose(file);
-    return failed ? 0 : hash;
 }
 
 void measure_error(const Image *image, const Image *reference, double *rmse, double *rel_mse)
@@ -80,7 +67,8 @@ static void reference_paths(const char *directory, uint64_t key, char *mean, cha
     snprintf(info, size, "%s/%016llx.txt", directory, (unsigned long long)key);
 }
 
-int measure_load_reference(const char *directory, uint64_t key, Reference *reference)
+int measure_load_reference(const char *directory, uint64_t key, int width, int height,
+                           Reference *reference)
 {
     char mean[4200], error[4200], info[4200], message[256];
     reference_paths(directory, key, mean, error, info, sizeof mean);
@@ -90,11 +78,13 @@ int measure_load_reference(const char *directory, uint64_t key, Reference *refer
         return -1;
     int fields = fscanf(file, "spp %lf seconds %lf", &reference->spp, &reference->seconds);
     fclose(file);
-    /* Two images of different sizes are a broken entry: their pixels are read in pairs. */
-    if (fields != 2 || image_read_pfm(mean, &reference->image, message, sizeof message) != 0 ||
+    /* An entry whose images are not both width x height is broken (a partial write, or
+     * a file put there by hand): it is rendered again, never compared pixel by pixel. */
+    if (fields != 2 || !(reference->spp > 0.0) ||
+        image_read_pfm(mean, &reference->image, message, sizeof message) != 0 ||
         image_read_pfm(error, &reference->std_error, message, sizeof message) != 0 ||
-        reference->std_error.width != reference->image.width ||
-        reference->std_error.height != reference->image.height) {
+        reference->image.width != width || reference->image.height != height ||
+        reference->std_error.width != width || reference->std_error.height != height) {
         measure_reference_free(reference);
         return -1;
     }
@@ -103,18 +93,34 @@ int measure_load_reference(const char *directory, uint64_t key, Reference *refer
     return 0;
 }
 
+/* Remove the files of a failed save, keeping errno. */
+static int undo_save(const char *first, const char *second)
+{
+    int saved = errno;
+    remove(first);
+    if (second)
+        remove(second);
+    errno = saved;
+    return -1;
+}
+
 int measure_save_reference(const char *directory, uint64_t key, const Reference *reference)
 {
     char mean[4200], error[4200], info[4200];
     reference_paths(directory, key, mean, error, info, sizeof mean);
-    if (image_write_pfm(&reference->image, mean) != 0 ||
-        image_write_pfm(&reference->std_error, error) != 0)
+    /* The description file last: an entry without it is not there (measure_load_reference). */
+    remove(info);
+    if (image_write_pfm(&reference->image, mean) != 0)
         return -1;
+    if (image_write_pfm(&reference->std_error, error) != 0)
+        return undo_save(mean, NULL);
     AtomicFile file;
     if (atomic_open(&file, info) != 0)
-        return -1;
+        return undo_save(mean, error);
     fprintf(file.file, "spp %.17g seconds %.17g\n", reference->spp, reference->seconds);
-    return atomic_close(&file, 0);
+    if (atomic_close(&file, 0) != 0)
+        return undo_save(mean, error);
+    return 0;
 }
 
 void measure_reference_free(Reference *reference)

@@ -1,4 +1,4 @@
-/* measure.h: how far an image is from the truth, and the reference that stands for it
+/* measure.h (chapter 2): how far an image is from the truth, and the reference that stands for it
  * (SPEC §6).
  *
  * Introduced in chapter 2. The truth is unknown, so each experiment renders a reference:
@@ -39,9 +39,6 @@ typedef struct {
 #define MEASURE_HASH_START 0xcbf29ce484222325ULL
 uint64_t measure_hash(uint64_t hash, const void *data, size_t size);
 
-/* The hash of a file's bytes continued from `hash`; returns 0 if it cannot be read. */
-uint64_t measure_hash_file(uint64_t hash, const char *path);
-
 /* RMSE and relative MSE of image against reference (same size). */
 void measure_error(const Image *image, const Image *reference, double *rmse, double *rel_mse);
 
@@ -58,10 +55,13 @@ void measure_image_mean(const Image *image, const Image *std_error, double *mean
 void measure_fill_row(TableRow *row, const Image *image, const Reference *reference);
 
 /* Load a cached reference "DIR/HASH.pfm" with its "DIR/HASH-stderr.pfm" and "DIR/HASH.txt"
- * (spp and seconds). Returns 0, or -1 when it is not there or unreadable. */
-int measure_load_reference(const char *directory, uint64_t key, Reference *reference);
+ * (spp and seconds), both images width x height. Returns 0, or -1 when it is not there,
+ * unreadable, or of another size. */
+int measure_load_reference(const char *directory, uint64_t key, int width, int height,
+                           Reference *reference);
 
-/* Store one. Returns 0, or -1 with errno set. */
+/* Store one: the two images, then the .txt that completes the entry. Returns 0, or -1
+ * with errno set and nothing of the entry left behind. */
 int measure_save_reference(const char *directory, uint64_t key, const Reference *reference);
 
 void measure_reference_free(Reference *reference);

@@ -1,4 +1,4 @@
-/* mirror.h: the perfect mirror (report §3.5.1, Figure 4).
+/* mirror.h (chapter 1): the perfect mirror (report §3.5.1, Figure 4).
  *
  * Introduced in chapter 1. The BRDF is a Dirac delta around the mirror direction
  *     R(d) = d - 2 (d . n) n,

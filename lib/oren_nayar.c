@@ -1,4 +1,4 @@
-/* oren_nayar.c: the Oren-Nayar BRDF with the errata of SPEC §8.1 (chapter 5).
+/* oren_nayar.c (chapter 5): the Oren-Nayar BRDF with the errata of SPEC §8.1.
  * See oren_nayar.h. */
 #include "oren_nayar.h"
 

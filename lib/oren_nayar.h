@@ -1,4 +1,4 @@
-/* oren_nayar.h: the Oren-Nayar reflector for rough diffuse surfaces (report §3.5.4,
+/* oren_nayar.h (chapter 5): the Oren-Nayar reflector for rough diffuse surfaces (report §3.5.4,
  * eqs. 13-14).
  *
  * Introduced in chapter 5. The surface is modelled as V-shaped grooves of Lambertian

@@ -1,24 +1,33 @@
-/* path.c: the Monte Carlo path tracer (chapters 2-7). See path.h. */
+/* path.c (chapter 2): the Monte Carlo path tracer. See path.h. */
 #include "path.h"
 
 #include <stdio.h>
 
-#include "area_light.h"
 #include "diffuse.h"
-#include "fresnel.h"
 #include "mirror.h"
-#include "roulette.h"
 #include "schlick.h"
 #include "snell.h"
+#if CHAPTER >= 3
+#include "area_light.h"
+#endif
+#if CHAPTER >= 6
+#include "roulette.h"
+#endif
 
 /* Glass: pick reflection (probability R) or refraction for ray direction d hitting a
  * surface with normal n facing d's origin. Returns the new direction. */
-static Vec3 glass_scatter(Vec3 d, Vec3 n, int entering, double ior, FresnelMode mode, Rng *rng)
+static Vec3 glass_scatter(Vec3 d, Vec3 n, int entering, double ior, const PathSettings *s,
+                          Rng *rng)
 {
     double n_i = entering ? 1.0 : ior, n_t = entering ? ior : 1.0;
     double cos_i = -vec3_dot(d, n);
-    double reflectance = mode == FRESNEL_EXACT ? fresnel_reflectance(cos_i, n_i, n_t)
-                                               : schlick_reflectance(cos_i, n_i, n_t);
+#if CHAPTER >= 4
+    double reflectance = s->fresnel == FRESNEL_EXACT ? fresnel_reflectance(cos_i, n_i, n_t)
+                                                     : schlick_reflectance(cos_i, n_i, n_t);
+#else
+    (void)s;
+    double reflectance = schlick_reflectance(cos_i, n_i, n_t);
+#endif
     Vec3 refracted;
     if (rng_uniform(rng) >= reflectance && snell_refract(d, n, n_i, n_t, &refracted))
         return refracted;
@@ -46,23 +55,30 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
 
         Vec3 direction;
         if (material_is_diffuse(m)) {
+#if CHAPTER >= 3
             if (s->shadow_rays > 0) {
                 Vec3 direct = area_light_direct(scene, hit.point, n, wo, m, s->shadow_rays, rng, counts);
                 radiance = vec3_add(radiance, vec3_mul(throughput, direct));
             }
-            if (!roulette_survives(s->rr_survival, rng))
-                break;
-            if (s->rr_survival < 1.0)
+            add_emission = s->shadow_rays == 0;
+#else
+            add_emission = 1;
+#endif
+#if CHAPTER >= 6
+            if (s->rr_survival > 0.0 && s->rr_survival < 1.0) {
+                if (!roulette_survives(s->rr_survival, rng))
+                    break;
                 throughput = vec3_scale(throughput, 1.0 / s->rr_survival);
+            }
+#endif
             double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
             throughput = vec3_mul(throughput, diffuse_sample(m, n, wo, u1, u2, &direction));
-            add_emission = s->shadow_rays == 0;
         } else if (m->kind == MATERIAL_MIRROR) {
             direction = mirror_reflect(ray.dir, n);
             throughput = vec3_mul(throughput, m->reflectance);
             add_emission = 1;
         } else {
-            direction = glass_scatter(ray.dir, n, front, m->ior, s->fresnel, rng);
+            direction = glass_scatter(ray.dir, n, front, m->ior, s, rng);
             add_emission = 1;
         }
         counts->bounce++;
@@ -73,6 +89,17 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
 
 void path_describe(const PathSettings *s, char *text, int size)
 {
-    snprintf(text, (size_t)size, "M=%d rr=%g depth=%d %s", s->shadow_rays, s->rr_survival,
-             s->max_depth, s->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
+    int used = snprintf(text, (size_t)size, "depth=%d", s->max_depth);
+#if CHAPTER >= 3
+    used += snprintf(text + used, (size_t)(size - used), " M=%d", s->shadow_rays);
+#endif
+#if CHAPTER >= 4
+    used += snprintf(text + used, (size_t)(size - used), " %s",
+                     s->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
+#endif
+#if CHAPTER >= 6
+    used += snprintf(text + used, (size_t)(size - used), " rr=%g",
+                     s->rr_survival > 0.0 ? s->rr_survival : 1.0);
+#endif
+    (void)used;
 }

@@ -1,4 +1,4 @@
-/* path.h: the Monte Carlo path tracer (report §2.2, §3.4-3.7; eq. 1).
+/* path.h (chapter 2): the Monte Carlo path tracer (report §2.2, §3.4-3.7; eq. 1).
  *
  * Introduced in chapter 2; chapters 3-7 switch on its options one by one:
  *   shadow_rays  M of eq. 21 (chapter 3). M = 0: light is found only when a path hits
@@ -7,7 +7,7 @@
  *                right after a diffuse bounce is not added again (it was counted by
  *                the shadow rays); emission seen from the camera or after a mirror or
  *                glass bounce is added, since no shadow ray accounts for it.
- *   rr_survival  Russian roulette's alpha (chapter 6; roulette.h); 1 = no roulette.
+ *   rr_survival  Russian roulette's alpha (chapter 6; roulette.h); 0 or 1: no roulette.
  *   max_depth    a path has at most this many segments, the camera ray being the first.
  *                The same count bounds both ways of finding light (a shadow ray is the
  *                segment after its hit), so every M estimates the same quantity.
@@ -30,14 +30,24 @@
 #ifndef PATH_H
 #define PATH_H
 
-#include "cli.h"
 #include "render.h"
+#if CHAPTER >= 4
+#include "fresnel.h"
+#endif
 
+/* Fields in the order the chapters add them; zero (or omitted in an initialiser) is
+ * each option's plain setting: no shadow rays, Schlick, no roulette. */
 typedef struct {
-    int shadow_rays;
-    double rr_survival;
     int max_depth;
+#if CHAPTER >= 3
+    int shadow_rays;
+#endif
+#if CHAPTER >= 4
     FresnelMode fresnel;
+#endif
+#if CHAPTER >= 6
+    double rr_survival; /* 0 (not set) or 1: no roulette */
+#endif
 } PathSettings;
 
 /* An Estimator (render.h); settings points to a PathSettings. */

@@ -1,4 +1,4 @@
-/* plot.c: drawing the log-log plot (chapter 7). See plot.h. */
+/* plot.c (chapter 4): drawing the log-log plot. See plot.h. */
 #include "plot.h"
 
 #define MARGIN 12

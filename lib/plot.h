@@ -1,4 +1,4 @@
-/* plot.h: a log-log line plot, drawn with the project's own image code.
+/* plot.h (chapter 4): a log-log line plot, drawn with the project's own image code.
  *
  * Introduced in chapter 7, for its convergence plot (RMSE against seconds). On a
  * log-log plot an unbiased Monte Carlo estimator's error falls along a line of slope

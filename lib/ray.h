@@ -1,4 +1,4 @@
-/* ray.h: a ray x(t) = origin + t * dir (report §3.6.2, eq. 20) and how to start one
+/* ray.h (chapter 1): a ray x(t) = origin + t * dir (report §3.6.2, eq. 20) and how to start one
  * on a surface without hitting that surface again.
  *
  * Introduced in chapter 1. `dir` is unit length everywhere in this renderer, so t is

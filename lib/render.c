@@ -1,4 +1,4 @@
-/* render.c: the Monte Carlo pixel loop, threads, progress and interruption
+/* render.c (chapter 1): the Monte Carlo pixel loop, threads, progress and interruption
  * (chapter 1; report §3.3). See render.h for the design. */
 #include "render.h"
 

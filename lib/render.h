@@ -1,4 +1,4 @@
-/* render.h: the image as a Monte Carlo estimate, one pixel at a time (report §3.3).
+/* render.h (chapter 1): the image as a Monte Carlo estimate, one pixel at a time (report §3.3).
  *
  * Introduced in chapter 1. A pixel's value is the mean of `spp` samples; sample s of
  * pixel p traces one camera ray (camera.h) and asks an estimator for the radiance

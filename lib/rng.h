@@ -1,4 +1,4 @@
-/* rng.h: the random numbers behind every Monte Carlo estimate.
+/* rng.h (chapter 1): the random numbers behind every Monte Carlo estimate.
  *
  * Introduced in chapter 1 (jittered pixel positions), used by every chapter after.
  * PCG32 (O'Neill 2014, "PCG: A Family of Simple Fast Space-Efficient Statistically

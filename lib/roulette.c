@@ -1,4 +1,4 @@
-/* roulette.c: Russian roulette with survival probability alpha (chapter 6).
+/* roulette.c (chapter 6): Russian roulette with survival probability alpha.
  * See roulette.h for why it is unbiased, and the report's erratum. */
 #include "roulette.h"
 

@@ -1,4 +1,4 @@
-/* roulette.h: Russian roulette, ending paths without bias (report §2.2, §4.7).
+/* roulette.h (chapter 6): Russian roulette, ending paths without bias (report §2.2, §4.7).
  *
  * Introduced in chapter 6. At a diffuse surface the path goes on with probability
  * alpha, and a surviving path's weight is divided by alpha:

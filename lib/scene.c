@@ -1,4 +1,4 @@
-/* scene.c: the scene's arrays and the ray queries against them (chapter 1).
+/* scene.c (chapter 1): the scene's arrays and the ray queries against them.
  * See scene.h. The queries go through the bounding volume hierarchy (bvh.h, chapter 7),
  * which finds the same hit as testing every primitive, only sooner. */
 #include "scene.h"

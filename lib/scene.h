@@ -1,4 +1,4 @@
-/* scene.h: everything a scene file declares, and the ray queries against it.
+/* scene.h (chapter 1): everything a scene file declares, and the ray queries against it.
  *
  * Introduced in chapter 1. Flat arrays of materials, triangles (quads, boxes and
  * tetrahedra are split into triangles when read), spheres and point lights; the

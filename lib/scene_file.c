@@ -1,4 +1,4 @@
-/* scene_file.c: the scene format, version 1 (SPEC §4; the scene of report §4.1).
+/* scene_file.c (chapter 1): the scene format, version 1 (SPEC §4; the scene of report §4.1).
  *
  * Introduced in chapter 1. Each line is a keyword, a fixed number of words (a shape's
  * material, or a new material's name and kind) and a fixed number of decimal numbers;

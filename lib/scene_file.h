@@ -1,4 +1,4 @@
-/* scene_file.h: reading the scene format, version 1 (SPEC §4, a contract).
+/* scene_file.h (chapter 1): reading the scene format, version 1 (SPEC §4, a contract).
  *
  * Introduced in chapter 1. Line-oriented text; `#` starts a comment; tokens are
  * separated by white space; numbers are decimal floats. Keywords: camera, material

@@ -1,4 +1,4 @@
-/* schlick.c: Schlick's reflectance with the erratum of SPEC §8.4 (chapter 1). */
+/* schlick.c (chapter 1): Schlick's reflectance with the erratum of SPEC §8.4. */
 #include "schlick.h"
 
 #include <math.h>

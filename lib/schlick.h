@@ -1,4 +1,4 @@
-/* schlick.h: Schlick's approximation to the Fresnel reflectance (report §3.5.2,
+/* schlick.h (chapter 1): Schlick's approximation to the Fresnel reflectance (report §3.5.2,
  * eqs. 6-7).
  *
  * Introduced in chapter 1 (the report's choice; chapter 4 compares it with the exact

@@ -1,4 +1,4 @@
-/* snell.c: Snell's law and total internal reflection (chapter 1). See snell.h. */
+/* snell.c (chapter 1): Snell's law and total internal reflection. See snell.h. */
 #include "snell.h"
 
 double snell_cos_transmitted(double cos_i, double n_i, double n_t)

@@ -1,4 +1,4 @@
-/* snell.h: refraction by Snell's law and total internal reflection (report §3.5.2,
+/* snell.h (chapter 1): refraction by Snell's law and total internal reflection (report §3.5.2,
  * eq. 2, Figure 5).
  *
  * Introduced in chapter 1. Snell's law n_i sin(theta_i) = n_t sin(theta_t) (eq. 2) fixes

@@ -1,4 +1,4 @@
-/* sphere.h: the implicit sphere |x - c|^2 = r^2 and a ray's first hit on it
+/* sphere.h (chapter 1): the implicit sphere |x - c|^2 = r^2 and a ray's first hit on it
  * (report §3.6.2, eqs. 19-20).
  *
  * Introduced in chapter 1. Substituting x = o + t d (|d| = 1) into eq. 19 gives

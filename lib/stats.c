@@ -1,4 +1,4 @@
-/* stats.c: the monotonic clock (chapter 1). See stats.h. */
+/* stats.c (chapter 1): the monotonic clock. See stats.h. */
 #include "stats.h"
 
 #include <time.h>

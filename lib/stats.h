@@ -1,4 +1,4 @@
-/* stats.h: what a render costs: wall-clock time and rays traced (SPEC §6).
+/* stats.h (chapter 1): what a render costs: wall-clock time and rays traced (SPEC §6).
  *
  * Introduced in chapter 1. Rays are counted by purpose, so a table can say where the
  * time went: camera rays (one per sample), bounce rays (every ray a path continues

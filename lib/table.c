@@ -1,4 +1,4 @@
-/* table.c: printing the cost/accuracy table and its CSV (chapter 1). See table.h. */
+/* table.c (chapter 1): printing the cost/accuracy table and its CSV. See table.h. */
 #include "table.h"
 
 #include <math.h>

@@ -1,4 +1,4 @@
-/* table.h: one row per rendered panel: what it cost and what it bought (SPEC §6).
+/* table.h (chapter 1): one row per rendered panel: what it cost and what it bought (SPEC §6).
  *
  * Introduced in chapter 1 (cost columns); chapter 2 fills the error columns from a
  * reference image (measure.h). Printed as an aligned table on stdout and written as a

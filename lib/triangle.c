@@ -1,4 +1,4 @@
-/* triangle.c: Möller-Trumbore ray-triangle intersection (chapter 1). See triangle.h. */
+/* triangle.c (chapter 1): Möller-Trumbore ray-triangle intersection. See triangle.h. */
 #include "triangle.h"
 
 Triangle triangle_make(Vec3 v0, Vec3 v1, Vec3 v2, int material)

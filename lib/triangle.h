@@ -1,4 +1,4 @@
-/* triangle.h: a triangle and the Möller-Trumbore ray intersection (report §3.6.1,
+/* triangle.h (chapter 1): a triangle and the Möller-Trumbore ray intersection (report §3.6.1,
  * eqs. 15-18).
  *
  * Introduced in chapter 1. A point of the triangle is T(u, v) = (1-u-v) v0 + u v1 + v v2

@@ -1,4 +1,4 @@
-/* vec.c: the orthonormal basis around a normal (chapter 1).
+/* vec.c (chapter 1): the orthonormal basis around a normal.
  *
  * The branchless construction of Duff et al., "Building an Orthonormal Basis,
  * Revisited" (JCGT 2017): continuous everywhere except n.z = -1 exactly, where the

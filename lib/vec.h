@@ -1,4 +1,4 @@
-/* vec.h: three-component vectors, used for points, directions and RGB colours.
+/* vec.h (chapter 1): three-component vectors, used for points, directions and RGB colours.
  *
  * Introduced in chapter 1. Doubles throughout (SPEC §9): the room is about 16 units
  * across and is also tested scaled by 1e-3 and 1e3, where floats would lose the

@@ -1,4 +1,4 @@
-/* whitted.c: the Whitted ray tree (chapter 1). See whitted.h. */
+/* whitted.c (chapter 1): the Whitted ray tree. See whitted.h. */
 #include "whitted.h"
 
 #include "mirror.h"

@@ -1,4 +1,4 @@
-/* whitted.h: Whitted ray tracing (report §2.1, Figure 1).
+/* whitted.h (chapter 1): Whitted ray tracing (report §2.1, Figure 1).
  *
  * Introduced in chapter 1. From the eye, a ray tree:
  *   - at a diffuse surface the ray ends; the surface is shaded locally by one shadow ray

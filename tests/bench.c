@@ -1,4 +1,4 @@
-/* bench.c: the speed benchmark (`make bench`; chapter 7). A benchmark, not a test: it
+/* bench.c (chapter 7): the speed benchmark (`make bench`; chapter 7). A benchmark, not a test: it
  * asserts nothing and prints what it measures.
  *
  * The workload is Table 1's first row, the report's cheapest full image: the room at
@@ -38,7 +38,7 @@ int main(int argc, char **argv)
     char error[512];
     if (scene_load(options.scene, &scene, error, sizeof error) != 0)
         cli_fail(2, "%s", error);
-    PathSettings path = {1, 0.25, 64, FRESNEL_SCHLICK};
+    PathSettings path = {.max_depth = 64, .shadow_rays = 1, .rr_survival = 0.25};
     int threads[2] = {1, options.threads > 0 ? options.threads : render_core_count()};
     RenderResult results[2];
     printf("room, %d x %d, %d spp, M=1, alpha=0.25 (Table 1, row 1)\n", options.size,

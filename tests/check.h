@@ -1,4 +1,4 @@
-/* check.h: small helpers shared by the geometry tests (include after cmocka.h).
+/* check.h (chapter 1): small helpers shared by the geometry tests (include after cmocka.h).
  *
  * assert_close compares doubles and, unlike cmocka's float-only assert_float_equal,
  * prints both values at full precision when it fails. The random directions are

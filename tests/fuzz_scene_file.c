@@ -1,4 +1,4 @@
-/* fuzz_scene_file.c: libFuzzer target for the scene reader (scene_file.h, SPEC §4).
+/* fuzz_scene_file.c (chapter 1): libFuzzer target for the scene reader (scene_file.h, SPEC §4).
  *
  * Bad input must be a clear error, never a crash, a hang or a leak (SPEC §4). Any
  * bytes go to scene_parse; `make fuzz` builds this with AddressSanitizer and

@@ -1,4 +1,4 @@
-/* Tests of area-light sampling and the direct-light estimator of eq. 21
+/* test_area_light.c (chapter 3): Tests of area-light sampling and the direct-light estimator of eq. 21
  * (lib/area_light.c, chapter 3).
  *
  * 1. Chi-square goodness of fit (chi_square.h) of area_light_sample: two lights of

@@ -1,4 +1,4 @@
-/* test_atomic_file.c: output files are written whole or not at all (atomic_file.h,
+/* test_atomic_file.c (chapter 1): output files are written whole or not at all (atomic_file.h,
  * chapter 1, SPEC §9).
  *
  * Every way a write can go wrong is made to happen for real: the caller gives up, the

@@ -1,4 +1,4 @@
-/* Tests of the bounding volume hierarchy (lib/bvh.c, chapter 7).
+/* test_bvh.c (chapter 1): Tests of the bounding volume hierarchy (lib/bvh.c, chapter 7).
  *
  * The hierarchy may change only how fast the nearest hit is found, never which hit:
  * for many random rays, in the report's room and in random triangle soups, the BVH's

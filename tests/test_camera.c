@@ -1,4 +1,4 @@
-/* test_camera.c: pixel-to-ray mapping and where in a pixel the samples go (camera.h,
+/* test_camera.c (chapter 1): pixel-to-ray mapping and where in a pixel the samples go (camera.h,
  * SPEC §4, report §3.3.1 and §4.1, chapter 1).
  *
  * The mapping is a contract with the scene format: pixel (col, row), row 0 at the top,

@@ -1,4 +1,4 @@
-/* test_chi_square.c: Pearson's chi-square test (chi_square.h, chapter 2).
+/* test_chi_square.c (chapter 1): Pearson's chi-square test (chi_square.h, chapter 2).
  *
  * The statistic is checked by hand, the merging of sparse bins by hand, and the p-value
  * against tabulated quantiles and against the closed forms for 1 and for even degrees

@@ -1,4 +1,4 @@
-/* Tests of the programs' command line and their handling of bad input (lib/cli.c,
+/* test_cli.c (chapter 1): Tests of the programs' command line and their handling of bad input (lib/cli.c,
  * lib/experiment.c; SPEC §4 and §9), run on the real chapter 1 program.
  *
  * Every bad flag value and every bad scene file must give a message on stderr that

@@ -1,4 +1,4 @@
-/* test_figure.c: the side-by-side comparison figure (figure.h, chapter 1).
+/* test_figure.c (chapter 1): the side-by-side comparison figure (figure.h, chapter 1).
  *
  * Each figure is written, decoded again with stb_image, and checked against the layout
  * figure.h documents: its size for 1, 2 and 3 panels and for each text scale, panels

@@ -1,4 +1,4 @@
-/* test_fresnel.c: the exact Fresnel reflectance with the errata of SPEC §8.2-8.3
+/* test_fresnel.c (chapter 4): the exact Fresnel reflectance with the errata of SPEC §8.2-8.3
  * (fresnel.h, chapter 4).
  *
  * Landmark values (normal and grazing incidence, Brewster's angle, the critical angle,

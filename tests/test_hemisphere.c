@@ -1,4 +1,4 @@
-/* test_hemisphere.c: cosine-weighted hemisphere sampling (hemisphere.h, chapter 2).
+/* test_hemisphere.c (chapter 2): cosine-weighted hemisphere sampling (hemisphere.h, chapter 2).
  *
  * The sampler must produce unit directions above the surface with exactly the density
  * cos(theta) / pi that hemisphere_pdf_cosine reports, or every diffuse bounce is biased.

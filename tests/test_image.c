@@ -1,4 +1,4 @@
-/* test_image.c: the framebuffer, its tone map and its PNG and PFM files (image.h,
+/* test_image.c (chapter 1): the framebuffer, its tone map and its PNG and PFM files (image.h,
  * chapter 1).
  *
  * The tone map is checked at its fixed points and for rounding to the nearest code over

@@ -1,4 +1,4 @@
-/* test_lambert.c: the Lambertian BRDF (lambert.h, chapter 2).
+/* test_lambert.c (chapter 2): the Lambertian BRDF (lambert.h, chapter 2).
  *
  * The BRDF is the constant rho / pi (eq. 8), and the 1/pi is exactly what makes the
  * surface reflect the fraction rho of the light it receives: its directional albedo,

@@ -1,4 +1,4 @@
-/* test_measure.c: error metrics, the hash that names a reference, and the reference cache
+/* test_measure.c (chapter 2): error metrics, the hash that names a reference, and the reference cache
  * (measure.h, SPEC §6, chapter 2).
  *
  * The metrics are checked against sums done by hand on images of a few pixels; the hash
@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "check.h"
@@ -211,34 +212,6 @@ static int remove_scratch(void **state)
     return rmdir(scratch_dir);
 }
 
-/* A file's hash is the hash of its bytes, read in chunks: 200 000 bytes cross the
- * reader's 64 KiB buffer several times. An empty file leaves the starting value; a
- * missing file gives 0. */
-static void test_hash_file(void **state)
-{
-    (void)state;
-    enum { SIZE = 200000 };
-    unsigned char *bytes = malloc(SIZE);
-    assert_non_null(bytes);
-    for (int i = 0; i < SIZE; i++)
-        bytes[i] = (unsigned char)(i * 31 + i / 256);
-    const char *path = in_scratch("bytes");
-    FILE *file = fopen(path, "wb");
-    assert_non_null(file);
-    assert_int_equal(fwrite(bytes, 1, SIZE, file), SIZE);
-    assert_int_equal(fclose(file), 0);
-    uint64_t expected = measure_hash(MEASURE_HASH_START, bytes, SIZE);
-    assert_true(measure_hash_file(MEASURE_HASH_START, path) == expected);
-    assert_true(measure_hash_file(42, path) == measure_hash(42, bytes, SIZE));
-    free(bytes);
-
-    file = fopen(path, "wb");
-    assert_non_null(file);
-    assert_int_equal(fclose(file), 0);
-    assert_true(measure_hash_file(MEASURE_HASH_START, path) == MEASURE_HASH_START);
-    assert_true(measure_hash_file(MEASURE_HASH_START, in_scratch("missing")) == 0);
-}
-
 /* A reference with distinct values everywhere, as a render would leave it. */
 static Reference sample_reference(void)
 {
@@ -272,7 +245,7 @@ static void test_reference_round_trip(void **state)
     assert_int_equal(access(in_scratch(INFO_FILE), R_OK), 0);
 
     Reference loaded;
-    assert_int_equal(measure_load_reference(scratch_dir, KEY, &loaded), 0);
+    assert_int_equal(measure_load_reference(scratch_dir, KEY, 3, 2, &loaded), 0);
     assert_int_equal(loaded.image.width, 3);
     assert_int_equal(loaded.image.height, 2);
     assert_int_equal(loaded.std_error.width, 3);
@@ -295,7 +268,7 @@ static void test_missing_reference(void **state)
     (void)state;
     Reference loaded;
     memset(&loaded, 0x5a, sizeof loaded);
-    assert_int_equal(measure_load_reference(scratch_dir, KEY, &loaded), -1);
+    assert_int_equal(measure_load_reference(scratch_dir, KEY, 3, 2, &loaded), -1);
     assert_empty(&loaded);
     assert_int_equal(loaded.cached, 0);
 }
@@ -329,6 +302,15 @@ static void mismatch_std_error(void)
     image_free(&small);
 }
 
+static void replace_by_one_pixel(void)
+{
+    Image tiny = image_new(1, 1);
+    assert_non_null(tiny.pixels);
+    assert_int_equal(image_write_pfm(&tiny, in_scratch(MEAN_FILE)), 0);
+    assert_int_equal(image_write_pfm(&tiny, in_scratch(STD_ERROR_FILE)), 0);
+    image_free(&tiny);
+}
+
 static void garble_info(void)
 {
     FILE *file = fopen(in_scratch(INFO_FILE), "w");
@@ -339,18 +321,19 @@ static void garble_info(void)
 
 /* Each way an entry can be broken (no .txt, a .txt that does not parse, a truncated
  * image, a truncated standard-error image read after a good image, a standard-error
- * image of another size, which measure_image_mean would read past) fails the load
+ * image of another size, which measure_image_mean would read past, both images
+ * replaced by a consistent 1 x 1 pair, not the size asked for) fails the load
  * with -1 and an empty Reference; under LeakSanitizer, an image read before the
  * failure must have been freed. */
 static void test_broken_reference(void **state)
 {
     (void)state;
     void (*damages[])(void) = {remove_info, garble_info, truncate_mean, truncate_std_error,
-                               mismatch_std_error};
+                               mismatch_std_error, replace_by_one_pixel};
     for (size_t i = 0; i < sizeof damages / sizeof damages[0]; i++) {
         save_and_damage(damages[i]);
         Reference loaded;
-        assert_int_equal(measure_load_reference(scratch_dir, KEY, &loaded), -1);
+        assert_int_equal(measure_load_reference(scratch_dir, KEY, 3, 2, &loaded), -1);
         assert_empty(&loaded);
         assert_int_equal(loaded.cached, 0);
     }
@@ -362,6 +345,21 @@ static void test_save_into_missing_directory(void **state)
     (void)state;
     Reference saved = sample_reference();
     assert_int_equal(measure_save_reference(in_scratch("no_such_dir"), KEY, &saved), -1);
+    measure_reference_free(&saved);
+}
+
+/* A save that fails part-way (here the standard-error image cannot be written: a
+ * directory stands where it should go, as a full disk would stop it) leaves no part of
+ * the entry behind: not the mean image, not the .txt. */
+static void test_failed_save_leaves_nothing(void **state)
+{
+    (void)state;
+    assert_int_equal(mkdir(in_scratch(STD_ERROR_FILE), 0700), 0);
+    Reference saved = sample_reference();
+    assert_int_equal(measure_save_reference(scratch_dir, KEY, &saved), -1);
+    assert_int_equal(access(in_scratch(MEAN_FILE), F_OK), -1);
+    assert_int_equal(access(in_scratch(INFO_FILE), F_OK), -1);
+    assert_int_equal(rmdir(in_scratch(STD_ERROR_FILE)), 0);
     measure_reference_free(&saved);
 }
 
@@ -377,11 +375,12 @@ int main(void)
         cmocka_unit_test(test_fill_row),
         cmocka_unit_test(test_hash_vectors),
         cmocka_unit_test(test_hash_chains),
-        cmocka_unit_test_setup_teardown(test_hash_file, make_scratch, remove_scratch),
         cmocka_unit_test_setup_teardown(test_reference_round_trip, make_scratch, remove_scratch),
         cmocka_unit_test_setup_teardown(test_missing_reference, make_scratch, remove_scratch),
         cmocka_unit_test_setup_teardown(test_broken_reference, make_scratch, remove_scratch),
         cmocka_unit_test_setup_teardown(test_save_into_missing_directory, make_scratch,
+                                        remove_scratch),
+        cmocka_unit_test_setup_teardown(test_failed_save_leaves_nothing, make_scratch,
                                         remove_scratch),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,4 +1,4 @@
-/* test_mirror.c: the perfect mirror's reflection R(d) = d - 2 (d . n) n (mirror.h,
+/* test_mirror.c (chapter 1): the perfect mirror's reflection R(d) = d - 2 (d . n) n (mirror.h,
  * report §3.5.1, chapter 1).
  *
  * The law of reflection is geometry, so each property is checked for many random unit

@@ -1,4 +1,4 @@
-/* test_oren_nayar.c: the Oren-Nayar BRDF with the errata of SPEC §8.1 (oren_nayar.h,
+/* test_oren_nayar.c (chapter 5): the Oren-Nayar BRDF with the errata of SPEC §8.1 (oren_nayar.h,
  * chapter 5).
  *
  * Checked: the corrected coefficients A and B (eq. 14), one value of eq. 13 by hand,

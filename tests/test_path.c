@@ -1,4 +1,4 @@
-/* Tests of the path tracer (lib/path.c, chapters 2, 3 and 6): the estimators are
+/* test_path.c (chapter 2): Tests of the path tracer (lib/path.c, chapters 2, 3 and 6): the estimators are
  * unbiased, checked against closed forms.
  *
  * White furnace (SPEC §7; the boxes are in furnace.h): in a closed box whose every
@@ -80,6 +80,7 @@ static void uniform_furnace(const PathSettings *settings, double rho, double exp
     scene_free(&scene);
 }
 
+#if CHAPTER >= 3
 /* The bordered box of furnace.h: radiance 2 everywhere (for an unlimited depth). */
 static void bordered_furnace(const PathSettings *settings)
 {
@@ -91,37 +92,42 @@ static void bordered_furnace(const PathSettings *settings)
     assert_close(mean, std_error, FURNACE_BORDERED_RADIANCE, 0.01);
     scene_free(&scene);
 }
+#endif
 
 /* Chapter 2's estimator (no shadow rays, no roulette) with depth D sees the first D
  * terms of the series: rho = 0.5, D = 6 gives (1 - 0.5^6) / 0.5 = 1.96875. */
 static void test_furnace_chapter2_truncated_series(void **state)
 {
     (void)state;
-    PathSettings settings = {0, 1.0, 6, FRESNEL_SCHLICK};
+    PathSettings settings = {.max_depth = 6};
     uniform_furnace(&settings, 0.5, (1.0 - pow(0.5, 6)) / 0.5);
 }
 
+#if CHAPTER >= 3
 /* Chapter 3's estimator, one and four shadow rays, no roulette; depth 40 leaves out
  * ~1e-7 of the series (furnace.h). */
 static void test_furnace_chapter3_shadow_rays(void **state)
 {
     (void)state;
-    PathSettings one = {1, 1.0, 40, FRESNEL_SCHLICK};
+    PathSettings one = {.max_depth = 40, .shadow_rays = 1};
     bordered_furnace(&one);
-    PathSettings four = {4, 1.0, 40, FRESNEL_SCHLICK};
+    PathSettings four = {.max_depth = 40, .shadow_rays = 4};
     bordered_furnace(&four);
 }
+#endif
 
+#if CHAPTER >= 6
 /* Chapter 6's estimator (roulette alpha = 0.75, depth practically unlimited), with and
  * without shadow rays. */
 static void test_furnace_chapter6_roulette(void **state)
 {
     (void)state;
-    PathSettings hitting = {0, 0.75, 200, FRESNEL_SCHLICK};
+    PathSettings hitting = {.max_depth = 200, .rr_survival = 0.75};
     bordered_furnace(&hitting);
-    PathSettings shadow = {1, 0.75, 200, FRESNEL_SCHLICK};
+    PathSettings shadow = {.max_depth = 200, .shadow_rays = 1, .rr_survival = 0.75};
     bordered_furnace(&shadow);
 }
+#endif
 
 /* Reflectance 0 and 1 (SPEC §7): rho = 0 sees only the emission (with shadow rays too:
  * they meet rho = 0); rho = 1 with depth D sees exactly D times it (every term of the
@@ -129,12 +135,17 @@ static void test_furnace_chapter6_roulette(void **state)
 static void test_furnace_reflectance_extremes(void **state)
 {
     (void)state;
-    PathSettings black = {1, 0.5, 10, FRESNEL_SCHLICK};
+    PathSettings black = {.max_depth = 10};
     uniform_furnace(&black, 0.0, 1.0);
-    PathSettings white = {0, 1.0, 10, FRESNEL_SCHLICK};
+#if CHAPTER >= 6
+    PathSettings black_shadow = {.max_depth = 10, .shadow_rays = 1, .rr_survival = 0.5};
+    uniform_furnace(&black_shadow, 0.0, 1.0);
+#endif
+    PathSettings white = {.max_depth = 10};
     uniform_furnace(&white, 1.0, 10.0);
 }
 
+#if CHAPTER >= 6
 /* Roulette is unbiased (chapter 6 "must show"): in the uniform furnace, alpha = 0.05,
  * 0.5 and 1 give the same mean within their combined standard errors. rho = 0.2, so
  * that even alpha = 0.05 > rho^2 = 0.04 has finite variance; no shadow rays, so the
@@ -148,7 +159,7 @@ static void test_roulette_unbiased(void **state)
     const double alphas[] = {0.05, 0.5, 1.0};
     double means[3], errors[3];
     for (int i = 0; i < 3; i++) {
-        PathSettings settings = {0, alphas[i], 40, FRESNEL_SCHLICK};
+        PathSettings settings = {.max_depth = 40, .rr_survival = alphas[i]};
         estimate(&scene, &settings, vec3(0.3, 0.3, -0.5), 11 + (uint64_t)i, &means[i], &errors[i]);
         print_message("    alpha %.2f: %.5f +- %.5f\n", alphas[i], means[i], errors[i]);
     }
@@ -161,7 +172,9 @@ static void test_roulette_unbiased(void **state)
         assert_close(means[i], errors[i], (1.0 - pow(0.2, 40)) / 0.8, 0.02);
     scene_free(&scene);
 }
+#endif
 
+#if CHAPTER >= 3
 /* Chapter 3's estimator (shadow rays) converges to chapter 2's (light found only by
  * hitting it) on the report's room, glass and mirrors included. The image is cut into
  * 3 x 3-pixel blocks; for each block and channel, z = (a - b) / sqrt(se_a^2 + se_b^2)
@@ -194,7 +207,7 @@ static void test_shadow_rays_agree_with_hitting_on_the_room(void **state)
     Scene scene;
     char error[256];
     assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
-    PathSettings hitting = {0, 1.0, 6, FRESNEL_SCHLICK}, shadow = {1, 1.0, 6, FRESNEL_SCHLICK};
+    PathSettings hitting = {.max_depth = 6}, shadow = {.max_depth = 6, .shadow_rays = 1};
     RenderSettings many = {SIDE, SIDE, 2000, PIXEL_RANDOM, 0, 1, 0, "test"};
     RenderSettings fewer = {SIDE, SIDE, 400, PIXEL_RANDOM, 0, 2, 0, "test"};
     RenderResult a, b;
@@ -227,16 +240,21 @@ static void test_shadow_rays_agree_with_hitting_on_the_room(void **state)
     render_result_free(&b);
     scene_free(&scene);
 }
+#endif
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_furnace_chapter2_truncated_series),
+#if CHAPTER >= 3
         cmocka_unit_test(test_furnace_chapter3_shadow_rays),
-        cmocka_unit_test(test_furnace_chapter6_roulette),
-        cmocka_unit_test(test_furnace_reflectance_extremes),
-        cmocka_unit_test(test_roulette_unbiased),
         cmocka_unit_test(test_shadow_rays_agree_with_hitting_on_the_room),
+#endif
+#if CHAPTER >= 6
+        cmocka_unit_test(test_furnace_chapter6_roulette),
+        cmocka_unit_test(test_roulette_unbiased),
+#endif
+        cmocka_unit_test(test_furnace_reflectance_extremes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,4 +1,4 @@
-/* test_plot.c: the log-log plot of chapter 7's convergence figure (plot.h).
+/* test_plot.c (chapter 4): the log-log plot of chapter 7's convergence figure (plot.h).
  *
  * The decades must enclose every point and be as tight as whole decades allow. The
  * picture is read back like a person would: the grid lines are found as columns and

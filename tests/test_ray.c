@@ -1,4 +1,4 @@
-/* test_ray.c: the ray x(t) = o + t d (report eq. 20) and starting a ray on a surface
+/* test_ray.c (chapter 1): the ray x(t) = o + t d (report eq. 20) and starting a ray on a surface
  * (ray.h, chapter 1).
  *
  * ray_spawn must move the origin to the side the new ray travels into, straight

@@ -1,4 +1,4 @@
-/* test_roulette.c: Russian roulette with survival probability alpha (roulette.h,
+/* test_roulette.c (chapter 6): Russian roulette with survival probability alpha (roulette.h,
  * report §2.2 and §4.7, chapter 6, erratum SPEC §8.5).
  *
  * A path that meets roulette survives with probability alpha and then carries X / alpha;

@@ -1,4 +1,4 @@
-/* test_scene.c: ray queries against a whole scene (scene.h, chapter 1).
+/* test_scene.c (chapter 1): ray queries against a whole scene (scene.h, chapter 1).
  *
  * Scenes are built in code with scene_add_*. Beyond "the nearest hit wins" this is
  * where rays start on surfaces, so it is where SPEC §7's acne and near-hit cases live:

@@ -1,4 +1,4 @@
-/* test_scene_file.c: reading the scene format, version 1 (scene_file.h, SPEC §4,
+/* test_scene_file.c (chapter 1): reading the scene format, version 1 (scene_file.h, SPEC §4,
  * chapter 1).
  *
  * The report's room loads with the counts SPEC §5 gives; each material kind and shape

@@ -1,4 +1,4 @@
-/* test_schlick.c: Schlick's Fresnel approximation (schlick.h, report §3.5.2, eqs. 6-7,
+/* test_schlick.c (chapter 1): Schlick's Fresnel approximation (schlick.h, report §3.5.2, eqs. 6-7,
  * SPEC §8.4, chapter 1).
  *
  * Checked against hand values (R0 of glass, the 80 degree value), at the extremes of

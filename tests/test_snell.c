@@ -1,4 +1,4 @@
-/* test_snell.c: refraction by Snell's law and total internal reflection (snell.h,
+/* test_snell.c (chapter 1): refraction by Snell's law and total internal reflection (snell.h,
  * report §3.5.2, eq. 2, SPEC §8.2, chapter 1).
  *
  * The refracted direction must obey eq. 2 over the whole range of angles and of IORs

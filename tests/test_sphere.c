@@ -1,4 +1,4 @@
-/* test_sphere.c: ray-sphere intersection (sphere.h, report §3.6.2, eqs. 19-20,
+/* test_sphere.c (chapter 1): ray-sphere intersection (sphere.h, report §3.6.2, eqs. 19-20,
  * chapter 1).
  *
  * Known hits, misses, rays from inside (the far root: glass spheres are traced from

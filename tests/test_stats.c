@@ -1,4 +1,4 @@
-/* test_stats.c: what a render costs: the monotonic clock and the ray counts (stats.h,
+/* test_stats.c (chapter 1): what a render costs: the monotonic clock and the ray counts (stats.h,
  * SPEC §6, chapter 1).
  *
  * The clock must never run backwards and must measure a known sleep; ray counts from

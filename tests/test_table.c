@@ -1,4 +1,4 @@
-/* test_table.c: the cost/accuracy table on the terminal and as CSV (table.h, SPEC §6,
+/* test_table.c (chapter 1): the cost/accuracy table on the terminal and as CSV (table.h, SPEC §6,
  * chapter 1).
  *
  * The CSV is read back with a small RFC 4180 reader (quoted fields, "" for a quote) and

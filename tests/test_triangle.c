@@ -1,4 +1,4 @@
-/* test_triangle.c: the triangle and Möller-Trumbore intersection (triangle.h,
+/* test_triangle.c (chapter 1): the triangle and Möller-Trumbore intersection (triangle.h,
  * report §3.6.1, eqs. 15-18, chapter 1).
  *
  * Known hits from both sides, misses, rays parallel to the plane, rays through a

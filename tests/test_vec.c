@@ -1,4 +1,4 @@
-/* test_vec.c: vector arithmetic and the orthonormal basis (vec.h, chapter 1).
+/* test_vec.c (chapter 1): vector arithmetic and the orthonormal basis (vec.h, chapter 1).
  *
  * The basis (t, b, n) is where every hemisphere direction is sampled, so it must be
  * orthonormal and right-handed for every unit normal, including the pole n = (0,0,-1)

@@ -1,4 +1,4 @@
-/* test_whitted.c: the Whitted ray tree (whitted.h, report §2.1, Figure 1, chapter 1).
+/* test_whitted.c (chapter 1): the Whitted ray tree (whitted.h, report §2.1, Figure 1, chapter 1).
  *
  * Whitted ray tracing is deterministic (no random numbers: every call here passes a
  * NULL generator), so each test compares with a closed form to rounding, 1e-12

@@ -1,4 +1,4 @@
-/* cli.h: the command line every chapter program shares (SPEC §9).
+/* cli.h (chapter 1): the command line every chapter program shares (SPEC §9).
  *
  * Introduced in chapter 1. Each program declares which flags it takes (a chapter
  * accepts only what it uses) and its defaults, which reproduce the report. Values
@@ -11,6 +11,10 @@
 #define CLI_H
 
 #include <stdint.h>
+
+#if CHAPTER >= 4
+#include "fresnel.h"
+#endif
 
 enum {
     FLAG_SCENE = 1u << 0,       /* --scene FILE */
@@ -31,8 +35,6 @@ enum {
 /* Flags every chapter program takes. */
 #define FLAGS_COMMON (FLAG_SCENE | FLAG_SIZE | FLAG_THREADS | FLAG_SEED | FLAG_OUT | FLAG_QUIET | FLAG_QUICK)
 
-typedef enum { FRESNEL_SCHLICK, FRESNEL_EXACT } FresnelMode;
-
 typedef struct {
     const char *scene;
     int size;
@@ -44,7 +46,9 @@ typedef struct {
     uint64_t seed;
     const char *out;
     int quiet;
+#if CHAPTER >= 4
     FresnelMode fresnel;
+#endif
     int quick;
     int reference_spp;
     unsigned given; /* the FLAG_ bits the user set on the command line */
@@ -63,6 +67,10 @@ extern const char *cli_program;
  * the reference's samples not given on the command line are a quarter of their
  * defaults. Exits on --help (status 0) and on any error (status 2). */
 void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options);
+
+/* A quarter of `value`, but at least `smallest`: --quick's sizes, and the chapters'
+ * sweeps on quarter-size images. */
+int cli_quarter(int value, int smallest);
 
 /* Print "PROGRAM: message" on stderr and exit with `status`. */
 void cli_fail(int status, const char *format, ...);

@@ -1,4 +1,4 @@
-/* cli.c: parsing the shared command line (chapter 1). See cli.h. */
+/* cli.c (chapter 1): parsing the shared command line. See cli.h. */
 #include "cli.h"
 
 #include <errno.h>
@@ -61,7 +61,9 @@ static void print_default(const FlagSpec *spec, const Options *d)
     case FLAG_THREADS: printf(" (default %d)", d->threads); break;
     case FLAG_SEED: printf(" (default %llu)", (unsigned long long)d->seed); break;
     case FLAG_OUT: printf(" (default %s)", d->out); break;
+#if CHAPTER >= 4
     case FLAG_FRESNEL: printf(" (default %s)", d->fresnel == FRESNEL_EXACT ? "exact" : "schlick"); break;
+#endif
     case FLAG_REFERENCE_SPP: printf(" (default %d)", d->reference_spp); break;
     default: break;
     }
@@ -124,6 +126,7 @@ static void set_value(const FlagSpec *spec, const char *text, Options *o)
         if (*text < '0' || *text > '9' || *end != '\0' || errno != 0)
             cli_fail(2, "%s: expected a whole number from 0 to 2^64-1, got '%s'", spec->name, text);
         o->seed = seed;
+#if CHAPTER >= 4
     } else if (spec->kind == VALUE_FRESNEL) {
         if (strcmp(text, "schlick") == 0)
             o->fresnel = FRESNEL_SCHLICK;
@@ -131,6 +134,7 @@ static void set_value(const FlagSpec *spec, const char *text, Options *o)
             o->fresnel = FRESNEL_EXACT;
         else
             cli_fail(2, "%s: expected 'schlick' or 'exact', got '%s'", spec->name, text);
+#endif
     } else if (spec->kind == VALUE_TEXT) {
         if (*text == '\0')
             cli_fail(2, "%s: expected a path, got an empty word", spec->name);
@@ -176,10 +180,18 @@ void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options)
         const char *value = equals ? equals + 1 : (i + 1 < argc ? argv[++i] : NULL);
         if (!value)
             cli_fail(2, "%s: missing value", spec->name);
+        if (!equals && strncmp(value, "--", 2) == 0)
+            cli_fail(2, "%s: missing value (got the option '%s'; a value that starts with "
+                        "'--' can be given as %s=VALUE)", spec->name, value, spec->name);
         set_value(spec, value, options);
     }
     if (options->quick && !cli_given(options, FLAG_SIZE))
-        options->size = options->size / 4 > 16 ? options->size / 4 : 16;
+        options->size = cli_quarter(options->size, 16);
     if (options->quick && !cli_given(options, FLAG_REFERENCE_SPP))
-        options->reference_spp = options->reference_spp / 4 > 1 ? options->reference_spp / 4 : 1;
+        options->reference_spp = cli_quarter(options->reference_spp, 1);
+}
+
+int cli_quarter(int value, int smallest)
+{
+    return value / 4 > smallest ? value / 4 : smallest;
 }

@@ -1,25 +1,44 @@
-/* experiment.h: what every chapter program does around its renders.
+/* experiment.h (chapter 1): what every chapter program does around its renders.
  *
  * Introduced in chapter 1. A chapter file is the experiment: which scene, which settings
  * per panel, what is measured, how the figure is laid out. The chores they all share
- * live here: loading the scene (errors as "PROGRAM: FILE:LINE: what is wrong", exit 2),
- * choosing the image size, rendering with a progress line, writing each panel as PNG
- * and PFM, the figure and the table (each file announced as "wrote PATH"), and an
- * interrupted render (SIGINT) saved as far as it got.
+ * live here, on the program's side of the line: unlike lib/, these functions may end
+ * the program, with "PROGRAM: what is wrong" on stderr and exit status 2 for bad input,
+ * 1 for a failure of the machine (memory, disk) and 130 after an interruption.
+ * Loading the scene (its bytes are read once, and kept to name and render its
+ * references), choosing the image size, rendering with a progress line, writing each
+ * panel as PNG and PFM, the figure and the table (each file announced as "wrote PATH"),
+ * and an interrupted render (SIGINT) saved as far as it got, or not at all.
+ *
+ * From chapter 2 on, panels are measured against references (measure.h). A chapter
+ * never renders its own reference: chapter 2's library cannot even estimate it well
+ * (it has no shadow rays). The reference is rendered by the program build/reference,
+ * built from the final chapter's library with its most efficient estimator
+ * (chapters/reference.c), and cached in build/references/ (beside the programs, so
+ * BUILD= moves it too) under a key that hashes the scene's bytes, what the reference
+ * estimates, and the reference program itself (its bytes and modification time): a
+ * change to any lib/ file that program links makes make rebuild it, and so renders the
+ * reference again; nothing else does.
  */
 #ifndef EXPERIMENT_H
 #define EXPERIMENT_H
 
 #include "cli.h"
-#include "measure.h"
-#include "path.h"
 #include "render.h"
 #include "table.h"
+#if CHAPTER >= 2
+#include "measure.h"
+#include "path.h"
+#endif
 
 typedef enum { NEEDS_POINT_LIGHT, NEEDS_AREA_LIGHT } LightNeed;
 
-/* Load options->scene, or exit with status 2 and the reader's message. Also an error:
- * a scene without the kind of light the chapter needs. */
+/* Check that --out can be written (before any time is spent rendering), then read
+ * options->scene once (at most EXPERIMENT_SCENE_MAX bytes; a pipe or FIFO works) and
+ * parse it, or exit with status 2 and the reader's message. Also an error: a scene
+ * without the kind of light the chapter needs, or with a material this chapter does not
+ * have yet. */
+#define EXPERIMENT_SCENE_MAX (64u << 20)
 void experiment_load_scene(const Options *options, LightNeed need, Scene *scene);
 
 /* Width from --size, height from the image plane's aspect ratio, rounded (exit 2 if
@@ -41,28 +60,6 @@ void experiment_path(const Options *options, const char *file_name, char *path, 
 /* Exposure of every panel's PNG: radiance 1 is white. */
 #define PANEL_EXPOSURE 1.0
 
-/* Where references are cached (measure.h). */
-#define REFERENCE_DIRECTORY "build/references"
-
-/* The reference for this scene and estimator at `spp` samples per pixel of random
- * positions, with a seed independent of the panels': read from the cache, or rendered
- * now and cached. `description` must name every setting that changes its expectation.
- * Prints a line with its noise. */
-void experiment_reference(const Options *options, const Scene *scene, Estimator estimate,
-                          const void *estimator_settings, const char *description, int spp,
-                          Reference *reference);
-
-/* experiment_reference for the path tracer with these settings (they describe it). */
-void experiment_path_reference(const Options *options, const Scene *scene,
-                               const PathSettings *path, Reference *reference);
-
-/* The path tracer at `spp` samples per pixel as one table row. With `image`, a panel:
- * written as NAME.png/.pfm and kept in *image; without, only measured. */
-TableRow experiment_path_row(const Options *options, const Scene *scene,
-                             const PathSettings *path, int spp, PixelSampling sampling,
-                             const char *name, const char *settings_text,
-                             const Reference *reference, Image *image);
-
 /* Write NAME.png and NAME.pfm in the output directory (exit 1 on failure). */
 void experiment_write_image(const Options *options, const char *name, const Image *image,
                             double exposure);
@@ -77,6 +74,29 @@ void experiment_write_table(const Options *options, const char *name, const Tabl
 
 /* A table row with the cost columns of a render filled in and no error measured. */
 TableRow experiment_row(const char *panel, const char *settings, const RenderResult *result);
+
+/* After a render was interrupted (SIGINT): say what was saved and exit with status 130.
+ * `saved` names what was written of it, or is NULL when nothing was. */
+void experiment_exit_if_interrupted(const RenderResult *result, const char *saved);
+
+#if CHAPTER >= 2
+/* The reference for the image that the path tracer with settings `path` estimates (its
+ * depth and, from chapter 4, its Fresnel mode; shadow rays and roulette do not change the
+ * expectation), of the scene as loaded, with the roughness of the material named
+ * `rough_material` (or none, NULL) set to `rough_sigma` (chapter 5's sweep), at the
+ * options' size and --reference-spp samples per pixel of random positions, with a seed
+ * independent of the panels'. Read from the cache, or rendered by the reference program
+ * first. Prints a line with its noise. */
+void experiment_path_reference(const Options *options, const Scene *scene,
+                               const PathSettings *path, const char *rough_material,
+                               double rough_sigma, Reference *reference);
+
+/* The path tracer at `spp` samples per pixel as one table row. With `image`, a panel:
+ * written as NAME.png/.pfm and kept in *image; without, only measured. */
+TableRow experiment_path_row(const Options *options, const Scene *scene,
+                             const PathSettings *path, int spp, PixelSampling sampling,
+                             const char *name, const char *settings_text,
+                             const Reference *reference, Image *image);
 
 /* One measurement: render, and return its table row (labelled `name`) with the error
  * columns filled when a reference is given (else NULL). The rendered image stays in
@@ -96,8 +116,6 @@ TableRow experiment_panel(const Options *options, const Scene *scene,
 
 /* A figure caption from a table row: its settings, then time and error. */
 void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size);
-
-/* After an interrupted render has been saved: say so and exit with status 130. */
-void experiment_exit_if_interrupted(const RenderResult *result);
+#endif /* CHAPTER >= 2 */
 
 #endif
