@@ -66,7 +66,7 @@ SUPPORT_SOURCES := chapters/cli.c chapters/experiment.c
 TEST_SOURCES    := $(wildcard tests/test_*.c)
 REFERENCE_BIN   := $(BUILD)/reference
 
-.PHONY: all test figures sanitize fuzz bench clean deps gallery
+.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery
 .DEFAULT_GOAL := all
 .SECONDARY:
 
@@ -128,10 +128,20 @@ $(REFERENCE_BIN): $(BUILD)/chapter$(FINAL)/chapters/reference.o $(BUILD)/chapter
 CHAPTER_BINS := $(foreach n,$(CHAPTERS),$(call program_of,$(n)))
 all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(CHAPTER_TESTS) $(FINAL_TESTS)
 
+# The clean source of every chapter compiles on its own, with no chapter markers left.
+check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
+	@for n in $(CHAPTERS); do \
+	    tree=$(BUILD)/source/chapter$$n; \
+	    if grep -rln '^#if.*CHAPTER' $$tree; then echo "chapter markers left in $$tree"; exit 1; fi; \
+	    for f in $$(find $$tree -name '*.c'); do \
+	        $(CC) $(REQUIRED) -I$$tree/lib -I$$tree/chapters $(PKG_CFLAGS) -fsyntax-only $$f || exit 1; \
+	    done; \
+	done; echo "the clean source of chapters $(CHAPTERS) compiles"
+
 # Each test program is run from the top directory (some read scenes/ and run the chapter
 # programs): first every chapter's own tests in its own snapshot, then all of them in the
 # final one. The last line counts the programs that passed and failed.
-test: all
+test: all check-sources
 	@passed=0; failed=0; \
 	for t in $(CHAPTER_TESTS) $(FINAL_TESTS); do \
 	    echo "== $$t"; \

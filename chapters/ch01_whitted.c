@@ -24,10 +24,8 @@ int main(int argc, char **argv)
          .out = "build/figures"},
     };
     Options options;
-    cli_parse(argc, argv, &info, &options);
-
     Scene scene;
-    experiment_load_scene(&options, NEEDS_POINT_LIGHT, &scene);
+    experiment_start(argc, argv, &info, NEEDS_POINT_LIGHT, &options, &scene);
     WhittedSettings whitted = {options.depth};
     RenderSettings settings =
         experiment_render_settings(&options, &scene, 1, PIXEL_CENTRE, "Whitted");

@@ -39,10 +39,8 @@ int main(int argc, char **argv)
          .out = "build/figures", .reference_spp = 256},
     };
     Options options;
-    cli_parse(argc, argv, &info, &options);
-
     Scene scene;
-    experiment_load_scene(&options, NEEDS_AREA_LIGHT, &scene);
+    experiment_start(argc, argv, &info, NEEDS_AREA_LIGHT, &options, &scene);
     PathSettings hitting = {.max_depth = options.depth};
     Reference reference;
     experiment_path_reference(&options, &scene, &hitting, NULL, 0.0, &reference);

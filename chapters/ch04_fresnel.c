@@ -222,10 +222,8 @@ int main(int argc, char **argv)
          .out = "build/figures", .fresnel = FRESNEL_SCHLICK, .reference_spp = 256},
     };
     Options options;
-    cli_parse(argc, argv, &info, &options);
-
     Scene scene;
-    experiment_load_scene(&options, NEEDS_AREA_LIGHT, &scene);
+    experiment_start(argc, argv, &info, NEEDS_AREA_LIGHT, &options, &scene);
     Reference reference;
     reference_for(&options, &scene, FULL_DEPTH, options.fresnel, &reference);
 

@@ -155,10 +155,8 @@ int main(int argc, char **argv)
          .depth = 8, .seed = 1, .out = "build/figures", .reference_spp = 256},
     };
     Options options;
-    cli_parse(argc, argv, &info, &options);
-
     Scene scene;
-    experiment_load_scene(&options, NEEDS_AREA_LIGHT, &scene);
+    experiment_start(argc, argv, &info, NEEDS_AREA_LIGHT, &options, &scene);
     int rough = scene_find_material(&scene, "rough");
     if (rough < 0 || scene.materials[rough].kind != MATERIAL_OREN_NAYAR)
         cli_fail(2, "%s:%d: no oren_nayar material named 'rough': %s sweeps its sigma",

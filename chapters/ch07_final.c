@@ -173,10 +173,8 @@ int main(int argc, char **argv)
          .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = 256},
     };
     Options options;
-    cli_parse(argc, argv, &info, &options);
-
     Scene scene;
-    experiment_load_scene(&options, NEEDS_AREA_LIGHT, &scene);
+    experiment_start(argc, argv, &info, NEEDS_AREA_LIGHT, &options, &scene);
     Reference reference;
     reference_for(&options, &scene, &reference);
     final_image(&options, &scene, &reference);

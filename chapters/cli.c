@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 const char *cli_program = "mcrt";
 
@@ -145,8 +146,21 @@ static void set_value(const FlagSpec *spec, const char *text, Options *o)
     }
 }
 
+/* Every line a program prints is part of its result ("wrote PATH", the tables), so a
+ * standard output that could not take them (a full disk, /dev/full) is a failure: found
+ * at exit, reported, and the exit status made 1. */
+static void check_standard_output(void)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "%s: cannot write to standard output: %s\n", cli_program,
+                strerror(errno ? errno : EIO));
+        _exit(1);
+    }
+}
+
 void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options)
 {
+    atexit(check_standard_output);
     const char *slash = argc > 0 ? strrchr(argv[0], '/') : NULL;
     if (argc > 0)
         cli_program = slash ? slash + 1 : argv[0];

@@ -107,8 +107,10 @@ static void read_scene_bytes(const char *path)
         cli_fail(2, "%s:0: larger than %u MiB: not a scene file", path, EXPERIMENT_SCENE_MAX >> 20);
 }
 
-void experiment_load_scene(const Options *options, LightNeed need, Scene *scene)
+void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
+                      Options *options, Scene *scene)
 {
+    cli_parse(argc, argv, info, options);
     check_output_directory(options);
     read_scene_bytes(options->scene);
     char error[4400];

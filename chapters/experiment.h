@@ -33,13 +33,14 @@
 
 typedef enum { NEEDS_POINT_LIGHT, NEEDS_AREA_LIGHT } LightNeed;
 
-/* Check that --out can be written (before any time is spent rendering), then read
- * options->scene once (at most EXPERIMENT_SCENE_MAX bytes; a pipe or FIFO works) and
- * parse it, or exit with status 2 and the reader's message. Also an error: a scene
- * without the kind of light the chapter needs, or with a material this chapter does not
- * have yet. */
+/* Every chapter program's first lines: parse the command line (cli_parse), check that
+ * --out can be written (before any time is spent rendering), then read options->scene
+ * once (at most EXPERIMENT_SCENE_MAX bytes; a pipe or FIFO works) and parse it, or exit
+ * with status 2 and the reader's message. Also an error: a scene without the kind of
+ * light the chapter needs, or with a material this chapter does not have yet. */
 #define EXPERIMENT_SCENE_MAX (64u << 20)
-void experiment_load_scene(const Options *options, LightNeed need, Scene *scene);
+void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
+                      Options *options, Scene *scene);
 
 /* Width from --size, height from the image plane's aspect ratio, rounded (exit 2 if
  * the rounded image's aspect ratio is more than 1% off the plane's). */

@@ -1,4 +1,4 @@
-/* furnace.h (chapter 2): the closed boxes of the white-furnace tests (test_path.c,
+/* furnace.h (chapter 1): the closed boxes of the white-furnace tests (test_path.c,
  * test_glass_furnace.c; SPEC §7). Include after cmocka.h.
  *
  * In a closed box whose every surface sends out L = Le + rho L whatever arrives, the

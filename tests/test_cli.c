@@ -77,6 +77,52 @@ static void test_bad_flags(void **state)
     expect_failure("--quiet=1", "--quiet takes no value");
 }
 
+/* A flag's value may not be the next flag: "--out --help" would otherwise make a
+ * directory called --help, and "--scene --quiet" start a full render. A value that does
+ * begin with "--" can still be given after '='. */
+static void test_flag_value_is_not_a_flag(void **state)
+{
+    (void)state;
+    expect_failure("--out --help", "--out: missing value (got the option '--help'");
+    expect_failure("--scene --quiet", "--scene: missing value (got the option '--quiet'");
+    expect_failure("--size --quick", "--size: missing value");
+}
+
+/* --out is checked before anything is rendered: a path through a file is an error that
+ * names the flag (exit 2), found before the render (nothing else printed). */
+static void test_out_checked_first(void **state)
+{
+    (void)state;
+    char path[600], args[800], output[4096];
+    snprintf(path, sizeof path, "%s/a_file", out_dir);
+    FILE *file = fopen(path, "w");
+    assert_non_null(file);
+    fclose(file);
+    snprintf(args, sizeof args, "--out %s/figures", path);
+    assert_int_equal(run(args, output, sizeof output), 2);
+    assert_non_null(strstr(output, "--out"));
+    assert_non_null(strstr(output, "Not a directory"));
+    assert_null(strstr(output, "wrote"));
+}
+
+/* A standard output that cannot be written (the "wrote" lines and the table are the
+ * program's result) is a failure: exit 1 and a message, not exit 0. */
+static void test_standard_output_full(void **state)
+{
+    (void)state;
+    char command[1200], message[512];
+    snprintf(command, sizeof command, "%s --quiet --size 8 --out %s/full 2>&1 >/dev/full",
+             program, out_dir);
+    FILE *pipe = popen(command, "r");
+    assert_non_null(pipe);
+    size_t n = fread(message, 1, sizeof message - 1, pipe);
+    message[n] = '\0';
+    int status = pclose(pipe);
+    assert_true(WIFEXITED(status));
+    assert_int_equal(WEXITSTATUS(status), 1);
+    assert_non_null(strstr(message, "cannot write to standard output"));
+}
+
 /* Write `text` as a scene file in the temporary directory; returns its path. */
 static const char *scene_file(const char *text)
 {
@@ -180,6 +226,9 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bad_flags),
+        cmocka_unit_test(test_flag_value_is_not_a_flag),
+        cmocka_unit_test(test_out_checked_first),
+        cmocka_unit_test(test_standard_output_full),
         cmocka_unit_test(test_bad_scenes),
         cmocka_unit_test(test_aspect_ratio_mismatch),
         cmocka_unit_test(test_help_and_a_good_run),
