@@ -1,7 +1,7 @@
 /* material.h (chapter 1): what a surface does with light, as the scene file declares it (SPEC §4).
  *
- * Introduced in chapter 1; each kind's physics lives in its own file: lambert.c
- * (eq. 8), oren_nayar.c (eqs. 13-14), mirror.c, snell.c and the Fresnel files
+ * Introduced in chapter 1; each kind's physics lives in its own file: lambert.h
+ * (eq. 8), oren_nayar.h (eqs. 13-14), mirror.h, snell.h, schlick.h and fresnel.h
  * (eqs. 2-7). A material is plain data so the scene can be a flat array of them.
  */
 #ifndef MATERIAL_H
