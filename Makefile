@@ -85,8 +85,29 @@ endef
 CHAPTERS := $(foreach n,1 2 3 4 5 6 7,$(if $(wildcard chapters/ch0$(n)_*.c),$(n)))
 $(foreach n,$(CHAPTERS),$(eval $(call CHAPTER_RULE,$(n))))
 
-figures:
-	@for n in $(CHAPTERS); do $(MAKE) --no-print-directory chapter$$n || exit 1; done
+# The gallery (chapters/gallery.c): $(FIGURES)/index.html, one page with every chapter's
+# figures, tables and plots. `make figures` records its run in $(FIGURES)/run.txt (start,
+# end, seconds, threads, QUICK) and writes the page at the end; `make gallery` rewrites the
+# page from the files there, without rendering; `make browser-test` opens it in headless
+# Chromium. DIFFS: the folder with the diff-chapterN.txt (or .diff) files to show.
+DIFFS   ?= $(FIGURES)
+GALLERY := $(BUILD)/gallery
+.PHONY: gallery browser-test
+all: $(GALLERY)
+$(GALLERY): chapters/gallery.c $(LIBRARY)
+	$(CC) $(ALL_CFLAGS) $< $(LIBRARY) $(LDFLAGS) $(LIBS) -o $@
+gallery: $(GALLERY)
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
+figures: $(GALLERY)
+	@mkdir -p $(FIGURES); start=$$(date +%s); started=$$(date '+%Y-%m-%d %H:%M:%S %z'); \
+	for n in $(CHAPTERS); do $(MAKE) --no-print-directory chapter$$n || exit 1; done; \
+	printf 'started=%s\nfinished=%s\nseconds=%s\nthreads=%s\nquick=%s\n' "$$started" \
+	    "$$(date '+%Y-%m-%d %H:%M:%S %z')" "$$(($$(date +%s) - start))" "$$(nproc)" \
+	    "$(if $(QUICK),1,0)" > $(FIGURES)/run.txt.tmp && mv $(FIGURES)/run.txt.tmp $(FIGURES)/run.txt
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
+browser-test: $(GALLERY)
+	sh tests/browser_gallery.sh $(FIGURES)
+-include $(GALLERY).d
 
 sanitize:
 	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize \
