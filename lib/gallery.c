@@ -302,13 +302,15 @@ static const char STYLE[] =
     "h2{border-top:2px solid #bbb;padding-top:.6em;margin-top:2.2em}"
     ".quick{background:#fff3c4;border:1px solid #d9a400;padding:.4em .8em}"
     ".missing{background:#fde8e8;border:1px solid #d88;padding:.4em .8em}"
-    "figure{margin:1em 0}img{max-width:100%;height:auto;border:1px solid #ccc}"
+    "figure{display:inline-block;vertical-align:top;margin:.5em 1.5em .8em 0}"
+    "img{max-width:100%;height:auto;border:1px solid #ccc}"
     "figcaption,.file{font-size:90%;color:#555}.scroll{overflow-x:auto}"
     "table{border-collapse:collapse;font-size:85%;margin:.3em 0 1em}"
     "th,td{border:1px solid #ccc;padding:.15em .45em;white-space:nowrap}th{background:#eee}"
     ".n{text-align:right;font-variant-numeric:tabular-nums}"
     "pre{background:#f5f5f5;padding:.5em;overflow-x:auto}"
-    ".add{color:#060}.del{color:#a00}.hunk{color:#05a}nav ol{columns:2}";
+    ".add{color:#060}.del{color:#a00}.hunk{color:#05a}nav ol{columns:2}"
+    ".files{padding:0}.files li{display:inline-block;margin:0 1.2em .2em 0}";
 
 /* The number of the chapter's files, chNN_*. */
 static int chapter_file_count(const Writer *w, const char *prefix)
@@ -337,8 +339,8 @@ static void write_header(Writer *w)
           "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>",
           out);
     html_text(out, page->title);
-    fprintf(out, "%s</title>\n<style>%s</style>\n</head>\n<body>\n<h1>", w->run.quick ? " (QUICK)" : "",
-            STYLE);
+    fprintf(out, "%s</title>\n<style>%s</style>\n</head>\n<body>\n<h1>",
+            w->run.quick ? " (QUICK)" : "", STYLE);
     html_text(out, page->title);
     fprintf(out, "%s</h1>\n", w->run.quick ? " <span class=\"quick\">QUICK</span>" : "");
     if (w->run.quick)
@@ -349,7 +351,8 @@ static void write_header(Writer *w)
               out);
     fprintf(out, "<p>Page made %s.", made);
     if (w->run.present) {
-        fprintf(out, " From the run of <code>make figures%s</code>", w->run.quick ? " QUICK=1" : "");
+        fprintf(out, " From the run of <code>make figures%s</code>",
+                w->run.quick ? " QUICK=1" : "");
         if (w->run.started[0]) {
             fputs(" started ", out);
             html_text(out, w->run.started);
@@ -369,7 +372,7 @@ static void write_header(Writer *w)
         if (w->run.threads[0]) {
             fputs(", on ", out);
             html_text(out, w->run.threads);
-            fputs(" threads (one per core)", out);
+            fputs(" threads (one per core, the chapters' default)", out);
         }
         fputs(".", out);
     } else {
@@ -606,7 +609,8 @@ static int write_kind(Writer *w, const GalleryChapter *chapter, FileKind kind,
         if (strncmp(name, prefix, strlen(prefix)) != 0 || kind_of(w, chapter, name) != kind)
             continue;
         if (shown++ == 0)
-            fprintf(w->out, "<h3>%s</h3>\n%s", heading, kind == FILE_OTHER ? "<ul>\n" : "");
+            fprintf(w->out, "<h3>%s</h3>\n%s", heading,
+                    kind == FILE_OTHER ? "<ul class=\"files\">\n" : "");
         if (kind == FILE_FIGURE || kind == FILE_PLOT) {
             write_image(w, name);
         } else if (kind == FILE_TABLE) {
