@@ -258,7 +258,8 @@ static int table_cells(const char *page, const char *csv, int columns, char cell
         assert_true(rows < max_rows);
         const char *row_end = strstr(row, "</tr>");
         int column = 0;
-        for (const char *cell = strstr(row, "<t"); cell && cell < row_end; cell = strstr(cell + 1, "<t")) {
+        for (const char *cell = strstr(row, "<t"); cell && cell < row_end;
+             cell = strstr(cell + 1, "<t")) {
             if (cell[2] != 'd' && cell[2] != 'h')
                 continue;
             assert_true(column < columns);
