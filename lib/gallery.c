@@ -141,14 +141,15 @@ static int list_files(const char *dir, Names *names)
         errno = ENOMEM;
         return -1;
     }
-    qsort(names->names, (size_t)names->count, sizeof *names->names, compare_names);
+    if (names->count > 0)
+        qsort(names->names, (size_t)names->count, sizeof *names->names, compare_names);
     return 0;
 }
 
 static int has_file(const Writer *w, const char *name)
 {
-    return bsearch(&name, w->files.names, (size_t)w->files.count, sizeof *w->files.names,
-                   compare_names) != NULL;
+    return w->files.count > 0 && bsearch(&name, w->files.names, (size_t)w->files.count,
+                                         sizeof *w->files.names, compare_names) != NULL;
 }
 
 /* Width and height of a PNG, from its IHDR chunk (bytes 16-23, big-endian); 0 when the

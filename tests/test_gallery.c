@@ -305,7 +305,7 @@ static const char *section(const char *page, int n, const char **end)
     const char *start = strstr(page, id);
     if (!start)
         fail_msg("no section for chapter %d", n);
-    *end = strstr(start + 1, "<section");
+    *end = start ? strstr(start + 1, "<section") : NULL;
     if (!*end)
         *end = start + strlen(start);
     return start;
