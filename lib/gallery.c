@@ -299,7 +299,7 @@ static int read_run(Writer *w)
 }
 
 static const char STYLE[] =
-    "body{font:15px/1.45 sans-serif;margin:0 auto;max-width:76em;padding:0 1em 3em;color:#222}"
+    "body{font:15px/1.45 sans-serif;margin:0 auto;max-width:84em;padding:0 1em 3em;color:#222}"
     "h2{border-top:2px solid #bbb;padding-top:.6em;margin-top:2.2em}"
     ".quick{background:#fff3c4;border:1px solid #d9a400;padding:.4em .8em}"
     ".missing{background:#fde8e8;border:1px solid #d88;padding:.4em .8em}"

@@ -39,7 +39,8 @@ work_url=$(url "$work")
 browse() {
     timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
         --disable-background-networking --disable-component-update --disable-sync \
-        --user-data-dir="$profile" --allow-file-access-from-files --hide-scrollbars \
+        --disable-dev-shm-usage --user-data-dir="$profile" --allow-file-access-from-files \
+        --hide-scrollbars \
         --enable-logging=stderr --v=0 "$@"
 }
 
