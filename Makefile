@@ -9,6 +9,8 @@
 #   make sanitize         the tests under AddressSanitizer and UndefinedBehaviorSanitizer
 #   make fuzz             run the libFuzzer targets (FUZZ_SECONDS each)
 #   make bench            the speed benchmark (a benchmark, not a test)
+#   make gallery          rewrite build/figures/index.html from the figures there
+#   make browser-test     open that page in headless Chromium and check every image loads
 #   make clean
 #
 # Chapters are snapshots of one source tree (SPEC §1). The first line of every file in
@@ -130,7 +132,7 @@ $(REFERENCE_BIN): $(BUILD)/chapter$(FINAL)/chapters/reference.o $(REFERENCE_OBJS
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 
 CHAPTER_BINS := $(foreach n,$(CHAPTERS),$(call program_of,$(n)))
-all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(CHAPTER_TESTS) $(FINAL_TESTS)
+all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) $(CHAPTER_TESTS) $(FINAL_TESTS)
 
 # The clean source of every chapter compiles on its own, with no chapter markers left.
 check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
@@ -155,10 +157,31 @@ test: all check-sources
 	echo "programs: $$passed passed, $$failed failed"; \
 	[ $$failed -eq 0 ]
 
-figures:
-	@start=$$(date +%s); \
+# The gallery (chapters/gallery.c): $(FIGURES)/index.html, one page with every chapter's
+# figures, tables, plots and diff. `make figures` records its run in $(FIGURES)/run.txt
+# (start, end, seconds, threads, QUICK), writes each chapter's diff and then the page;
+# `make gallery` rewrites the page from the files there, without rendering;
+# `make browser-test` opens it in headless Chromium. DIFFS: the folder with the
+# diff-chapterN.diff files to show.
+DIFFS   ?= $(BUILD)
+GALLERY := $(BUILD)/gallery
+.PHONY: gallery browser-test
+$(GALLERY): $(BUILD)/chapter$(FINAL)/chapters/gallery.o $(BUILD)/chapter$(FINAL)/libmc.a
+	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
+gallery: $(GALLERY)
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
+figures: $(GALLERY)
+	@mkdir -p $(FIGURES); start=$$(date +%s); started=$$(date '+%Y-%m-%d %H:%M:%S %z'); \
 	for n in $(CHAPTERS); do $(MAKE) --no-print-directory chapter$$n || exit 1; done; \
-	echo "make figures: $$(( $$(date +%s) - start )) s"
+	seconds=$$(($$(date +%s) - start)); \
+	printf 'started=%s\nfinished=%s\nseconds=%s\nthreads=%s\nquick=%s\n' "$$started" \
+	    "$$(date '+%Y-%m-%d %H:%M:%S %z')" "$$seconds" "$$(nproc)" \
+	    "$(if $(QUICK),1,0)" > $(FIGURES)/run.txt.tmp && mv $(FIGURES)/run.txt.tmp $(FIGURES)/run.txt; \
+	echo "make figures: $$seconds s"
+	@for n in $(CHAPTERS); do $(MAKE) --no-print-directory diff-chapter$$n > /dev/null || exit 1; done
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
+browser-test: $(GALLERY)
+	sh tests/browser_gallery.sh $(FIGURES)
 
 sanitize:
 	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize \
