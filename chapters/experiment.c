@@ -358,8 +358,10 @@ void experiment_path_reference(const Options *options, const Scene *scene,
             cli_fail(1, "cannot create the reference cache %s: %s", failed, strerror(errno));
         fflush(stdout);
         render_install_interrupt();
+        if (render_interrupted())
+            cli_fail(130, "interrupted: stopped before rendering the reference");
         int status = run_reference_program(argv);
-        if (status == 130 || status == 128 + SIGINT || render_interrupted())
+        if (status == 130 || status == 128 + SIGINT)
             cli_fail(130, "interrupted while rendering the reference; nothing was cached");
         if (status != 0)
             cli_fail(status == 2 ? 2 : 1, "the reference program failed (exit status %d)", status);

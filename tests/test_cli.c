@@ -214,6 +214,72 @@ static void test_help_and_a_good_run(void **state)
     assert_int_equal(files, 4); /* PNG, PFM, figure, CSV */
 }
 
+#if CHAPTER >= 2
+/* Run chapter 2 on a tiny image with `scene_command` (a shell command) in front; returns
+ * its exit status and its output in `output`. */
+static int run_chapter2(const char *scene_command, const char *scene, char *output, size_t size)
+{
+    const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
+    char command[2048];
+    snprintf(command, sizeof command,
+             "%s timeout 60 %s/ch02_monte_carlo --quiet --size 16 --spp 1 --reference-spp 2 "
+             "--scene %s --out %s/ch02 2>&1", scene_command, directory, scene, out_dir);
+    FILE *pipe = popen(command, "r");
+    assert_non_null(pipe);
+    size_t n = fread(output, 1, size - 1, pipe);
+    output[n] = '\0';
+    int status = pclose(pipe);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/* The room with a comment that makes its bytes unlike any other run's. */
+static const char *unique_room(const char *name, int variant)
+{
+    static char path[600];
+    snprintf(path, sizeof path, "%s/%s.scene", out_dir, name);
+    char command[1400];
+    snprintf(command, sizeof command, "(echo '# %s %d %ld'; cat scenes/room.scene) > %s", out_dir,
+             variant, (long)getpid(), path);
+    assert_int_equal(system(command), 0);
+    return path;
+}
+
+/* A scene read through a pipe is read once, and its reference is named by the bytes that
+ * were read: a second, different scene through the same /dev/stdin gets a reference of
+ * its own (it is rendered, not found in the cache), and the first one's bytes again find
+ * theirs. */
+static void test_piped_scenes_have_their_own_references(void **state)
+{
+    (void)state;
+    char output[16384], command[700];
+    const char *first = unique_room("first", 1);
+    snprintf(command, sizeof command, "cat %s |", first);
+    assert_int_equal(run_chapter2(command, "/dev/stdin", output, sizeof output), 0);
+    assert_non_null(strstr(output, "spp, rendered in"));
+    const char *second = unique_room("second", 2);
+    snprintf(command, sizeof command, "cat %s |", second);
+    assert_int_equal(run_chapter2(command, "/dev/stdin", output, sizeof output), 0);
+    assert_non_null(strstr(output, "spp, rendered in"));
+    snprintf(command, sizeof command, "cat %s |", first);
+    assert_int_equal(run_chapter2(command, "/dev/stdin", output, sizeof output), 0);
+    assert_non_null(strstr(output, "spp, cached"));
+}
+
+/* A FIFO can be read only once: the program must not wait to read it again. */
+static void test_scene_from_a_fifo(void **state)
+{
+    (void)state;
+    char fifo[600], command[1400], output[16384];
+    snprintf(fifo, sizeof fifo, "%s/scene.fifo", out_dir);
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    snprintf(command, sizeof command, "(cat %s > %s &) ;", unique_room("fifo", 3), fifo);
+    int status = run_chapter2(command, fifo, output, sizeof output);
+    if (status != 0)
+        fail_msg("status %d:\n%s", status, output);
+    assert_non_null(strstr(output, "wrote "));
+}
+#endif
+
 int main(void)
 {
     const char *directory = getenv("CHAPTER_DIR");
@@ -232,6 +298,10 @@ int main(void)
         cmocka_unit_test(test_bad_scenes),
         cmocka_unit_test(test_aspect_ratio_mismatch),
         cmocka_unit_test(test_help_and_a_good_run),
+#if CHAPTER >= 2
+        cmocka_unit_test(test_piped_scenes_have_their_own_references),
+        cmocka_unit_test(test_scene_from_a_fifo),
+#endif
     };
     int failed = cmocka_run_group_tests(tests, NULL, NULL);
     char command[600];
