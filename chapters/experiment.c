@@ -228,8 +228,9 @@ TableRow experiment_row(const char *panel, const char *settings, const RenderRes
     row.seconds = result->seconds;
     row.threads = result->threads;
     row.rays = result->rays;
-    row.rmse = row.rel_mse = row.efficiency = NAN;
+    row.rmse = row.rel_mse = row.efficiency = row.rmse_spread = row.reference_share = NAN;
     row.nonfinite = result->nonfinite;
+    row.runs = 1;
     return row;
 }
 

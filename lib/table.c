@@ -41,9 +41,11 @@ void table_print(FILE *out, const TableRow *rows, int count)
 {
     int panel_width, settings_width;
     text_widths(rows, count, &panel_width, &settings_width);
-    fprintf(out, "%-*s %-*s %7s %8s %3s %10s %10s %10s %7s %10s %10s %10s %5s\n", panel_width,
-            "panel", settings_width, "settings", "spp", "seconds", "thr", "camera", "bounce",
-            "shadow", "Mray/s", "rmse", "rel_mse", "efficiency", "nan");
+    fprintf(out, "%-*s %-*s %7s %8s %3s %10s %10s %10s %7s %10s %9s %10s %10s %5s %4s %7s %5s\n",
+            panel_width, "panel", settings_width, "settings", "spp", "seconds", "thr",
+            "camera", "bounce", "shadow", "Mray/s", "rmse", "+-sd", "rel_mse", "efficiency",
+            "ref%", "runs", "var", "nan");
+    int marked = 0;
     for (int i = 0; i < count; i++) {
         const TableRow *r = &rows[i];
         fprintf(out, "%-*s %-*s %7.1f %8.2f %3d %10llu %10llu %10llu %7.2f", panel_width,
@@ -51,10 +53,22 @@ void table_print(FILE *out, const TableRow *rows, int count)
                 (unsigned long long)r->rays.camera, (unsigned long long)r->rays.bounce,
                 (unsigned long long)r->rays.shadow, table_mrays_per_second(r));
         print_measure(out, " %10.5f", r->rmse);
+        if (isnan(r->rmse_spread))
+            fprintf(out, " %9s", "-");
+        else
+            fprintf(out, " +-%7.5f", r->rmse_spread);
         print_measure(out, " %10.3e", r->rel_mse);
         print_measure(out, " %10.3g", r->efficiency);
-        fprintf(out, " %5llu\n", r->nonfinite);
+        if (isnan(r->reference_share))
+            fprintf(out, " %5s", "-");
+        else
+            fprintf(out, " %4.0f%%", 100.0 * r->reference_share);
+        fprintf(out, " %4d %7s %5llu\n", r->runs > 1 ? r->runs : 1,
+                r->infinite_variance ? "inf-var" : "finite", r->nonfinite);
+        marked |= r->infinite_variance;
     }
+    if (marked)
+        fprintf(out, "%s\n", TABLE_INFINITE_VARIANCE_NOTE);
 }
 
 static void csv_measure(FILE *out, double value)
@@ -84,7 +98,8 @@ int table_write_csv(const char *path, const TableRow *rows, int count)
     if (atomic_open(&file, path) != 0)
         return -1;
     fprintf(file.file, "panel,settings,spp,seconds,threads,camera_rays,bounce_rays,shadow_rays,"
-                       "mrays_per_second,rmse,rel_mse,efficiency,nonfinite\n");
+                       "mrays_per_second,rmse,rel_mse,efficiency,nonfinite,runs,rmse_sd,"
+                       "reference_share,variance\n");
     for (int i = 0; i < count; i++) {
         const TableRow *r = &rows[i];
         csv_text(file.file, r->panel);
@@ -96,7 +111,10 @@ int table_write_csv(const char *path, const TableRow *rows, int count)
         csv_measure(file.file, r->rmse);
         csv_measure(file.file, r->rel_mse);
         csv_measure(file.file, r->efficiency);
-        fprintf(file.file, ",%llu\n", r->nonfinite);
+        fprintf(file.file, ",%llu,%d", r->nonfinite, r->runs > 1 ? r->runs : 1);
+        csv_measure(file.file, r->rmse_spread);
+        csv_measure(file.file, r->reference_share);
+        fprintf(file.file, ",%s\n", r->infinite_variance ? "infinite" : "finite");
     }
     return atomic_close(&file, 0);
 }

@@ -32,7 +32,20 @@ typedef struct {
     RayCounts rays;
     double rmse, rel_mse, efficiency; /* NaN when not measured */
     unsigned long long nonfinite;
+    /* Measured over several independent runs (chapter 2 on): rmse and rel_mse are then
+     * the means over the runs, seconds the mean time of one run, and efficiency
+     * 1 / (mean rel_mse x mean seconds). */
+    int runs;                      /* 0 or 1: a single run */
+    double rmse_spread;            /* standard deviation of the runs' RMSE; NaN for one */
+    double reference_share;        /* of the raw MSE, what the reference's noise makes */
+    int infinite_variance;         /* the estimator's variance is infinite: its error
+                                      cannot be pinned down by any number of runs */
 } TableRow;
+
+/* Printed under a table that has a row marked infinite_variance. */
+#define TABLE_INFINITE_VARIANCE_NOTE                                                      \
+    "inf-var: roulette with alpha <= rho^2 has infinite variance (chapter 6): its error " \
+    "over runs does not settle, so it cannot be pinned down or ranked."
 
 void table_print(FILE *out, const TableRow *rows, int count);
 

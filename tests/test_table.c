@@ -21,7 +21,7 @@
 #include "check.h"
 #include "table.h"
 
-#define FIELDS 13
+#define FIELDS 17
 #define FIELD_SIZE 128
 
 /* Two rows as a chapter would make them: one measured against a reference, one not. */
@@ -30,10 +30,12 @@ static void sample_rows(TableRow rows[2])
     rows[0] = (TableRow){.panel = "Figure 11a", .settings = "64 spp, M=1 depth=5", .spp = 64,
                          .seconds = 1.5, .threads = 8, .rays = {1000000, 1500000, 500000},
                          .rmse = 0.0123, .rel_mse = 4.56e-3, .efficiency = 146.198830409,
-                         .nonfinite = 3};
+                         .nonfinite = 3, .runs = 5, .rmse_spread = 0.0021,
+                         .reference_share = 0.125, .infinite_variance = 1};
     rows[1] = (TableRow){.panel = "Figure 1", .settings = "1 ray/pixel, depth 5", .spp = 1,
                          .seconds = 0.25, .threads = 1, .rays = {40000, 10000, 30000},
-                         .rmse = NAN, .rel_mse = NAN, .efficiency = NAN};
+                         .rmse = NAN, .rel_mse = NAN, .efficiency = NAN,
+                         .rmse_spread = NAN, .reference_share = NAN};
 }
 
 /* Mrays/s is all rays (camera + bounce + shadow) per second, in millions: 3e6 rays in
@@ -146,7 +148,8 @@ static void test_csv_values(void **state)
     const char *header[FIELDS] = {"panel", "settings", "spp", "seconds", "threads",
                                   "camera_rays", "bounce_rays", "shadow_rays",
                                   "mrays_per_second", "rmse", "rel_mse", "efficiency",
-                                  "nonfinite"};
+                                  "nonfinite", "runs", "rmse_sd", "reference_share",
+                                  "variance"};
     for (int f = 0; f < FIELDS; f++)
         assert_string_equal(lines[0][f], header[f]);
     for (int i = 0; i < 2; i++) {
@@ -162,6 +165,16 @@ static void test_csv_values(void **state)
         assert_true(number(fields[7]) == (double)r->rays.shadow);
         assert_close(number(fields[8]), table_mrays_per_second(r), 1e-5);
         assert_true(number(fields[12]) == (double)r->nonfinite);
+        assert_true(number(fields[13]) == (r->runs > 1 ? r->runs : 1));
+        if (isnan(r->rmse_spread))
+            assert_string_equal(fields[14], "");
+        else
+            assert_close(number(fields[14]), r->rmse_spread, 1e-9);
+        if (isnan(r->reference_share))
+            assert_string_equal(fields[15], "");
+        else
+            assert_close(number(fields[15]), r->reference_share, 1e-9);
+        assert_string_equal(fields[16], r->infinite_variance ? "infinite" : "finite");
     }
     assert_close(number(lines[1][9]), 0.0123, 1e-12);
     assert_close(number(lines[1][10]), 4.56e-3, 1e-12);
@@ -252,26 +265,29 @@ static const char *word_from_end(const char *line, int n, char word[32])
 
 /* A header then one line per row, each starting with its panel and settings; the
  * numeric columns read the row's values in the documented formats; a row without a
- * reference shows "-" in each error column. */
+ * reference shows "-" in each error column; a row of infinite variance is marked, and
+ * the note saying why its error cannot be pinned down follows the table. */
 static void test_print_rows(void **state)
 {
     (void)state;
     TableRow rows[2];
     sample_rows(rows);
     Printed printed = print_rows(rows, 2);
-    assert_int_equal(printed.count, 3);
+    assert_int_equal(printed.count, 4);
+    assert_string_equal(printed.lines[3], TABLE_INFINITE_VARIANCE_NOTE);
     assert_true(strncmp(printed.lines[0], "panel", 5) == 0);
     assert_non_null(strstr(printed.lines[0], "efficiency"));
     for (int i = 0; i < 2; i++) {
         assert_true(strncmp(printed.lines[i + 1], rows[i].panel, strlen(rows[i].panel)) == 0);
         assert_non_null(strstr(printed.lines[i + 1], rows[i].settings));
     }
-    const char *measured[] = {"3", "146", "4.560e-03", "0.01230", "2.00", "500000",
-                              "1500000", "1000000", "8", "1.50", "64.0"};
-    const char *unmeasured[] = {"0", "-", "-", "-", "0.32", "30000", "10000", "40000", "1",
-                                "0.25", "1.0"};
+    const char *measured[] = {"3", "inf-var", "5", "12%", "146", "4.560e-03", "+-0.00210",
+                              "0.01230", "2.00", "500000", "1500000", "1000000", "8", "1.50",
+                              "64.0"};
+    const char *unmeasured[] = {"0", "finite", "1", "-", "-", "-", "-", "-", "0.32", "30000",
+                                "10000", "40000", "1", "0.25", "1.0"};
     char word[32];
-    for (int n = 0; n < 11; n++) {
+    for (int n = 0; n < 15; n++) {
         assert_string_equal(word_from_end(printed.lines[1], n, word), measured[n]);
         assert_string_equal(word_from_end(printed.lines[2], n, word), unmeasured[n]);
     }
@@ -286,6 +302,7 @@ static void test_print_long_names_keep_columns(void **state)
     (void)state;
     TableRow rows[3];
     sample_rows(rows);
+    rows[0].infinite_variance = 0; /* no note under the table: every line is a row */
     rows[2] = rows[0];
     memset(rows[2].panel, 'p', sizeof rows[2].panel - 1);
     rows[2].panel[sizeof rows[2].panel - 1] = '\0';
