@@ -139,13 +139,23 @@ void experiment_write_image(const Options *options, const char *name, const Imag
     announce(image_write_pfm(image, path), path);
 }
 
+static void load_font(Font *font)
+{
+    char error[4400];
+    if (font_load(font, FONT_PATH, error, sizeof error) != 0)
+        cli_fail(1, "%s", error);
+}
+
 void experiment_write_figure(const Options *options, const char *name, const Image *panels,
                              const char *const *captions, int count, double exposure)
 {
     char file_name[256], path[4400];
     snprintf(file_name, sizeof file_name, "%s.png", name);
     experiment_path(options, file_name, path, sizeof path);
-    announce(figure_write_png(path, panels, captions, count, exposure), path);
+    Font font;
+    load_font(&font);
+    announce(figure_write_png(path, &font, panels, captions, count, exposure), path);
+    font_free(&font);
 }
 
 void experiment_write_table(const Options *options, const char *name, const TableRow *rows,

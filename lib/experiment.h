@@ -67,7 +67,8 @@ TableRow experiment_path_row(const Options *options, const Scene *scene,
 void experiment_write_image(const Options *options, const char *name, const Image *image,
                             double exposure);
 
-/* Write the side-by-side figure NAME.png. */
+/* Write the side-by-side figure NAME.png. Without the figures' font (FONT_PATH), exit
+ * with status 1 and a message naming the Debian package that ships it. */
 void experiment_write_figure(const Options *options, const char *name, const Image *panels,
                              const char *const *captions, int count, double exposure);
 
