@@ -158,6 +158,17 @@ void experiment_write_figure(const Options *options, const char *name, const Ima
     font_free(&font);
 }
 
+Image experiment_plot(const Plot *plot, int width, int height)
+{
+    Font font;
+    load_font(&font);
+    Image image = plot_draw(plot, &font, width, height, NULL);
+    font_free(&font);
+    if (!image.pixels)
+        cli_fail(1, "out of memory for a %d x %d plot", width, height);
+    return image;
+}
+
 void experiment_write_table(const Options *options, const char *name, const TableRow *rows,
                             int count)
 {

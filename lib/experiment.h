@@ -13,6 +13,7 @@
 #include "cli.h"
 #include "measure.h"
 #include "path.h"
+#include "plot.h"
 #include "render.h"
 #include "table.h"
 
@@ -71,6 +72,10 @@ void experiment_write_image(const Options *options, const char *name, const Imag
  * with status 1 and a message naming the Debian package that ships it. */
 void experiment_write_figure(const Options *options, const char *name, const Image *panels,
                              const char *const *captions, int count, double exposure);
+
+/* The plot drawn on a width x height image (exit 1 without the font or memory); show
+ * it with experiment_write_figure. */
+Image experiment_plot(const Plot *plot, int width, int height);
 
 /* Print the table and write it as NAME.csv. */
 void experiment_write_table(const Options *options, const char *name, const TableRow *rows,
