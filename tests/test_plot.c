@@ -80,7 +80,8 @@ static PlotLayout log_layout_of(const double *x, const double *y, int count)
 /* Worked cases: x from 0.03 to 450 gives 0.02..500 and y from 0.002 to 0.5 stays
  * 0.002..0.5 (both ends are 1-2-5 values); one point at a 1-2-5 value gets a step
  * either way (5 gives 2..10, 0.5 gives 0.2..1); one point between gets the values
- * around it (3 gives 2..5); 1 to 100 is 1..100; no points give 1..10. */
+ * around it (3 gives 2..5); 1 to 100 is 1..100; no points give 1..10; the error
+ * bars' ends count. */
 static void test_log_range_by_hand(void **state)
 {
     (void)state;
@@ -97,6 +98,20 @@ static void test_log_range_by_hand(void **state)
     assert_range(&layout, 1, 100, 1, 100);
     layout = log_layout_of(NULL, NULL, 0);
     assert_range(&layout, 1, 10, 1, 10);
+
+    /* Error bars count: 0.3 with a bar from 0.04 to 3 needs 0.02..5; a bar end <= 0
+     * does not count. */
+    const double bar_low[] = {0.04}, bar_high[] = {3.0}, no_low[] = {-1.0};
+    PlotSeries series = {.x = three, .y = point_three, .y_low = bar_low, .y_high = bar_high,
+                         .count = 1, .colour = RED};
+    Plot plot = {LOG_AXIS, LOG_AXIS, &series, 1, 0};
+    Image image = draw(&plot, 300, 200, &layout);
+    assert_range(&layout, 2, 5, 0.02, 5);
+    image_free(&image);
+    series.y_low = no_low;
+    image = draw(&plot, 300, 200, &layout);
+    assert_range(&layout, 2, 5, 0.2, 5);
+    image_free(&image);
 }
 
 /* Is v one of ..., 0.1, 0.2, 0.5, 1, 2, 5, 10, ...? */
