@@ -10,6 +10,13 @@
 #include "figure.h"
 #include "scene_file.h"
 
+static void load_font(Font *font)
+{
+    char error[4400];
+    if (font_load(font, FONT_PATH, error, sizeof error) != 0)
+        cli_fail(1, "%s", error);
+}
+
 void experiment_load_scene(const Options *options, LightNeed need, Scene *scene)
 {
     char error[512];
@@ -21,6 +28,10 @@ void experiment_load_scene(const Options *options, LightNeed need, Scene *scene)
     if (need == NEEDS_AREA_LIGHT && scene->light_count == 0)
         cli_fail(2, "%s:%d: no area light (a 'light' material on a triangle, quad, box or "
                     "tetrahedron): %s needs one", scene->source, scene->line_count, cli_program);
+    /* The figures need the font: say so now rather than after the renders. */
+    Font font;
+    load_font(&font);
+    font_free(&font);
 }
 
 void experiment_image_size(const Options *options, const Scene *scene, int *width, int *height)
@@ -137,13 +148,6 @@ void experiment_write_image(const Options *options, const char *name, const Imag
     snprintf(file_name, sizeof file_name, "%s.pfm", name);
     experiment_path(options, file_name, path, sizeof path);
     announce(image_write_pfm(image, path), path);
-}
-
-static void load_font(Font *font)
-{
-    char error[4400];
-    if (font_load(font, FONT_PATH, error, sizeof error) != 0)
-        cli_fail(1, "%s", error);
 }
 
 void experiment_write_figure(const Options *options, const char *name, const Image *panels,

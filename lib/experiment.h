@@ -20,7 +20,8 @@
 typedef enum { NEEDS_POINT_LIGHT, NEEDS_AREA_LIGHT } LightNeed;
 
 /* Load options->scene, or exit with status 2 and the reader's message. Also an error:
- * a scene without the kind of light the chapter needs. */
+ * a scene without the kind of light the chapter needs. Without the figures' font,
+ * exit with status 1 (before any rendering) as experiment_write_figure does. */
 void experiment_load_scene(const Options *options, LightNeed need, Scene *scene);
 
 /* Width from --size, height from the image plane's aspect ratio, rounded (exit 2 if
