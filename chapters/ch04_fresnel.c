@@ -29,6 +29,7 @@
 #include "experiment.h"
 #include "fresnel.h"
 #include "path.h"
+#include "plot.h"
 #include "schlick.h"
 #include "snell.h"
 
@@ -134,55 +135,46 @@ static void fresnel_curve_table(const Options *options)
     printf("wrote %s\n", path);
 }
 
-/* Whether x in [0, length) is on one of the grid lines that split it into `divisions`. */
-static int on_grid(int x, int length, int divisions)
-{
-    return x * divisions % (length - 1) < divisions;
-}
-
-/* (a) The same curves as a line plot: x the incidence angle from 0 to 90 degrees, y the
- * reflectance from 0 to 1, grey grid lines every 15 degrees and every 0.25. Each curve
- * is sampled once per pixel column and joined by vertical runs, so the jump to total
- * internal reflection is drawn too. */
+/* (a) The same curves as a line plot (plot.h): x the incidence angle from 0 to 90
+ * degrees, y the reflectance from 0 to 1. Each curve is sampled every half degree and
+ * at the critical angle, so the kink where total internal reflection sets in is drawn
+ * sharp; Schlick's curves are dashed. */
 static Image fresnel_plot(void)
 {
-    enum { WIDTH = 800, HEIGHT = 400, MARGIN = 20 };
+    enum { STEPS = 180, POINTS = STEPS + 2 };
     const struct {
         FresnelMode mode;
         double n_i, n_t;
+        const char *label;
         Vec3 colour;
     } curves[] = {
-        {FRESNEL_EXACT, 1.0, GLASS_IOR, {0.8, 0.0, 0.0}},
-        {FRESNEL_SCHLICK, 1.0, GLASS_IOR, {1.0, 0.5, 0.0}},
-        {FRESNEL_EXACT, GLASS_IOR, 1.0, {0.0, 0.0, 0.9}},
-        {FRESNEL_SCHLICK, GLASS_IOR, 1.0, {0.0, 0.7, 0.8}},
+        {FRESNEL_EXACT, 1.0, GLASS_IOR, "exact, entering glass", {0.8, 0.0, 0.0}},
+        {FRESNEL_SCHLICK, 1.0, GLASS_IOR, "Schlick, entering glass", {1.0, 0.5, 0.0}},
+        {FRESNEL_EXACT, GLASS_IOR, 1.0, "exact, leaving glass", {0.0, 0.0, 0.9}},
+        {FRESNEL_SCHLICK, GLASS_IOR, 1.0, "Schlick, leaving glass", {0.0, 0.6, 0.8}},
     };
-    const int plot_width = WIDTH - 2 * MARGIN, plot_height = HEIGHT - 2 * MARGIN;
-    Image plot = new_image(WIDTH, HEIGHT);
-    for (int row = 0; row < HEIGHT; row++)
-        for (int col = 0; col < WIDTH; col++) {
-            int x = col - MARGIN, y = HEIGHT - 1 - MARGIN - row; /* y up from R = 0 */
-            int inside = x >= 0 && x < plot_width && y >= 0 && y < plot_height;
-            int axis = inside && (x == 0 || y == 0);
-            int grid = inside && (on_grid(x, plot_width, 6) || on_grid(y, plot_height, 4));
-            double grey = axis ? 0.0 : grid ? 0.6 : 1.0;
-            image_set(&plot, col, row, vec3(grey, grey, grey));
-        }
-    for (size_t c = 0; c < sizeof curves / sizeof curves[0]; c++) {
-        int previous = -1;
-        for (int x = 0; x < plot_width; x++) {
-            double angle = 0.5 * PI * x / (plot_width - 1);
-            double r = reflectance(curves[c].mode, cos(angle), curves[c].n_i, curves[c].n_t);
-            int y = (int)(r * (plot_height - 1) + 0.5);
-            int low = previous < 0 ? y : previous < y ? previous : y;
-            int high = previous > y ? previous : y;
-            for (int k = low; k <= high; k++)
-                for (int thick = 0; thick < 2; thick++)
-                    image_set(&plot, MARGIN + x, HEIGHT - 1 - MARGIN - k - thick, curves[c].colour);
-            previous = y;
-        }
+    enum { CURVES = sizeof curves / sizeof curves[0] };
+    double critical = snell_critical_angle(GLASS_IOR, 1.0) * 180.0 / PI;
+    double angles[POINTS], r[CURVES][POINTS];
+    int count = 0;
+    for (int i = 0; i <= STEPS; i++) {
+        double degrees = 90.0 * i / STEPS;
+        if (count > 0 && critical > angles[count - 1] && critical < degrees)
+            angles[count++] = critical;
+        angles[count++] = degrees;
     }
-    return plot;
+    PlotSeries series[CURVES];
+    for (int c = 0; c < CURVES; c++) {
+        for (int i = 0; i < count; i++)
+            r[c][i] = reflectance(curves[c].mode, cos(angles[i] * PI / 180.0), curves[c].n_i,
+                                  curves[c].n_t);
+        series[c] = (PlotSeries){.label = curves[c].label, .x = angles, .y = r[c], .count = count,
+                                 .colour = curves[c].colour, .dashed = curves[c].mode == FRESNEL_SCHLICK};
+    }
+    Plot plot = {{"angle of incidence (degrees)", PLOT_LINEAR, 0.0, 90.0, 15.0},
+                 {"reflectance R", PLOT_LINEAR, 0.0, 1.0, 0.25}, series, CURVES, 0.0};
+    Image image = experiment_plot(&plot, 800, 450);
+    return image;
 }
 
 static volatile double timing_sink; /* keeps the timed calls from being optimised away */
@@ -273,11 +265,8 @@ int main(int argc, char **argv)
     fresnel_curve_table(&options);
     Image plot = fresnel_plot();
     const char *plot_caption[] = {
-        "glass reflectance R, n = 1.5\n"
-        "x: angle 0-90, grid every 15 deg\n"
-        "y: R 0-1, grid every 0.25\n"
-        "in: exact red, Schlick orange\n"
-        "out: exact blue, Schlick cyan"};
+        "glass reflectance R (n = 1.5) against the angle of incidence:\n"
+        "exact Fresnel (solid) and Schlick's approximation (dashed)"};
     experiment_write_figure(&options, "ch04_fresnel_curve", &plot, plot_caption, 1, 1.0);
     image_free(&plot);
 

@@ -111,6 +111,19 @@ static void table1(const Options *options, const Scene *scene, const Reference *
     }
 }
 
+/* The largest rho^2 of the scene's diffuse surfaces (their brightest channel):
+ * roulette with alpha below it has infinite variance (chapter 6). */
+static double brightest_rho_squared(const Scene *scene)
+{
+    double most = 0.0;
+    for (int i = 0; i < scene->material_count; i++)
+        if (material_is_diffuse(&scene->materials[i])) {
+            double rho = vec3_max_component(scene->materials[i].reflectance);
+            most = rho * rho > most ? rho * rho : most;
+        }
+    return most;
+}
+
 /* Error against time as the samples double, for each estimator; CSV and plot. */
 static void convergence(const Options *options, const Scene *scene)
 {
@@ -121,7 +134,8 @@ static void convergence(const Options *options, const Scene *scene)
     double seconds[ESTIMATOR_COUNT][CONVERGENCE_STEPS], rmse[ESTIMATOR_COUNT][CONVERGENCE_STEPS];
     TableRow rows[ESTIMATOR_COUNT * CONVERGENCE_STEPS];
     PlotSeries series[ESTIMATOR_COUNT + 1];
-    char legend[512] = "";
+    char labels[ESTIMATOR_COUNT][48];
+    double rho_squared = brightest_rho_squared(scene);
     for (int e = 0; e < ESTIMATOR_COUNT; e++) {
         for (int step = 0; step < CONVERGENCE_STEPS; step++) {
             char name[64];
@@ -132,10 +146,13 @@ static void convergence(const Options *options, const Scene *scene)
             seconds[e][step] = row->seconds;
             rmse[e][step] = row->rmse;
         }
-        series[e] = (PlotSeries){seconds[e], rmse[e], CONVERGENCE_STEPS, ESTIMATORS[e].colour};
-        size_t used = strlen(legend);
-        snprintf(legend + used, sizeof legend - used, "%s: M=%d rr=%g\n", ESTIMATORS[e].colour_name,
-                 ESTIMATORS[e].shadow_rays, ESTIMATORS[e].rr);
+        snprintf(labels[e], sizeof labels[e], "M=%d, rr=%g", ESTIMATORS[e].shadow_rays,
+                 ESTIMATORS[e].rr);
+        /* One run per point so far: its error bar is the point itself. */
+        series[e] = (PlotSeries){.label = labels[e], .x = seconds[e], .y = rmse[e],
+                                 .y_low = rmse[e], .y_high = rmse[e], .count = CONVERGENCE_STEPS,
+                                 .colour = ESTIMATORS[e].colour, .markers = 1,
+                                 .infinite_variance = ESTIMATORS[e].rr < rho_squared};
     }
     printf("\nconvergence at %d pixels wide, 1 to %d spp:\n", small.size, 1 << (CONVERGENCE_STEPS - 1));
     experiment_write_table(options, "ch07_convergence", rows, ESTIMATOR_COUNT * CONVERGENCE_STEPS);
@@ -146,19 +163,18 @@ static void convergence(const Options *options, const Scene *scene)
     const int last = ESTIMATOR_COUNT - 1, final_step = CONVERGENCE_STEPS - 1;
     double guide_x[2] = {seconds[last][0], seconds[last][final_step]};
     double guide_y[2] = {2.0 * rmse[last][0], 2.0 * rmse[last][0] * sqrt(guide_x[0] / guide_x[1])};
-    series[ESTIMATOR_COUNT] = (PlotSeries){guide_x, guide_y, 2, vec3(0.45, 0.45, 0.45)};
-    int decades[4];
-    Image plot = plot_log_log(series, ESTIMATOR_COUNT + 1, 600, 400, decades);
-    if (!plot.pixels)
-        cli_fail(1, "out of memory drawing the plot");
-    char caption[768];
+    series[ESTIMATOR_COUNT] = (PlotSeries){.label = "slope -1/2", .x = guide_x, .y = guide_y,
+                                           .count = 2, .colour = {0.45, 0.45, 0.45}, .dashed = 1};
+    Plot plot = {{"time (s)", PLOT_LOG, 0.0, 0.0, 0.0}, {"RMSE", PLOT_LOG, 0.0, 0.0, 0.0},
+                 series, ESTIMATOR_COUNT + 1, 0.0};
+    Image image = experiment_plot(&plot, 720, 480);
+    char caption[256];
     snprintf(caption, sizeof caption,
-             "RMSE against time, log-log, 1 to %d spp\nx: 1e%d to 1e%d s, y: 1e%d to 1e%d,"
-             " a grey line per decade\n%sdark grey: slope -1/2",
-             1 << (CONVERGENCE_STEPS - 1), decades[0], decades[1], decades[2], decades[3], legend);
+             "RMSE against render time as the samples double, 1 to %d spp, %d pixels wide",
+             1 << (CONVERGENCE_STEPS - 1), small.size);
     const char *captions[] = {caption};
-    experiment_write_figure(options, "ch07_convergence", &plot, captions, 1, 1.0);
-    image_free(&plot);
+    experiment_write_figure(options, "ch07_convergence", &image, captions, 1, 1.0);
+    image_free(&image);
     measure_reference_free(&reference);
 }
 

@@ -21,6 +21,13 @@
 static char *scene_text;
 static size_t scene_length;
 
+static void load_font(Font *font)
+{
+    char error[4400];
+    if (font_load(font, FONT_PATH, error, sizeof error) != 0)
+        cli_fail(1, "%s", error);
+}
+
 /* mkdir -p; returns 0, or -1 with errno set and the failing directory in `failed`. */
 static int make_directories(const char *path, char *failed, size_t size)
 {
@@ -122,6 +129,10 @@ void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed 
     if (need == NEEDS_AREA_LIGHT && scene->light_count == 0)
         cli_fail(2, "%s:%d: no area light (a 'light' material on a triangle, quad, box or "
                     "tetrahedron): %s needs one", scene->source, scene->line_count, cli_program);
+    /* The figures need the font: say so now rather than after the renders. */
+    Font font;
+    load_font(&font);
+    font_free(&font);
 #if CHAPTER < 5
     for (int i = 0; i < scene->material_count; i++)
         if (scene->materials[i].kind == MATERIAL_OREN_NAYAR)
@@ -206,8 +217,24 @@ void experiment_write_figure(const Options *options, const char *name, const Ima
     char file_name[256], path[4400];
     snprintf(file_name, sizeof file_name, "%s.png", name);
     experiment_path(options, file_name, path, sizeof path);
-    announce(figure_write_png(path, panels, captions, count, exposure), path);
+    Font font;
+    load_font(&font);
+    announce(figure_write_png(path, &font, panels, captions, count, exposure), path);
+    font_free(&font);
 }
+
+#if CHAPTER >= 4
+Image experiment_plot(const Plot *plot, int width, int height)
+{
+    Font font;
+    load_font(&font);
+    Image image = plot_draw(plot, &font, width, height, NULL);
+    font_free(&font);
+    if (!image.pixels)
+        cli_fail(1, "out of memory for a %d x %d plot", width, height);
+    return image;
+}
+#endif
 
 void experiment_write_table(const Options *options, const char *name, const TableRow *rows,
                             int count)

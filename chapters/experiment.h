@@ -30,6 +30,9 @@
 #include "measure.h"
 #include "path.h"
 #endif
+#if CHAPTER >= 4
+#include "plot.h"
+#endif
 
 typedef enum { NEEDS_POINT_LIGHT, NEEDS_AREA_LIGHT } LightNeed;
 
@@ -37,7 +40,9 @@ typedef enum { NEEDS_POINT_LIGHT, NEEDS_AREA_LIGHT } LightNeed;
  * --out can be written (before any time is spent rendering), then read options->scene
  * once (at most EXPERIMENT_SCENE_MAX bytes; a pipe or FIFO works) and parse it, or exit
  * with status 2 and the reader's message. Also an error: a scene without the kind of
- * light the chapter needs, or with a material this chapter does not have yet. */
+ * light the chapter needs, or with a material this chapter does not have yet. Without
+ * the figures' font, exit with status 1 (before any rendering), as
+ * experiment_write_figure would. */
 #define EXPERIMENT_SCENE_MAX (64u << 20)
 void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
                       Options *options, Scene *scene);
@@ -65,7 +70,8 @@ void experiment_path(const Options *options, const char *file_name, char *path, 
 void experiment_write_image(const Options *options, const char *name, const Image *image,
                             double exposure);
 
-/* Write the side-by-side figure NAME.png. */
+/* Write the side-by-side figure NAME.png. Without the figures' font (FONT_PATH), exit
+ * with status 1 and a message naming the Debian package that ships it. */
 void experiment_write_figure(const Options *options, const char *name, const Image *panels,
                              const char *const *captions, int count, double exposure);
 
@@ -79,6 +85,12 @@ TableRow experiment_row(const char *panel, const char *settings, const RenderRes
 /* After a render was interrupted (SIGINT): say what was saved and exit with status 130.
  * `saved` names what was written of it, or is NULL when nothing was. */
 void experiment_exit_if_interrupted(const RenderResult *result, const char *saved);
+
+#if CHAPTER >= 4
+/* The plot drawn on a width x height image (exit 1 without the font or memory); show
+ * it with experiment_write_figure. */
+Image experiment_plot(const Plot *plot, int width, int height);
+#endif
 
 #if CHAPTER >= 2
 /* The reference for the image that the path tracer with settings `path` estimates (its

@@ -2,30 +2,33 @@
  *
  * Introduced in chapter 1. Panels of equal size stand in one row with a gap between
  * them; under each, its caption (the panel's settings, possibly several lines
- * separated by '\n') is drawn in white on dark grey with the stb_easy_font bitmap font,
- * scaled up with the panel so it stays readable. Panels are tone mapped as in image.h.
+ * separated by '\n') is drawn in light text on dark grey with an anti-aliased TrueType
+ * font (font.h), its size growing with the panel so that it stays readable when the
+ * figure is shown whole on a projector. Panels are tone mapped as in image.h.
  *
  * Layout, for n panels of W x H pixels:
- *   - text scale s = sqrt(W / 50) rounded, clamped to [1, 4] (2 for 200 pixels, 3 for
- *     400, 4 from 613 up): each unit of the font (letters are about 5 x 7 units, lines
- *     12 units apart) is an s x s square of pixels;
- *   - the gap between panels is 4 s pixels, so the figure is n W + (n - 1) 4 s wide;
- *   - each caption line is centred under its panel and kept s pixels from its sides:
+ *   - text size s = W / 50 pixels per em, rounded, clamped to [12, 24] (12 up to 624
+ *     pixels, 16 at 800, 24 from 1175 up);
+ *   - the gap between panels, and the margin m around each caption, are s / 2 pixels
+ *     (integer division), so the figure is n W + (n - 1) (s / 2) wide;
+ *   - each caption line is centred under its panel and kept m pixels from its sides:
  *     a line too long is wrapped at spaces (runs of spaces become one); if a word alone
- *     is too long, s goes down for all captions, and at s = 1 such words break;
- *   - the caption band under the panels is s' (12 L + 4) pixels high, where s' is the
- *     final text scale and L (at least 1) the most lines of any caption, so the figure
- *     is H + s' (12 L + 4) high. Text is never drawn outside its panel's columns.
- * Characters other than printable ASCII and '\n' are drawn as '?'. A NULL caption is
- * an empty one.
+ *     is too long, the size goes down a pixel at a time for all captions, to 8 at the
+ *     least, and at 8 such words break between characters;
+ *   - lines are p = ceil(font_line_height) pixels apart at the final size, and the
+ *     caption band under the panels is L p + 2 m high, where L (at least 1) is the most
+ *     lines of any caption; the figure is H + L p + 2 m high. Text is never drawn
+ *     outside its panel's columns.
+ * A NULL caption is an empty one. Characters are drawn as font.h says.
  */
 #ifndef FIGURE_H
 #define FIGURE_H
 
+#include "font.h"
 #include "image.h"
 
 /* Write the figure as a PNG (whole or not at all). Returns 0, or -1 with errno set. */
-int figure_write_png(const char *path, const Image *panels, const char *const *captions,
-                     int panel_count, double exposure);
+int figure_write_png(const char *path, const Font *font, const Image *panels,
+                     const char *const *captions, int panel_count, double exposure);
 
 #endif

@@ -1,10 +1,10 @@
 /* test_figure.c (chapter 1): the side-by-side comparison figure (figure.h, chapter 1).
  *
  * Each figure is written, decoded again with stb_image, and checked against the layout
- * figure.h documents: its size for 1, 2 and 3 panels and for each text scale, panels
+ * figure.h documents: its size for 1, 2 and 3 panels and for each text size, panels
  * that are exactly the tone-mapped images, captions that are really drawn (lit pixels
- * in each band) and never outside their panel, wrapping and shrinking of long captions,
- * and refusal of panels that do not match.
+ * in each band), centred, growing with the panel and never outside their panel,
+ * wrapping and shrinking of long captions, and refusal of panels that do not match.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -13,6 +13,8 @@
 #include <cmocka.h>
 
 #include <errno.h>
+#include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,13 +23,16 @@
 
 #include <stb_image.h>
 
+#include "check.h"
 #include "figure.h"
+#include "font_fixture.h"
 
 static char figure_dir[64], figure_path[128];
 
 static int make_dir(void **state)
 {
-    (void)state;
+    if (load_font(state) != 0)
+        return -1;
     strcpy(figure_dir, "/tmp/test_figure_XXXXXX");
     if (!mkdtemp(figure_dir))
         return -1;
@@ -37,7 +42,7 @@ static int make_dir(void **state)
 
 static int remove_dir(void **state)
 {
-    (void)state;
+    free_font(state);
     remove(figure_path);
     return rmdir(figure_dir);
 }
@@ -67,7 +72,7 @@ static Decoded figure_of(int count, int width, int height, const char *const *ca
             for (int col = 0; col < width; col++)
                 image_set(&panels[i], col, row, panel_radiance(i, col, row, width, height));
     }
-    assert_int_equal(figure_write_png(figure_path, panels, captions, count, exposure), 0);
+    assert_int_equal(figure_write_png(figure_path, &font, panels, captions, count, exposure), 0);
     for (int i = 0; i < count; i++)
         image_free(&panels[i]);
     Decoded figure;
@@ -99,29 +104,44 @@ static int lit_in(const Decoded *figure, int top, int left, int right)
     return count;
 }
 
-/* The documented size: n W + (n - 1) 4 s wide, H + s (12 L + 4) high, with s =
- * sqrt(W / 50) rounded and clamped to [1, 4]; here for 1, 2 and 3 panels at each scale
- * (and either side of where it changes), for captions of one and two lines (short
- * enough never to wrap). */
+/* The layout's numbers as figure.h gives them, for panels `width` wide: the nominal
+ * text size, the gap and margin, and the line pitch at text size `size`. */
+static int nominal_size(int width)
+{
+    int size = (int)lround(width / 50.0);
+    return size < 12 ? 12 : size > 24 ? 24 : size;
+}
+
+static int pitch_at(int size)
+{
+    return (int)ceil(font_line_height(&font, size));
+}
+
+/* The documented size: n W + (n - 1) (s / 2) wide, H + L p + 2 (s / 2) high, with
+ * s = W / 50 rounded and clamped to [12, 24]; here for 1, 2 and 3 panels at sizes either
+ * side of where s changes and where it is clamped, for captions of one and two lines
+ * (short enough never to wrap). Worked by hand: s is 12 up to 624, 13 from 625, 16 at
+ * 800, 24 from 1175 up. */
 static void test_dimensions(void **state)
 {
     (void)state;
     const struct {
-        int width, scale;
-    } sizes[] = {{64, 1}, {112, 1}, {113, 2}, {200, 2}, {312, 2}, {313, 3},
-                 {400, 3}, {612, 3}, {613, 4}, {800, 4}, {1200, 4}};
+        int width, size;
+    } sizes[] = {{64, 12}, {200, 12}, {624, 12}, {625, 13}, {800, 16}, {1174, 23},
+                 {1175, 24}, {1600, 24}};
     const char *one_line[] = {"a", "b", "c"}, *two_lines[] = {"a\nb", "c", "d"};
-    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++)
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
+        assert_int_equal(nominal_size(sizes[s].width), sizes[s].size);
         for (int count = 1; count <= 3; count++)
             for (int lines = 1; lines <= 2; lines++) {
                 Decoded figure = figure_of(count, sizes[s].width, 10,
                                            lines == 1 ? one_line : two_lines, 1.0);
-                int scale = sizes[s].scale;
-                assert_int_equal(figure.width,
-                                 count * sizes[s].width + (count - 1) * 4 * scale);
-                assert_int_equal(figure.height, 10 + scale * (12 * lines + 4));
+                int size = sizes[s].size, half = size / 2;
+                assert_int_equal(figure.width, count * sizes[s].width + (count - 1) * half);
+                assert_int_equal(figure.height, 10 + lines * pitch_at(size) + 2 * half);
                 stbi_image_free(figure.rgb);
             }
+    }
 }
 
 /* Every pixel of every panel is the tone map (with the figure's exposure) of that
@@ -135,7 +155,7 @@ static void test_panels_are_tone_mapped(void **state)
     for (int i = 0; i < 3; i++)
         for (int row = 0; row < 150; row++)
             for (int col = 0; col < 200; col++) {
-                const unsigned char *p = pixel_at(&figure, i * (200 + 8) + col, row);
+                const unsigned char *p = pixel_at(&figure, i * (200 + 6) + col, row);
                 Vec3 radiance = panel_radiance(i, col, row, 200, 150);
                 assert_int_equal(p[0], image_tonemap((float)radiance.x, exposure));
                 assert_int_equal(p[1], image_tonemap((float)radiance.y, exposure));
@@ -144,31 +164,91 @@ static void test_panels_are_tone_mapped(void **state)
     stbi_image_free(figure.rgb);
 }
 
-/* Each caption band holds text (lit pixels) inside its own panel's columns, kept s
- * pixels from the sides; the gaps between panels and the band around the text are dark.
- * The realistic captions of a chapter figure are used. */
+/* The lit columns and rows of the band under panel i: their bounding box. */
+typedef struct {
+    int count, left, right, top, bottom; /* inclusive */
+} Ink;
+
+static Ink ink_under(const Decoded *figure, int top, int left, int right)
+{
+    Ink ink = {0, INT_MAX, -1, INT_MAX, -1};
+    for (int y = top; y < figure->height; y++)
+        for (int x = left; x < right; x++)
+            if (lit(figure, x, y)) {
+                ink.count++;
+                ink.left = x < ink.left ? x : ink.left;
+                ink.right = x > ink.right ? x : ink.right;
+                ink.top = y < ink.top ? y : ink.top;
+                ink.bottom = y > ink.bottom ? y : ink.bottom;
+            }
+    return ink;
+}
+
+/* Each caption band holds text (lit pixels) inside its own panel's columns, kept the
+ * margin (6 pixels at size 12) from the sides (a pixel of slack for glyphs that reach
+ * past their advance), centred under its panel; the gaps between panels and the band's
+ * top margin are dark. The realistic captions of a chapter figure are used. */
 static void test_captions_are_drawn_in_their_band(void **state)
 {
     (void)state;
     const char *captions[] = {"1 spp, sub-pixels\n0.21 s, RMSE 0.031",
                               "4 spp, random\n0.83 s, RMSE 0.016", ""};
     Decoded figure = figure_of(3, 200, 100, captions, 1.0);
-    const int scale = 2, gap = 8;
+    const int margin = 6, gap = 6;
     for (int i = 0; i < 3; i++) {
         int left = i * (200 + gap);
-        int inside = lit_in(&figure, 100, left + scale, left + 200 - scale);
-        assert_int_equal(lit_in(&figure, 100, left, left + 200), inside);
-        if (i < 2)
-            assert_true(inside > 200); /* some 30 letters of several 2 x 2 squares each */
-        else
-            assert_int_equal(inside, 0); /* an empty caption draws nothing */
+        Ink ink = ink_under(&figure, 100, left, left + 200);
+        if (i < 2) {
+            assert_true(ink.count > 150); /* some 30 letters */
+            assert_true(ink.left >= left + margin - 1 && ink.right <= left + 200 - margin);
+            assert_close(0.5 * (ink.left + ink.right), left + 100, 3.0);
+            assert_true(ink.top >= 100 + margin);   /* two lines below the margin */
+            assert_true(ink.bottom - ink.top > pitch_at(12));
+        } else {
+            assert_int_equal(ink.count, 0); /* an empty caption draws nothing */
+        }
         if (i > 0)
             assert_int_equal(lit_in(&figure, 0, left - gap, left), 0);
     }
-    /* The band's first rows (the padding above the text) are the dark background. */
+    /* The band's first rows (the margin above the text) are the dark background. */
     const unsigned char *corner = pixel_at(&figure, 0, 100);
     assert_true(corner[0] < 64 && corner[1] < 64 && corner[2] < 64);
     stbi_image_free(figure.rgb);
+}
+
+/* Anti-aliased text: the band holds grey levels between the background and the text,
+ * not only the two. */
+static void test_captions_are_anti_aliased(void **state)
+{
+    (void)state;
+    const char *captions[] = {"Figure 9, right: 4 spp, RMSE 0.4017"};
+    Decoded figure = figure_of(1, 400, 20, captions, 1.0);
+    int levels[256] = {0}, distinct = 0;
+    for (int y = 20; y < figure.height; y++)
+        for (int x = 0; x < figure.width; x++)
+            levels[pixel_at(&figure, x, y)[0]]++;
+    for (int v = 64; v < 224; v++)
+        distinct += levels[v] > 0;
+    assert_true(distinct > 40);
+    stbi_image_free(figure.rgb);
+}
+
+/* The text grows with the panel: the ink of one line of capitals is taller under an
+ * 800-pixel panel (16 pixels per em, capitals about 12 high) than under a 200-pixel
+ * one (12 per em, about 9). */
+static void test_text_grows_with_the_panel(void **state)
+{
+    (void)state;
+    const char *captions[] = {"EHT"};
+    Decoded small = figure_of(1, 200, 10, captions, 1.0);
+    Decoded large = figure_of(1, 800, 10, captions, 1.0);
+    Ink small_ink = ink_under(&small, 10, 0, 200), large_ink = ink_under(&large, 10, 0, 800);
+    int small_height = small_ink.bottom - small_ink.top + 1;
+    int large_height = large_ink.bottom - large_ink.top + 1;
+    assert_true(small_height >= 8 && small_height <= 10);
+    assert_true(large_height >= 11 && large_height <= 13);
+    stbi_image_free(small.rgb);
+    stbi_image_free(large.rgb);
 }
 
 /* Long captions on two 200 x 50 panels: lit pixels of the first band inside its panel,
@@ -177,56 +257,84 @@ static int band_of_long_caption(const char *caption)
 {
     const char *captions[] = {caption, "b"};
     Decoded figure = figure_of(2, 200, 50, captions, 1.0);
-    assert_int_equal(figure.width, 2 * 200 + 8); /* the gap keeps the nominal scale */
-    assert_true(lit_in(&figure, 50, 1, 199) > 0);
-    assert_int_equal(lit_in(&figure, 50, 200, 208), 0);
+    assert_int_equal(figure.width, 2 * 200 + 6); /* the gap keeps the nominal size */
+    assert_true(lit_in(&figure, 50, 5, 195) > 0);
+    assert_int_equal(lit_in(&figure, 50, 0, 5), 0);
+    assert_int_equal(lit_in(&figure, 50, 195, 206), 0);
     stbi_image_free(figure.rgb);
     return figure.height - 50;
 }
 
-/* A caption too long for one line wraps at spaces and keeps its scale: the band is
- * 2 (12 L + 4) pixels high for several lines L. */
+/* The lines a greedy wrap at spaces gives `caption` (single spaces between words) in
+ * lines `width` pixels wide at `size`: a word goes on the line if it fits after a
+ * space. */
+static int lines_wrapped_at_spaces(const char *caption, double width, int size)
+{
+    int lines = 1;
+    double used = 0.0, space = font_width(&font, " ", 1, size);
+    for (const char *p = caption; *p;) {
+        size_t length = strcspn(p, " ");
+        double word = font_width(&font, p, length, size);
+        if (used > 0.0 && used + space + word > width) {
+            lines++;
+            used = word;
+        } else {
+            used += (used > 0.0 ? space : 0.0) + word;
+        }
+        p += length + (p[length] == ' ');
+    }
+    return lines;
+}
+
+/* A caption too long for one line wraps at spaces, never inside a word, and keeps its
+ * size: the band is L p + 12 pixels high, L the lines of a wrap at spaces into lines of
+ * 200 - 2 * 6 pixels (4 here; breaking inside words would pack them into 3). */
 static void test_long_caption_wraps(void **state)
 {
     (void)state;
-    int band = band_of_long_caption("one two three four five six seven eight nine ten eleven");
-    assert_int_equal(band % 2, 0);
-    assert_int_equal((band / 2 - 4) % 12, 0);
-    assert_true((band / 2 - 4) / 12 >= 3);
+    const char *caption = "rendered_with_jitter shadow_rays_thirty russian_roulette_alpha "
+                          "seconds_and_error";
+    int lines = lines_wrapped_at_spaces(caption, 188, 12);
+    assert_int_equal(lines, 4);
+    int band = band_of_long_caption(caption);
+    assert_int_equal(band, lines * pitch_at(12) + 12);
 }
 
-/* A word too long for a line at scale 2 but not at scale 1 shrinks the text instead of
- * breaking the word: one line at scale 1, a band of 12 + 4 pixels. */
+/* A word too long for a line at size 12 but not at a smaller size shrinks the text
+ * instead of breaking the word: one line at a smaller size. */
 static void test_long_word_shrinks_text(void **state)
 {
     (void)state;
-    assert_int_equal(band_of_long_caption("supersampling_with_jitter"), 16);
+    int band = band_of_long_caption("supersampling_with_jittered_positions");
+    assert_true(band - 12 < pitch_at(12));
+    assert_true(band - 12 >= pitch_at(8));
 }
 
-/* On tiny panels even scale 1 is too wide for a word: it breaks between letters, over
- * several lines, and still stays inside its panel. Characters the font lacks (control
- * and non-ASCII bytes) and a NULL caption are drawn safely. */
+/* On tiny panels even size 8 is too wide for a word: it breaks between characters,
+ * over several lines, and still stays inside its panel. Characters the font lacks
+ * (control and non-ASCII bytes) and a NULL caption are drawn safely; a multi-byte
+ * character is never split. */
 static void test_tiny_panels_break_words(void **state)
 {
     (void)state;
-    const char *captions[] = {"unbreakable_word", "tab\there \x01\x7f\xff", NULL};
+    const char *captions[] = {"unbreakable_word", "tab\there \x01\x7f\xff \xce\xb1\xce\xb1\xce\xb1", NULL};
     Decoded figure = figure_of(3, 20, 20, captions, 1.0);
-    assert_int_equal(figure.width, 3 * 20 + 2 * 4);
-    assert_true(figure.height - 20 >= 12 * 4 + 4); /* 16 letters of ~6 px at <= 3 a line */
+    assert_int_equal(figure.width, 3 * 20 + 2 * 6);
+    assert_true(figure.height - 20 >= 4 * pitch_at(8) + 12); /* 16 letters, <= 3 a line */
     assert_true(lit_in(&figure, 20, 0, 20) > 0);
-    assert_true(lit_in(&figure, 20, 24, 44) > 0);
-    assert_int_equal(lit_in(&figure, 20, 20, 24), 0);
-    assert_int_equal(lit_in(&figure, 20, 44, 48), 0);
-    assert_int_equal(lit_in(&figure, 20, 48, 68), 0);
+    assert_true(lit_in(&figure, 20, 26, 46) > 0);
+    assert_int_equal(lit_in(&figure, 20, 20, 26), 0);
+    assert_int_equal(lit_in(&figure, 20, 46, 52), 0);
+    assert_int_equal(lit_in(&figure, 20, 52, 72), 0);
     stbi_image_free(figure.rgb);
 
     /* Panels 4 pixels wide are narrower than one letter: the letter is cut at the
-     * panel's edges, and the 4-pixel gaps stay dark. */
+     * panel's edges, and the gaps stay dark. */
     const char *wide_letters[] = {"MW", "MW"};
     figure = figure_of(2, 4, 4, wide_letters, 1.0);
     assert_true(lit_in(&figure, 4, 0, 4) > 0);
-    assert_int_equal(lit_in(&figure, 4, 4, 8), 0);
-    assert_true(lit_in(&figure, 4, 8, 12) > 0);
+    assert_int_equal(lit_in(&figure, 4, 4, 10), 0);
+    assert_true(lit_in(&figure, 4, 10, 14) > 0);
     stbi_image_free(figure.rgb);
 }
 
@@ -239,14 +347,14 @@ static void test_refuses_mismatched_panels(void **state)
     char path[160];
     snprintf(path, sizeof path, "%s/refused.png", figure_dir);
     errno = 0;
-    assert_int_equal(figure_write_png(path, panels, captions, 2, 1.0), -1);
+    assert_int_equal(figure_write_png(path, &font, panels, captions, 2, 1.0), -1);
     assert_int_equal(errno, EINVAL);
     errno = 0;
-    assert_int_equal(figure_write_png(path, panels, captions, 0, 1.0), -1);
+    assert_int_equal(figure_write_png(path, &font, panels, captions, 0, 1.0), -1);
     assert_int_equal(errno, EINVAL);
     image_free(&panels[1]);
     errno = 0;
-    assert_int_equal(figure_write_png(path, panels, captions, 2, 1.0), -1);
+    assert_int_equal(figure_write_png(path, &font, panels, captions, 2, 1.0), -1);
     assert_int_equal(errno, EINVAL);
     struct stat info;
     assert_int_equal(stat(path, &info), -1);
@@ -259,6 +367,8 @@ int main(void)
         cmocka_unit_test(test_dimensions),
         cmocka_unit_test(test_panels_are_tone_mapped),
         cmocka_unit_test(test_captions_are_drawn_in_their_band),
+        cmocka_unit_test(test_captions_are_anti_aliased),
+        cmocka_unit_test(test_text_grows_with_the_panel),
         cmocka_unit_test(test_long_caption_wraps),
         cmocka_unit_test(test_long_word_shrinks_text),
         cmocka_unit_test(test_tiny_panels_break_words),
