@@ -110,6 +110,7 @@ void experiment_reference(const Options *options, const Scene *scene, Estimator 
             cli_fail(130, "interrupted while rendering the reference; nothing was cached");
         *reference = (Reference){result.image, result.std_error, measure_rms(&result.std_error),
                                  render_samples_per_pixel(&result), result.seconds, 0};
+        image_free(&result.average_std_error);
         if (measure_save_reference(REFERENCE_DIRECTORY, key, reference) != 0)
             cli_fail(1, "cannot write the reference into %s: %s", REFERENCE_DIRECTORY,
                      strerror(errno));
@@ -224,6 +225,7 @@ TableRow experiment_path_row(const Options *options, const Scene *scene,
                          : experiment_measure(scene, &settings, path_radiance, path, name,
                                               settings_text, reference, &result);
     image_free(&result.std_error);
+    image_free(&result.average_std_error);
     if (image)
         *image = result.image;
     else
