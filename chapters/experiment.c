@@ -448,6 +448,7 @@ TableRow experiment_path_row(const Options *options, const Scene *scene,
                          : experiment_measure(scene, &settings, path_radiance, path, name,
                                               settings_text, reference, &result);
     image_free(&result.std_error);
+    image_free(&result.average_std_error);
     if (image)
         *image = result.image;
     else

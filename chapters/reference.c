@@ -129,6 +129,7 @@ int main(int argc, char **argv)
         fail(130, "%s", "interrupted; nothing was cached");
     Reference reference = {result.image, result.std_error, measure_rms(&result.std_error),
                            render_samples_per_pixel(&result), result.seconds, 0};
+    image_free(&result.average_std_error);
     uint64_t key = strtoull(request.key, NULL, 16);
     if (measure_save_reference(request.out, key, &reference) != 0)
         fail(1, "cannot write the reference into %s", request.out);

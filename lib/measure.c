@@ -1,9 +1,12 @@
-/* measure.c (chapter 2): error metrics and the reference cache. See measure.h. */
+/* measure.c (chapter 2): error metrics (corrected for the reference's noise), summaries of
+ * several runs, and the reference cache (the infinite-variance mark: chapter 6).
+ * See measure.h. */
 #include "measure.h"
 
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "atomic_file.h"
 
@@ -17,18 +20,48 @@ uint64_t measure_hash(uint64_t hash, const void *data, size_t size)
     return hash;
 }
 
-void measure_error(const Image *image, const Image *reference, double *rmse, double *rel_mse)
+static int same_size(const Image *a, const Image *b)
 {
+    return a->width == b->width && a->height == b->height;
+}
+
+int measure_error_estimate(const Image *image, const Image *reference,
+                           const Image *reference_std_error, ErrorEstimate *error)
+{
+    if (!same_size(image, reference) ||
+        (reference_std_error && !same_size(reference_std_error, reference))) {
+        *error = (ErrorEstimate){NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN};
+        return -1;
+    }
     long n = 3L * image->width * image->height;
-    double squared = 0.0, relative = 0.0;
+    double squared = 0.0, variance = 0.0, relative = 0.0, relative_variance = 0.0;
     for (long i = 0; i < n; i++) {
         double x = image->pixels[i], r = reference->pixels[i];
-        double e2 = (x - r) * (x - r);
-        squared += e2;
-        relative += e2 / (r * r + 0.01);
+        double se = reference_std_error ? reference_std_error->pixels[i] : 0.0;
+        double weight = 1.0 / (r * r + 0.01);
+        squared += (x - r) * (x - r);
+        variance += se * se;
+        relative += (x - r) * (x - r) * weight;
+        relative_variance += se * se * weight;
     }
-    *rmse = sqrt(squared / n);
-    *rel_mse = relative / n;
+    error->raw_mse = squared / n;
+    error->reference_mse = variance / n;
+    error->mse = error->raw_mse - error->reference_mse;
+    error->rmse = sqrt(fmax(error->mse, 0.0));
+    error->raw_rel_mse = relative / n;
+    error->reference_rel_mse = relative_variance / n;
+    error->rel_mse = error->raw_rel_mse - error->reference_rel_mse;
+    error->reference_share = squared > 0.0 ? variance / squared : 0.0;
+    return 0;
+}
+
+int measure_error(const Image *image, const Image *reference, double *rmse, double *rel_mse)
+{
+    ErrorEstimate error;
+    int status = measure_error_estimate(image, reference, NULL, &error);
+    *rmse = status == 0 ? sqrt(error.raw_mse) : NAN;
+    *rel_mse = error.raw_rel_mse;
+    return status;
 }
 
 double measure_rms(const Image *image)
@@ -40,24 +73,70 @@ double measure_rms(const Image *image)
     return sqrt(sum / n);
 }
 
-void measure_image_mean(const Image *image, const Image *std_error, double *mean,
+void measure_image_mean(const Image *image, const Image *average_std_error, double *mean,
                         double *mean_std_error)
 {
-    long n = 3L * image->width * image->height;
+    long pixels = (long)image->width * image->height;
     double sum = 0.0, variance = 0.0;
-    for (long i = 0; i < n; i++) {
-        sum += image->pixels[i];
-        variance += (double)std_error->pixels[i] * std_error->pixels[i];
+    for (long i = 0; i < pixels; i++) {
+        const float *x = image->pixels + 3 * i, *e = average_std_error->pixels + 3 * i;
+        double s = ((double)e[0] + e[1] + e[2]) / 3.0;
+        sum += ((double)x[0] + x[1] + x[2]) / 3.0;
+        variance += s * s;
     }
-    *mean = sum / n;
-    *mean_std_error = sqrt(variance) / n;
+    *mean = sum / pixels;
+    *mean_std_error = sqrt(variance) / pixels;
 }
 
 void measure_fill_row(TableRow *row, const Image *image, const Reference *reference)
 {
-    measure_error(image, &reference->image, &row->rmse, &row->rel_mse);
-    row->efficiency = 1.0 / (row->rel_mse * row->seconds);
+    ErrorEstimate error;
+    const Image *std_error = reference->std_error.pixels ? &reference->std_error : NULL;
+    measure_error_estimate(image, &reference->image, std_error, &error);
+    row->rmse = error.rmse;
+    row->rel_mse = error.rel_mse;
+    row->efficiency = error.rel_mse > 0.0 ? 1.0 / (error.rel_mse * row->seconds) : NAN;
 }
+
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int measure_summarise_runs(const double *values, int count, RunSummary *summary)
+{
+    *summary = (RunSummary){0, NAN, NAN, NAN, NAN, NAN, NAN};
+    double *sorted = count >= 1 ? malloc(sizeof *sorted * (size_t)count) : NULL;
+    if (!sorted)
+        return -1;
+    /* Welford's running mean and M2, as render.h does per pixel. */
+    double mean = 0.0, m2 = 0.0;
+    for (int i = 0; i < count; i++) {
+        double delta = values[i] - mean;
+        mean += delta / (i + 1);
+        m2 += delta * (values[i] - mean);
+        sorted[i] = values[i];
+    }
+    qsort(sorted, (size_t)count, sizeof *sorted, compare_doubles);
+    summary->runs = count;
+    summary->mean = mean;
+    summary->std_dev = count > 1 ? sqrt(m2 / (count - 1)) : 0.0;
+    summary->std_error = summary->std_dev / sqrt((double)count);
+    summary->median = count % 2 ? sorted[count / 2]
+                                : 0.5 * (sorted[count / 2 - 1] + sorted[count / 2]);
+    summary->min = sorted[0];
+    summary->max = sorted[count - 1];
+    free(sorted);
+    return 0;
+}
+
+#if CHAPTER >= 6
+int measure_roulette_variance_infinite(double alpha, double max_reflectance)
+{
+    return alpha < 1.0 && alpha <= max_reflectance * max_reflectance;
+}
+#endif
 
 static void reference_paths(const char *directory, uint64_t key, char *mean, char *error,
                             char *info, size_t size)

@@ -9,10 +9,11 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-/* What one pixel has received so far. */
+/* What one pixel has received so far: for the three channels and their mean (index 3),
+ * Welford's running mean and M2 (render.h). */
 typedef struct {
-    double sum[3];
-    double sum_squares[3];
+    double mean[4];
+    double m2[4];
     uint32_t finite;   /* samples averaged in */
 } PixelSum;
 
@@ -73,6 +74,18 @@ static void show_progress(Job *job)
             fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0);
 }
 
+/* Welford's update (render.h) with one finite sample. */
+static void accumulate(PixelSum *pixel, Vec3 radiance)
+{
+    double value[4] = {radiance.x, radiance.y, radiance.z, vec3_average(radiance)};
+    double n = ++pixel->finite;
+    for (int c = 0; c < 4; c++) {
+        double delta = value[c] - pixel->mean[c];
+        pixel->mean[c] += delta / n;
+        pixel->m2[c] += delta * (value[c] - pixel->mean[c]);
+    }
+}
+
 /* Take sample `pass` of every pixel in one row. */
 static void render_row(Worker *worker, int row)
 {
@@ -80,9 +93,14 @@ static void render_row(Worker *worker, int row)
     const RenderSettings *s = job->settings;
     for (int col = 0; col < s->width; col++) {
         uint64_t index = (uint64_t)row * s->width + col;
+        int first_stratum = 0;
+        if (s->sampling == PIXEL_SUBPIXELS) {
+            Rng pixel_rng = rng_for_sample(s->seed, index, RENDER_PIXEL_STREAM);
+            first_stratum = camera_first_stratum(&pixel_rng, s->spp);
+        }
         Rng rng = rng_for_sample(s->seed, index, (uint64_t)job->pass);
         double u, v;
-        camera_pixel_position(s->sampling, job->pass, s->spp, &rng, &u, &v);
+        camera_pixel_position(s->sampling, job->pass, s->spp, first_stratum, &rng, &u, &v);
         Ray ray = camera_ray(&job->scene->camera, s->width, s->height, col, row, u, v);
         worker->rays.camera++;
         Vec3 radiance = job->estimate(job->scene, ray, &rng, job->estimator_settings, &worker->rays);
@@ -91,13 +109,7 @@ static void render_row(Worker *worker, int row)
             worker->nonfinite++;
             continue;
         }
-        PixelSum *pixel = &job->pixels[index];
-        double value[3] = {radiance.x, radiance.y, radiance.z};
-        for (int c = 0; c < 3; c++) {
-            pixel->sum[c] += value[c];
-            pixel->sum_squares[c] += value[c] * value[c];
-        }
-        pixel->finite++;
+        accumulate(&job->pixels[index], radiance);
     }
 }
 
@@ -123,23 +135,18 @@ static void *work(void *argument)
     return NULL;
 }
 
-/* Mean and standard error of every pixel from its sums. */
+/* Mean and standard errors of every pixel from its Welford sums: sqrt(M2 / (n - 1) / n). */
 static void finish_images(const PixelSum *pixels, RenderResult *result)
 {
-    Image *mean = &result->image, *error = &result->std_error;
-    for (int row = 0; row < mean->height; row++) {
-        for (int col = 0; col < mean->width; col++) {
-            const PixelSum *p = &pixels[(long)row * mean->width + col];
-            double n = p->finite, m[3] = {0, 0, 0}, e[3] = {0, 0, 0};
-            for (int c = 0; c < 3 && n > 0; c++) {
-                m[c] = p->sum[c] / n;
-                if (n > 1) {
-                    double variance = (p->sum_squares[c] - n * m[c] * m[c]) / (n - 1);
-                    e[c] = sqrt(fmax(variance, 0.0) / n);
-                }
-            }
-            image_set(mean, col, row, vec3(m[0], m[1], m[2]));
-            image_set(error, col, row, vec3(e[0], e[1], e[2]));
+    for (int row = 0; row < result->image.height; row++) {
+        for (int col = 0; col < result->image.width; col++) {
+            const PixelSum *p = &pixels[(long)row * result->image.width + col];
+            double n = p->finite, e[4] = {0, 0, 0, 0};
+            for (int c = 0; c < 4 && n > 1; c++)
+                e[c] = sqrt(p->m2[c] / (n - 1) / n);
+            image_set(&result->image, col, row, vec3(p->mean[0], p->mean[1], p->mean[2]));
+            image_set(&result->std_error, col, row, vec3(e[0], e[1], e[2]));
+            image_set(&result->average_std_error, col, row, vec3(e[3], e[3], e[3]));
         }
     }
 }
@@ -153,10 +160,11 @@ int render(const Scene *scene, const RenderSettings *settings, Estimator estimat
         r.threads = settings->height;
     r.image = image_new(settings->width, settings->height);
     r.std_error = image_new(settings->width, settings->height);
+    r.average_std_error = image_new(settings->width, settings->height);
     PixelSum *pixels = calloc((size_t)settings->width * settings->height, sizeof *pixels);
     Worker *workers = calloc((size_t)r.threads, sizeof *workers);
     pthread_t *threads = calloc((size_t)r.threads, sizeof *threads);
-    if (!r.image.pixels || !r.std_error.pixels || !pixels || !workers || !threads) {
+    if (!r.image.pixels || !r.std_error.pixels || !r.average_std_error.pixels || !pixels || !workers || !threads) {
         free(pixels);
         free(workers);
         free(threads);
@@ -201,6 +209,7 @@ void render_result_free(RenderResult *result)
 {
     image_free(&result->image);
     image_free(&result->std_error);
+    image_free(&result->average_std_error);
 }
 
 double render_samples_per_pixel(const RenderResult *result)

@@ -9,13 +9,25 @@
  *     Vec3 estimate(const Scene *, Ray, Rng *, const void *settings, RayCounts *)
  *
  * Samples are taken in passes (pass s takes sample s of every pixel), each pass split
- * among the threads by rows. The sum for each pixel is always accumulated in sample
+ * among the threads by rows. Each pixel's samples are always accumulated in sample
  * order, so the image is bit-for-bit the same for any thread count. Per pixel we keep
- * the count of samples, their sum and their sum of squares, so that
+ * the count n of samples, their running mean and M2, their summed squared deviations
+ * from it, updated by Welford's method (Welford 1962; Knuth, TAOCP vol. 2, §4.2.2):
+ *     delta = x - mean,   mean += delta / n,   M2 += delta (x - mean),
+ * so that variance = M2 / (n - 1). (The textbook sum of squares, (sum x^2 - n mean^2) /
+ * (n - 1), subtracts two nearly equal large numbers: for a bright pixel of small spread
+ * it loses most of its digits, even to a negative variance.) Thus
  *   - a non-finite sample (NaN or infinity) is dropped and counted, never averaged in;
  *   - an interrupted render (SIGINT, see render_install_interrupt) stops after the rows
- *     in progress and is still normalised correctly, pixel by pixel;
- *   - the standard error of every pixel's mean is known (measure.h uses it).
+ *     in progress and is still normalised correctly, pixel by pixel (and unbiased for
+ *     sub-pixels too: camera.h visits each pixel's strata from a random start);
+ *   - the standard error of every pixel's mean is known, per channel and for the mean of
+ *     its three channels (R + G + B) / 3. The latter is kept from the samples' own
+ *     channel means, not from the three channels' errors, because the channels of one
+ *     sample are strongly correlated (one path carries all three): measure.h's image
+ *     mean needs it.
+ * A pixel's generator for placing its strata is rng_for_sample(seed, pixel,
+ * RENDER_PIXEL_STREAM), a stream no sample uses.
  */
 #ifndef RENDER_H
 #define RENDER_H
@@ -41,6 +53,8 @@ typedef struct {
 typedef struct {
     Image image;    /* per-pixel mean */
     Image std_error; /* per-pixel standard error of that mean, sqrt(var / n) */
+    Image average_std_error; /* grey: per pixel, in all three channels, the standard
+                                error of the mean of (R + G + B) / 3 */
     double seconds;
     int threads;
     RayCounts rays;
@@ -48,6 +62,9 @@ typedef struct {
     uint64_t nonfinite;  /* samples dropped for being NaN or infinite */
     int interrupted;     /* stopped early by SIGINT */
 } RenderResult;
+
+/* The sample number of each pixel's own generator (camera_first_stratum). */
+#define RENDER_PIXEL_STREAM UINT64_MAX
 
 /* Render. Returns 0, or -1 when memory runs out (nothing is then allocated). */
 int render(const Scene *scene, const RenderSettings *settings, Estimator estimate,

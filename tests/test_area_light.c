@@ -17,6 +17,10 @@
  *    A = a/h, B = b/h, so a Lambertian point there reflects L = rho Le F.
  *    The mean of many estimates must be within 4 standard errors of it, for M = 1 and
  *    M = 64 shadow rays; and M = 64 must have about 1/64 of the variance of M = 1.
+ *    The same light cut into three triangles of unequal areas must give the same
+ *    value: a triangle must be chosen by its area, not by its index.
+ * 3. One-sided lamps: a point behind the lamp gets nothing (and spends no shadow ray);
+ *    no point anywhere around it gets negative light.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -220,6 +224,71 @@ static void test_occlusion_and_facing(void **state)
     scene_free(&blocked);
 }
 
+/* A lamp emits from its front only (area_light.h). A point above the rectangle light,
+ * which faces down, with its normal facing down towards the lamp's back: every light
+ * sample has cos(beta) < 0 and must add nothing, without a shadow ray spent. Then a
+ * scatter of points all around the lamp (above, below, beside it, in its plane), with
+ * random normals: no estimate may ever be negative. Without the cos(beta) <= 0
+ * rejection the point behind the lamp receives -0.373, from 64 shadow rays (the planted
+ * bug). */
+static void test_nothing_behind_a_one_sided_lamp(void **state)
+{
+    (void)state;
+    Scene scene;
+    rectangle_light(&scene, 2.0, 1.0, 1.5, 0);
+    const Material *white = &scene.materials[1];
+    RayCounts counts = {0, 0, 0};
+    Rng rng = rng_for_sample(4, 4, 4);
+    Vec3 behind = area_light_direct(&scene, vec3(1.0, 0.5, 2.5), vec3(0, 0, -1), vec3(0, 0, -1),
+                                    white, 64, &rng, &counts);
+    print_message("    behind the lamp: %g, %llu shadow rays\n", behind.x,
+                  (unsigned long long)counts.shadow);
+    assert_true(behind.x == 0.0 && behind.y == 0.0 && behind.z == 0.0);
+    assert_true(counts.shadow == 0);
+    for (int i = 0; i < 20000; i++) {
+        Rng r = rng_for_sample(6, 0, (uint64_t)i);
+        Vec3 x = vec3(4.0 * rng_uniform(&r) - 1.0, 3.0 * rng_uniform(&r) - 1.0,
+                      3.0 * rng_uniform(&r));
+        double z = 2.0 * rng_uniform(&r) - 1.0, phi = 2.0 * PI * rng_uniform(&r);
+        Vec3 n = vec3(sqrt(1.0 - z * z) * cos(phi), sqrt(1.0 - z * z) * sin(phi), z);
+        Vec3 value = area_light_direct(&scene, x, n, n, white, 4, &r, &counts);
+        assert_true(value.x >= 0.0 && value.y >= 0.0 && value.z >= 0.0);
+    }
+    scene_free(&scene);
+}
+
+/* The closed form again, with the same a x b rectangle cut into three triangles of
+ * unequal areas ab/8, 3ab/8 and ab/2, fanned from the corner above the point. Each
+ * must be chosen with probability area / A for eq. 21's A/M weight to be right;
+ * choosing a triangle by its index (probability 1/3 each, the planted bug) gives
+ * 0.1403 +- 0.0002 against the closed form's 0.1224. M = 1, 200,000 estimates, within 4
+ * standard errors. */
+static void test_unequal_triangles_match_closed_form(void **state)
+{
+    (void)state;
+    const double a = 2.0, b = 1.0, h = 1.5;
+    Scene scene;
+    scene_init(&scene);
+    Material lamp = {"lamp", MATERIAL_LIGHT, vec3(0, 0, 0), vec3(2, 2, 2), 0.0, 1.0};
+    Material white = {"white", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
+    int light = scene_add_material(&scene, lamp);
+    scene_add_material(&scene, white);
+    Vec3 p0 = vec3(0, 0, h), p1 = vec3(0, b, h), q = vec3(a / 4, b, h), p2 = vec3(a, b, h),
+         p3 = vec3(a, 0, h);
+    scene_add_triangle(&scene, triangle_make(p0, p1, q, light)); /* all facing down */
+    scene_add_triangle(&scene, triangle_make(p0, q, p2, light));
+    scene_add_triangle(&scene, triangle_make(p0, p2, p3, light));
+    assert_int_equal(scene_prepare(&scene), 0);
+    assert_true(fabs(scene.triangles[0].area - a * b / 8) < 1e-12);
+    assert_true(fabs(scene.triangles[1].area - 3 * a * b / 8) < 1e-12);
+    double expected = 0.5 * 2.0 * configuration_factor(a, b, h), mean, variance;
+    direct_light_statistics(&scene, 1, 200000, &mean, &variance);
+    double error = sqrt(variance / 200000);
+    print_message("    expected %.6f; M=1: %.6f +- %.6f\n", expected, mean, error);
+    assert_true(fabs(mean - expected) < 4.0 * error);
+    scene_free(&scene);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -228,6 +297,8 @@ int main(void)
         cmocka_unit_test(test_sample_fields),
         cmocka_unit_test(test_direct_light_matches_closed_form),
         cmocka_unit_test(test_occlusion_and_facing),
+        cmocka_unit_test(test_nothing_behind_a_one_sided_lamp),
+        cmocka_unit_test(test_unequal_triangles_match_closed_form),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -2,7 +2,8 @@
  * (fresnel.h, chapter 4).
  *
  * Landmark values (normal and grazing incidence, Brewster's angle, the critical angle,
- * no interface), a value at 80 degrees against Schlick's approximation, and a sweep over
+ * no interface), a value at 80 degrees against Schlick's approximation, the unpolarised
+ * reflectance by hand at Brewster's angle, 45 and 30 degrees, and a sweep over
  * angles and indices in both directions: never NaN, always in [0, 1].
  */
 #include <stdarg.h>
@@ -107,6 +108,26 @@ static void test_brewster_angle(void **state)
     assert_true(fresnel_s(cos(entering), 1.0, GLASS) > 0.1);
 }
 
+/* The unpolarised reflectance is the mean of the two polarisations, checked by values
+ * worked out by hand rather than by 80 degrees alone. At Brewster's angle R_p = 0, so
+ * R = R_s / 2, and there sin(theta_i - theta_t) = (n^2 - 1) / (n^2 + 1) with theta_i +
+ * theta_t = 90 degrees: R = ((n^2 - 1) / (n^2 + 1))^2 / 2 = (1.25 / 3.25)^2 / 2 =
+ * 0.0739645 for glass, entering and leaving alike. At 45 degrees entering glass:
+ * cos_t = 0.881917, R_s = 0.0920134, R_p = 0.00846646, R = 0.0502399; at 30 degrees
+ * leaving it: cos_t = 0.661438, R = (0.105773 + 0.00460754) / 2 = 0.0551902. A Fresnel
+ * that returns R_s alone gives 0.148, 0.092 and 0.106 (the planted bug). */
+static void test_unpolarised_by_hand(void **state)
+{
+    (void)state;
+    double brewster = (GLASS * GLASS - 1.0) / (GLASS * GLASS + 1.0);
+    brewster = 0.5 * brewster * brewster;
+    assert_float_equal(brewster, 0.0739645, 1e-7);
+    assert_float_equal(fresnel_reflectance(cos(atan(GLASS)), 1.0, GLASS), brewster, 1e-12);
+    assert_float_equal(fresnel_reflectance(cos(atan(1.0 / GLASS)), GLASS, 1.0), brewster, 1e-12);
+    assert_float_equal(fresnel_reflectance(cos(45.0 * DEGREES), 1.0, GLASS), 0.0502399, 1e-7);
+    assert_float_equal(fresnel_reflectance(cos(30.0 * DEGREES), GLASS, 1.0), 0.0551902, 1e-7);
+}
+
 /* With the labels corrected (SPEC §8.3), R_s >= R_p at every angle entering glass: the
  * s-polarised wave is always reflected at least as strongly. */
 static void test_s_reflects_at_least_p(void **state)
@@ -158,6 +179,7 @@ int main(void)
         cmocka_unit_test(test_no_interface_reflects_nothing),
         cmocka_unit_test(test_grazing_reflects_everything),
         cmocka_unit_test(test_brewster_angle),
+        cmocka_unit_test(test_unpolarised_by_hand),
         cmocka_unit_test(test_s_reflects_at_least_p),
         cmocka_unit_test(test_sweep_finite_and_bounded),
     };

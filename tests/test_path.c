@@ -1,5 +1,6 @@
-/* test_path.c (chapter 2): Tests of the path tracer (lib/path.c, chapters 2, 3 and 6): the estimators are
- * unbiased, checked against closed forms.
+/* test_path.c (chapter 2): Tests of the path tracer (lib/path.c; chapters 2, 3, 4 and 6):
+ * the estimators are unbiased, checked against closed forms; a coloured mirror and glass
+ * seen from outside have exact or closed-form answers too.
  *
  * White furnace (SPEC §7; the boxes are in furnace.h): in a closed box whose every
  * surface is Lambertian with reflectance rho and emits Le, the radiance everywhere is
@@ -174,6 +175,114 @@ static void test_roulette_unbiased(void **state)
 }
 #endif
 
+/* A coloured mirror in a glowing box: furnace.h's uniform box with rho = 0 and Le = 1,
+ * and a mirror sphere of reflectance (0.9, 0.5, 0.2) in it. A ray that meets the mirror
+ * is reflected onto a wall, which adds Le weighted by the mirror's colour; the black
+ * wall then adds nothing more (and its shadow rays see rho = 0). So every ray aimed
+ * at the sphere returns exactly (0.9, 0.5, 0.2), with or without shadow rays, and every
+ * ray that misses it exactly 1. A path tracer that forgets the mirror's colour returns
+ * (1, 1, 1) for both: the room's only mirrors are white, so no other test sees it. */
+static void test_coloured_mirror(void **state)
+{
+    (void)state;
+    Scene scene;
+    furnace_box_uniform(&scene, 0.0, 1.0);
+    Material mirror = {"mirror", MATERIAL_MIRROR, vec3(0.9, 0.5, 0.2), vec3(0, 0, 0), 0.0, 1.0};
+    Vec3 centre = vec3(0.4, 0.1, -0.2);
+    assert_true(scene_add_sphere(&scene, (Sphere){centre, 0.3, scene_add_material(&scene, mirror)}) >= 0);
+    assert_int_equal(scene_prepare(&scene), 0);
+    RayCounts counts = {0, 0, 0};
+#if CHAPTER >= 3
+    const int shadow_ray_counts = 2; /* M = 0 and M = 1 */
+#else
+    const int shadow_ray_counts = 1;
+#endif
+    for (int m = 0; m < shadow_ray_counts; m++) {
+        PathSettings settings = {.max_depth = 10};
+#if CHAPTER >= 3
+        settings.shadow_rays = m;
+#endif
+        for (int i = 0; i < 1000; i++) {
+            Rng rng = rng_for_sample(21, (uint64_t)m, (uint64_t)i);
+            /* Aimed at a point inside the sphere (within 0.15 sqrt 3 = 0.26 of its centre):
+             * the ray meets its surface. */
+            Vec3 offset = vec3(rng_uniform(&rng) - 0.5, rng_uniform(&rng) - 0.5, rng_uniform(&rng) - 0.5);
+            Vec3 origin = vec3(-0.5, 0, 0), target = vec3_add_scaled(centre, offset, 0.3);
+            Ray ray = {origin, vec3_normalize(vec3_sub(target, origin))};
+            Vec3 hit = path_radiance(&scene, ray, &rng, &settings, &counts);
+            assert_true(fabs(hit.x - 0.9) < 1e-12 && fabs(hit.y - 0.5) < 1e-12 &&
+                        fabs(hit.z - 0.2) < 1e-12);
+            Vec3 away = path_radiance(&scene, (Ray){vec3(-0.5, 0, 0), vec3(-1, 0, 0)}, &rng,
+                                      &settings, &counts);
+            assert_true(away.x == 1.0 && away.y == 1.0 && away.z == 1.0);
+        }
+    }
+    scene_free(&scene);
+}
+
+/* Glass seen from outside, at normal incidence: a glass sphere (index 1.5) in a box of
+ * lamps, the wall behind the camera red (1, 0, 0), the other five blue (0, 0, 1). A ray
+ * along the sphere's axis meets both surfaces head on, where R = (0.5 / 2.5)^2 = 0.04
+ * (Schlick and exact agree there). Each time it reflects (probability R) it turns back;
+ * each time it refracts it goes on along the axis. It leaves towards the red wall after
+ * an odd number of reflections, so the red share is
+ *     R + (1 - R)^2 R (1 + R^2 + R^4 + ...) = 2 R / (1 + R) = 0.076923,
+ * and every sample is either red or blue, nothing lost. 200,000 samples, within 4
+ * standard errors (about 0.0024). Glass that refracts with probability R instead of
+ * 1 - R turns back 96% of the time at the first surface, and a ray that got in mostly
+ * stays trapped: red share 0.978 (the planted bug). (Until now only rays that start
+ * inside a sphere, test_glass_furnace.c, could tell.) */
+static void test_glass_from_outside_at_normal_incidence(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    Material red = {"red", MATERIAL_LIGHT, vec3(0, 0, 0), vec3(1, 0, 0), 0.0, 1.0};
+    Material blue = {"blue", MATERIAL_LIGHT, vec3(0, 0, 0), vec3(0, 0, 1), 0.0, 1.0};
+    Material glass = {"glass", MATERIAL_GLASS, vec3(0, 0, 0), vec3(0, 0, 0), 0.0, 1.5};
+    int red_index = scene_add_material(&scene, red), blue_index = scene_add_material(&scene, blue);
+    for (int axis = 0; axis < 3; axis++)
+        for (int side = -1; side <= 1; side += 2)
+            furnace_wall_piece(&scene, axis, side, -1.0, 1.0, -1.0, 1.0,
+                               axis == 0 && side < 0 ? red_index : blue_index);
+    assert_true(scene_add_sphere(&scene, (Sphere){vec3(0.3, 0, 0), 0.3,
+                                                  scene_add_material(&scene, glass)}) >= 0);
+    assert_int_equal(scene_prepare(&scene), 0);
+    const double r = 0.04, expected = 2.0 * r / (1.0 + r);
+#if CHAPTER >= 4
+    const FresnelMode modes[2] = {FRESNEL_SCHLICK, FRESNEL_EXACT};
+    const int mode_count = 2;
+#else
+    const int mode_count = 1; /* Schlick's, until chapter 4 */
+#endif
+    for (int k = 0; k < mode_count; k++) {
+        PathSettings settings = {.max_depth = 64};
+#if CHAPTER >= 4
+        settings.fresnel = modes[k];
+        const char *mode_name = modes[k] == FRESNEL_EXACT ? "exact" : "Schlick";
+#else
+        const char *mode_name = "Schlick";
+#endif
+        RayCounts counts = {0, 0, 0};
+        double red_share = 0.0;
+        int lost = 0;
+        for (int i = 0; i < SAMPLES; i++) {
+            Rng rng = rng_for_sample(31, (uint64_t)k, (uint64_t)i);
+            Vec3 radiance = path_radiance(&scene, (Ray){vec3(-0.5, 0, 0), vec3(1, 0, 0)}, &rng,
+                                          &settings, &counts);
+            lost += !(radiance.y == 0.0 && radiance.x + radiance.z == 1.0);
+            red_share += radiance.x / SAMPLES;
+        }
+        double std_error = sqrt(expected * (1.0 - expected) / SAMPLES);
+        print_message("    %s: red share %.5f, expected %.5f +- %.5f; %d samples neither red nor blue\n",
+                      mode_name, red_share, expected, std_error,
+                      lost);
+        assert_true(fabs(red_share - expected) < TOLERANCE_SIGMAS * std_error);
+        assert_int_equal(lost, 0);
+    }
+    scene_free(&scene);
+}
+
 #if CHAPTER >= 3
 /* Chapter 3's estimator (shadow rays) converges to chapter 2's (light found only by
  * hitting it) on the report's room, glass and mirrors included. The image is cut into
@@ -228,8 +337,8 @@ static void test_shadow_rays_agree_with_hitting_on_the_room(void **state)
             }
     double p = chi_square_p_value(sum_z2, n);
     double mean_a, error_a, mean_b, error_b;
-    measure_image_mean(&a.image, &a.std_error, &mean_a, &error_a);
-    measure_image_mean(&b.image, &b.std_error, &mean_b, &error_b);
+    measure_image_mean(&a.image, &a.average_std_error, &mean_a, &error_a);
+    measure_image_mean(&b.image, &b.average_std_error, &mean_b, &error_b);
     print_message("    image means: hitting %.5f +- %.5f, shadow rays %.5f +- %.5f\n", mean_a,
                   error_a, mean_b, error_b);
     print_message("    sum of z^2 = %.1f over %d block channels (p = %.3f), largest |z| %.2f\n",
@@ -246,6 +355,8 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_furnace_chapter2_truncated_series),
+        cmocka_unit_test(test_coloured_mirror),
+        cmocka_unit_test(test_glass_from_outside_at_normal_incidence),
 #if CHAPTER >= 3
         cmocka_unit_test(test_furnace_chapter3_shadow_rays),
         cmocka_unit_test(test_shadow_rays_agree_with_hitting_on_the_room),

@@ -5,7 +5,9 @@
  *   SPEC §9). Chapter 1 renders it with Whitted at random positions; from chapter 6 on,
  *   with the path tracer and every option it has.
  * - Estimates: with an estimator that returns a known value per sample, each pixel is
- *   the mean of its samples and its standard error is the textbook one.
+ *   the mean of its samples and its standard errors (per channel, and of the channel
+ *   mean) are the textbook ones, also for a bright pixel of small spread, where only a
+ *   numerically stable update (Welford's, chapter 1) keeps them.
  * - Non-finite samples (SPEC §7) are dropped and counted; the pixel is the mean of
  *   the others.
  * - An interrupted render (SIGINT) stops early, and every pixel is still the mean of
@@ -54,6 +56,8 @@ static void test_same_image_for_any_thread_count(void **state)
     for (int i = 1; i < 3; i++) {
         assert_memory_equal(results[0].image.pixels, results[i].image.pixels, bytes);
         assert_memory_equal(results[0].std_error.pixels, results[i].std_error.pixels, bytes);
+        assert_memory_equal(results[0].average_std_error.pixels,
+                            results[i].average_std_error.pixels, bytes);
         assert_true(results[0].rays.bounce == results[i].rays.bounce);
         assert_true(results[0].rays.shadow == results[i].rays.shadow);
     }
@@ -77,7 +81,10 @@ static Vec3 sample_number(const Scene *scene, Ray ray, Rng *rng, const void *set
     return vec3(u, 2.0 * u, 1.0);
 }
 
-/* Each pixel's value and standard error against the same samples drawn by hand. */
+/* Each pixel's value and standard errors against the same samples drawn by hand. The
+ * channel mean (u + 2u + 1) / 3 = u + 1/3 has the standard error of u itself, which the
+ * three channels' errors, taken as independent, would put at sqrt(1 + 4 + 0) / 3 =
+ * 0.75 of it. */
 static void test_pixel_is_mean_of_samples(void **state)
 {
     (void)state;
@@ -101,8 +108,62 @@ static void test_pixel_is_mean_of_samples(void **state)
         assert_true(fabs(value.x - mean) < 1e-6 && fabs(value.y - 2 * mean) < 1e-6);
         assert_true(value.z == 1.0f && error.z == 0.0f);
         assert_true(fabs(error.x - std_error) < 1e-6);
+        assert_true(fabs(error.y - 2 * std_error) < 1e-6);
+        Vec3 average_error = image_get(&result.average_std_error, pixel % 4, pixel / 4);
+        assert_true(fabs(average_error.x - std_error) < 1e-6);
+        assert_true(average_error.x == average_error.y && average_error.x == average_error.z);
     }
     assert_true(result.samples == 80 && result.nonfinite == 0 && !result.interrupted);
+    render_result_free(&result);
+}
+
+/* A bright pixel of small spread: 10^9 + u, with u the sample's first random number;
+ * channel 1 is u alone. */
+#define BRIGHT 1e9
+
+static Vec3 bright_sample(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                          RayCounts *counts)
+{
+    (void)scene, (void)ray, (void)settings, (void)counts;
+    double u = rng_uniform(rng);
+    return vec3(BRIGHT + u, u, BRIGHT + u);
+}
+
+/* Welford's method (render.h) keeps the spread of a bright pixel: its standard error
+ * is that of u, within 0.1%, computed here by the two-pass formula (mean first, then
+ * squared deviations from it). The textbook sum of squares, sum x^2 - n mean^2 with
+ * x = 10^9 + u, subtracts numbers near 10^20 whose rounding (about 10^4 each) swamps
+ * the variance 1/12: with it the test fails. 200 samples per pixel. */
+static void test_variance_of_a_bright_pixel(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
+    const int spp = 200;
+    RenderSettings settings = {4, 4, spp, PIXEL_CENTRE, 2, 31, 0, "test"};
+    RenderResult result;
+    assert_int_equal(render(&scene, &settings, bright_sample, NULL, &result), 0);
+    for (int pixel = 0; pixel < 16; pixel++) {
+        double u[200], mean = 0.0, squares = 0.0;
+        for (int s = 0; s < spp; s++) {
+            Rng rng = rng_for_sample(31, (uint64_t)pixel, (uint64_t)s);
+            u[s] = rng_uniform(&rng);
+            mean += u[s] / spp;
+        }
+        for (int s = 0; s < spp; s++)
+            squares += (u[s] - mean) * (u[s] - mean);
+        double expected = sqrt(squares / (spp - 1) / spp);
+        Vec3 error = image_get(&result.std_error, pixel % 4, pixel / 4);
+        Vec3 average_error = image_get(&result.average_std_error, pixel % 4, pixel / 4);
+        if (pixel == 0)
+            print_message("    standard error %.6f, expected %.6f (u alone: %.6f)\n", error.x,
+                          expected, error.y);
+        assert_true(fabs(error.x - expected) < 1e-3 * expected);
+        assert_true(fabs(error.z - expected) < 1e-3 * expected);
+        assert_true(fabs(error.y - expected) < 1e-6 * expected);
+        assert_true(fabs(average_error.x - expected) < 1e-3 * expected);
+    }
     render_result_free(&result);
 }
 
@@ -173,6 +234,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_same_image_for_any_thread_count),
         cmocka_unit_test(test_pixel_is_mean_of_samples),
+        cmocka_unit_test(test_variance_of_a_bright_pixel),
         cmocka_unit_test(test_nonfinite_samples_dropped_and_counted),
         cmocka_unit_test(test_interrupt_keeps_a_normalised_image),
     };
