@@ -34,9 +34,9 @@ int main(int argc, char **argv)
     ProgramInfo info = {
         "Chapter 2, Monte Carlo diffuse: reproduces the report's Figures 2 and 8 and compares\n"
         "sub-pixels with random positions.",
-        FLAGS_COMMON | FLAG_SPP | FLAG_DEPTH | FLAG_REFERENCE_SPP,
+        FLAGS_COMMON | FLAG_SPP | FLAG_DEPTH | FLAG_REFERENCE_SPP | FLAG_RUNS,
         {.scene = "scenes/room.scene", .size = 800, .spp = 64, .depth = 8, .seed = 1,
-         .out = "build/figures", .reference_spp = 256},
+         .out = "build/figures", .reference_spp = 256, .runs = 3},
     };
     Options options;
     Scene scene;

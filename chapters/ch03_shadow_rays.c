@@ -53,9 +53,9 @@ int main(int argc, char **argv)
     ProgramInfo info = {
         "Chapter 3, shadow rays: reproduces the report's Figure 11 (1 vs 30 shadow rays) and\n"
         "sweeps the number of shadow rays M.",
-        FLAGS_COMMON | FLAG_SPP | FLAG_DEPTH | FLAG_REFERENCE_SPP,
+        FLAGS_COMMON | FLAG_SPP | FLAG_DEPTH | FLAG_REFERENCE_SPP | FLAG_RUNS,
         {.scene = "scenes/room.scene", .size = 800, .spp = 4, .depth = 8, .seed = 1,
-         .out = "build/figures", .reference_spp = 256},
+         .out = "build/figures", .reference_spp = 256, .runs = 3},
     };
     Options options;
     Scene scene;
@@ -99,8 +99,7 @@ int main(int argc, char **argv)
     measure_reference_free(&reference);
 
     /* The sweep, on a quarter-size image with a reference of its own. */
-    Options sweep_options = options;
-    sweep_options.size = cli_quarter(options.size, 16);
+    Options sweep_options = experiment_quarter_size(&options);
     reference_for(&sweep_options, &scene, &reference);
     TableRow sweep[SWEEP_COUNT];
     for (int i = 0; i < SWEEP_COUNT; i++) {

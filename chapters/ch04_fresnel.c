@@ -64,8 +64,8 @@ static TableRow render_panel(const Options *options, const Scene *scene,
     path_describe(&path, description, sizeof description);
     snprintf(settings_text, sizeof settings_text, "%d spp, %s", options->spp, description);
     RenderSettings settings = experiment_render_settings(options, scene, options->spp, sampling, name);
-    return experiment_panel(options, scene, &settings, path_radiance, &path, name,
-                            settings_text, reference, result);
+    return experiment_runs(options, scene, &settings, path_radiance, &path, name,
+                           settings_text, reference, 1, result);
 }
 
 static Image new_image(int width, int height)
@@ -209,9 +209,9 @@ int main(int argc, char **argv)
     ProgramInfo info = {
         "Chapter 4, Fresnel glass and ray depth: reproduces the report's Figure 9 (depth 3\n"
         "vs 8) and compares Schlick's approximation with the exact Fresnel equations.",
-        FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_FRESNEL | FLAG_REFERENCE_SPP,
+        FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_FRESNEL | FLAG_REFERENCE_SPP | FLAG_RUNS,
         {.scene = "scenes/room.scene", .size = 800, .spp = 4, .shadow_rays = 1, .seed = 1,
-         .out = "build/figures", .fresnel = FRESNEL_SCHLICK, .reference_spp = 256},
+         .out = "build/figures", .fresnel = FRESNEL_SCHLICK, .reference_spp = 256, .runs = 3},
     };
     Options options;
     Scene scene;
@@ -277,8 +277,7 @@ int main(int argc, char **argv)
            TIMING_CALLS, schlick_ns, exact_ns);
 
     /* (c) The room with each, against the exact reference, on a quarter-size image. */
-    Options sweep_options = options;
-    sweep_options.size = cli_quarter(options.size, 16);
+    Options sweep_options = experiment_quarter_size(&options);
     reference_for(&sweep_options, &scene, FRESNEL_DEPTH, FRESNEL_EXACT, &reference);
     const FresnelMode modes[2] = {FRESNEL_SCHLICK, FRESNEL_EXACT};
     TableRow fresnel_rows[2];

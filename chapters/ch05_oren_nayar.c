@@ -150,9 +150,9 @@ int main(int argc, char **argv)
     ProgramInfo info = {
         "Chapter 5, the Oren-Nayar reflector: reproduces the report's Figure 10 (a rough\n"
         "sphere beside a Lambertian one) and sweeps the roughness sigma.",
-        FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_REFERENCE_SPP,
+        FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_REFERENCE_SPP | FLAG_RUNS,
         {.scene = "scenes/oren_nayar.scene", .size = 800, .spp = 16, .shadow_rays = 4,
-         .depth = 8, .seed = 1, .out = "build/figures", .reference_spp = 256},
+         .depth = 8, .seed = 1, .out = "build/figures", .reference_spp = 256, .runs = 3},
     };
     Options options;
     Scene scene;
@@ -180,8 +180,7 @@ int main(int argc, char **argv)
     measure_reference_free(&reference);
 
     /* The sweep of sigma, each against its own reference, on a quarter-size image. */
-    Options sweep_options = options;
-    sweep_options.size = cli_quarter(options.size, 16);
+    Options sweep_options = experiment_quarter_size(&options);
     TableRow rows[SIGMA_COUNT];
     Image images[SIGMA_COUNT];
     char captions[SIGMA_COUNT][256];

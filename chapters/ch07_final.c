@@ -56,11 +56,10 @@ static const struct {
 };
 enum { ESTIMATOR_COUNT = sizeof ESTIMATORS / sizeof ESTIMATORS[0], CONVERGENCE_STEPS = 5 };
 
-/* Every setting estimates the same image; the reference uses one shadow ray and
- * alpha = 0.75. */
+/* Every setting estimates the same image, so one reference serves them all. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
 {
-    PathSettings estimator = {.max_depth = options->depth, .shadow_rays = 1, .fresnel = options->fresnel, .rr_survival = 0.75};
+    PathSettings estimator = {.max_depth = options->depth, .fresnel = options->fresnel};
     experiment_path_reference(options, scene, &estimator, NULL, 0.0, reference);
 }
 
@@ -111,31 +110,17 @@ static void table1(const Options *options, const Scene *scene, const Reference *
     }
 }
 
-/* The largest rho^2 of the scene's diffuse surfaces (their brightest channel):
- * roulette with alpha below it has infinite variance (chapter 6). */
-static double brightest_rho_squared(const Scene *scene)
-{
-    double most = 0.0;
-    for (int i = 0; i < scene->material_count; i++)
-        if (material_is_diffuse(&scene->materials[i])) {
-            double rho = vec3_max_component(scene->materials[i].reflectance);
-            most = rho * rho > most ? rho * rho : most;
-        }
-    return most;
-}
-
 /* Error against time as the samples double, for each estimator; CSV and plot. */
 static void convergence(const Options *options, const Scene *scene)
 {
-    Options small = *options;
-    small.size = cli_quarter(options->size, 16);
+    Options small = experiment_quarter_size(options);
     Reference reference;
     reference_for(&small, scene, &reference);
     double seconds[ESTIMATOR_COUNT][CONVERGENCE_STEPS], rmse[ESTIMATOR_COUNT][CONVERGENCE_STEPS];
+    double low[ESTIMATOR_COUNT][CONVERGENCE_STEPS], high[ESTIMATOR_COUNT][CONVERGENCE_STEPS];
     TableRow rows[ESTIMATOR_COUNT * CONVERGENCE_STEPS];
     PlotSeries series[ESTIMATOR_COUNT + 1];
     char labels[ESTIMATOR_COUNT][48];
-    double rho_squared = brightest_rho_squared(scene);
     for (int e = 0; e < ESTIMATOR_COUNT; e++) {
         for (int step = 0; step < CONVERGENCE_STEPS; step++) {
             char name[64];
@@ -145,17 +130,32 @@ static void convergence(const Options *options, const Scene *scene)
                                   ESTIMATORS[e].rr, name, "", NULL);
             seconds[e][step] = row->seconds;
             rmse[e][step] = row->rmse;
+            /* The error bar: one standard deviation of the runs' RMSE either side. */
+            double spread = isnan(row->rmse_spread) ? 0.0 : row->rmse_spread;
+            low[e][step] = row->rmse - spread;
+            high[e][step] = row->rmse + spread;
         }
         snprintf(labels[e], sizeof labels[e], "M=%d, rr=%g", ESTIMATORS[e].shadow_rays,
                  ESTIMATORS[e].rr);
-        /* One run per point so far: its error bar is the point itself. */
         series[e] = (PlotSeries){.label = labels[e], .x = seconds[e], .y = rmse[e],
-                                 .y_low = rmse[e], .y_high = rmse[e], .count = CONVERGENCE_STEPS,
+                                 .y_low = low[e], .y_high = high[e], .count = CONVERGENCE_STEPS,
                                  .colour = ESTIMATORS[e].colour, .markers = 1,
-                                 .infinite_variance = ESTIMATORS[e].rr < rho_squared};
+                                 .infinite_variance = rows[e * CONVERGENCE_STEPS].infinite_variance};
     }
     printf("\nconvergence at %d pixels wide, 1 to %d spp:\n", small.size, 1 << (CONVERGENCE_STEPS - 1));
     experiment_write_table(options, "ch07_convergence", rows, ESTIMATOR_COUNT * CONVERGENCE_STEPS);
+    printf("measured: does the mean RMSE fall at every doubling, and its log-log slope "
+           "against time\n(an estimator of finite variance follows -1/2):\n");
+    for (int e = 0; e < ESTIMATOR_COUNT; e++) {
+        int falls = 1;
+        for (int step = 1; step < CONVERGENCE_STEPS; step++)
+            falls = falls && rmse[e][step] < rmse[e][step - 1];
+        double slope = log(rmse[e][CONVERGENCE_STEPS - 1] / rmse[e][0]) /
+                       log(seconds[e][CONVERGENCE_STEPS - 1] / seconds[e][0]);
+        printf("  %-14s %-30s slope %+.2f%s\n", labels[e],
+               falls ? "falls at every doubling," : "does not fall at every doubling,", slope,
+               series[e].infinite_variance ? "   (infinite variance)" : "");
+    }
 
     /* A guide of slope -1/2 (error ~ 1/sqrt(time), what an estimator of finite variance
      * follows) over the last estimator's times, twice its first error so that both
@@ -170,8 +170,9 @@ static void convergence(const Options *options, const Scene *scene)
     Image image = experiment_plot(&plot, 720, 480);
     char caption[256];
     snprintf(caption, sizeof caption,
-             "RMSE against render time as the samples double, 1 to %d spp, %d pixels wide",
-             1 << (CONVERGENCE_STEPS - 1), small.size);
+             "RMSE against render time as the samples double, 1 to %d spp, %d pixels wide; "
+             "each point the mean of %d runs, its bar their standard deviation",
+             1 << (CONVERGENCE_STEPS - 1), small.size, small.runs);
     const char *captions[] = {caption};
     experiment_write_figure(options, "ch07_convergence", &image, captions, 1, 1.0);
     image_free(&image);
@@ -184,9 +185,9 @@ int main(int argc, char **argv)
         "Chapter 7, the final image and the benchmarks: reproduces the report's Figure 7 and\n"
         "Table 1 (with times, errors and efficiency), and plots error against time.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_RR | FLAG_DEPTH | FLAG_FRESNEL |
-            FLAG_REFERENCE_SPP,
+            FLAG_REFERENCE_SPP | FLAG_RUNS,
         {.scene = "scenes/room.scene", .size = 800, .spp = 64, .shadow_rays = 4, .rr = 0.75,
-         .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = 256},
+         .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = 256, .runs = 3},
     };
     Options options;
     Scene scene;

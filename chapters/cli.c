@@ -34,8 +34,9 @@ static const FlagSpec FLAG_SPECS[] = {
     {FLAG_OUT, "--out", VALUE_TEXT, 0, 0, "DIR     directory for the figures"},
     {FLAG_QUIET, "--quiet", VALUE_NONE, 0, 0, "        no progress display"},
     {FLAG_FRESNEL, "--fresnel", VALUE_FRESNEL, 0, 0, "MODE    glass reflectance: schlick (the report's) or exact"},
-    {FLAG_QUICK, "--quick", VALUE_NONE, 0, 0, "        small and fast, for a first look: a quarter of the size and of the reference's samples"},
+    {FLAG_QUICK, "--quick", VALUE_NONE, 0, 0, "        small and fast, for a first look: a quarter of the size, and more runs"},
     {FLAG_REFERENCE_SPP, "--reference-spp", VALUE_INT, 1, 1 << 20, "N       samples per pixel of the reference image"},
+    {FLAG_RUNS, "--runs", VALUE_INT, 1, CLI_RUNS_MAX, "N       independent runs (seeds) of each measured setting: its error is their mean and spread"},
 };
 #define FLAG_SPEC_COUNT ((int)(sizeof FLAG_SPECS / sizeof FLAG_SPECS[0]))
 
@@ -66,6 +67,7 @@ static void print_default(const FlagSpec *spec, const Options *d)
     case FLAG_FRESNEL: printf(" (default %s)", d->fresnel == FRESNEL_EXACT ? "exact" : "schlick"); break;
 #endif
     case FLAG_REFERENCE_SPP: printf(" (default %d)", d->reference_spp); break;
+    case FLAG_RUNS: printf(" (default %d; with --quick %d)", d->runs, CLI_QUICK_RUNS); break;
     default: break;
     }
 }
@@ -118,6 +120,7 @@ static void set_value(const FlagSpec *spec, const char *text, Options *o)
         case FLAG_DEPTH: o->depth = (int)value; break;
         case FLAG_THREADS: o->threads = (int)value; break;
         case FLAG_REFERENCE_SPP: o->reference_spp = (int)value; break;
+        case FLAG_RUNS: o->runs = (int)value; break;
         default: break;
         }
     } else if (spec->kind == VALUE_SEED) {
@@ -201,8 +204,8 @@ void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options)
     }
     if (options->quick && !cli_given(options, FLAG_SIZE))
         options->size = cli_quarter(options->size, 16);
-    if (options->quick && !cli_given(options, FLAG_REFERENCE_SPP))
-        options->reference_spp = cli_quarter(options->reference_spp, 1);
+    if (options->quick && !cli_given(options, FLAG_RUNS) && (info->flags & FLAG_RUNS))
+        options->runs = CLI_QUICK_RUNS;
 }
 
 int cli_quarter(int value, int smallest)

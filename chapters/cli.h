@@ -28,9 +28,14 @@ enum {
     FLAG_OUT = 1u << 8,         /* --out DIR */
     FLAG_QUIET = 1u << 9,       /* --quiet: no progress display */
     FLAG_FRESNEL = 1u << 10,    /* --fresnel schlick|exact */
-    FLAG_QUICK = 1u << 11,      /* --quick: a quarter of the default size and reference samples */
-    FLAG_REFERENCE_SPP = 1u << 12 /* --reference-spp N: samples of the reference image */
+    FLAG_QUICK = 1u << 11,      /* --quick: a quarter of the default size, more runs */
+    FLAG_REFERENCE_SPP = 1u << 12, /* --reference-spp N: samples of the reference image */
+    FLAG_RUNS = 1u << 13         /* --runs N: independent runs of each measured setting */
 };
+
+/* --runs: at most, and with --quick (small images, so more runs for the same time). */
+#define CLI_RUNS_MAX 100
+#define CLI_QUICK_RUNS 5
 
 /* Flags every chapter program takes. */
 #define FLAGS_COMMON (FLAG_SCENE | FLAG_SIZE | FLAG_THREADS | FLAG_SEED | FLAG_OUT | FLAG_QUIET | FLAG_QUICK)
@@ -51,6 +56,7 @@ typedef struct {
 #endif
     int quick;
     int reference_spp;
+    int runs;
     unsigned given; /* the FLAG_ bits the user set on the command line */
 } Options;
 
@@ -63,9 +69,10 @@ typedef struct {
 /* The program's name (argv[0] without its directory), for messages. */
 extern const char *cli_program;
 
-/* Parse argv into *options, starting from info->defaults. With --quick, the size and
- * the reference's samples not given on the command line are a quarter of their
- * defaults. Exits on --help (status 0) and on any error (status 2). */
+/* Parse argv into *options, starting from info->defaults. With --quick, the size not
+ * given on the command line is a quarter of its default (the reference keeps its
+ * samples per pixel: on a sixteenth of the pixels it is cheap), and --runs is
+ * CLI_QUICK_RUNS. Exits on --help (status 0) and on any error (status 2). */
 void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options);
 
 /* A quarter of `value`, but at least `smallest`: --quick's sizes, and the chapters'

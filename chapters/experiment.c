@@ -181,6 +181,14 @@ void experiment_render(const Scene *scene, const RenderSettings *settings, Estim
                 (unsigned long long)result->samples);
 }
 
+Options experiment_quarter_size(const Options *options)
+{
+    Options quarter = *options;
+    quarter.size = cli_quarter(options->size, 16);
+    quarter.reference_spp = (int)fmin(4.0 * options->reference_spp, 1 << 20);
+    return quarter;
+}
+
 void experiment_path(const Options *options, const char *file_name, char *path, size_t size)
 {
     char failed[4096];
@@ -403,37 +411,74 @@ void experiment_path_reference(const Options *options, const Scene *scene,
            reference->seconds, reference->noise);
 }
 
-static TableRow measured_row(const char *name, const char *settings_text,
-                             const RenderResult *result, const Reference *reference)
+/* One run: render, write the panel if asked (and every pixel has a sample), exit if
+ * interrupted, and measure. */
+static TableRow one_run(const Options *options, const Scene *scene,
+                        const RenderSettings *settings, Estimator estimate,
+                        const void *estimator_settings, const char *name,
+                        const char *settings_text, const Reference *reference, int write_panel,
+                        RenderResult *result)
 {
+    experiment_render(scene, settings, estimate, estimator_settings, result);
+    int whole_pass = render_samples_per_pixel(result) >= 1.0;
+    int written = write_panel && (!result->interrupted || whole_pass);
+    if (written)
+        experiment_write_image(options, name, &result->image, PANEL_EXPOSURE);
+    experiment_exit_if_interrupted(result, written ? name : NULL);
     TableRow row = experiment_row(name, settings_text, result);
     if (reference)
         measure_fill_row(&row, &result->image, reference);
     return row;
 }
 
-TableRow experiment_measure(const Scene *scene, const RenderSettings *settings,
-                            Estimator estimate, const void *estimator_settings,
-                            const char *name, const char *settings_text,
-                            const Reference *reference, RenderResult *result)
+TableRow experiment_runs(const Options *options, const Scene *scene,
+                         const RenderSettings *settings, Estimator estimate,
+                         const void *estimator_settings, const char *name,
+                         const char *settings_text, const Reference *reference, int write_panel,
+                         RenderResult *first)
 {
-    experiment_render(scene, settings, estimate, estimator_settings, result);
-    experiment_exit_if_interrupted(result, NULL);
-    return measured_row(name, settings_text, result, reference);
+    int runs = reference && options->runs > 1 ? options->runs : 1;
+    TableRow rows[CLI_RUNS_MAX];
+    rows[0] = one_run(options, scene, settings, estimate, estimator_settings, name,
+                      settings_text, reference, write_panel, first);
+    for (int k = 1; k < runs; k++) {
+        RenderSettings again = *settings;
+        again.seed = settings->seed + (uint64_t)k;
+        char label[160];
+        snprintf(label, sizeof label, "%s, run %d of %d", settings->label, k + 1, runs);
+        again.label = label;
+        RenderResult result;
+        rows[k] = one_run(options, scene, &again, estimate, estimator_settings, name,
+                          settings_text, reference, 0, &result);
+        render_result_free(&result);
+    }
+    TableRow combined;
+    if (measure_combine_runs(rows, runs, &combined) != 0)
+        cli_fail(1, "out of memory");
+    return combined;
 }
 
-TableRow experiment_panel(const Options *options, const Scene *scene,
-                          const RenderSettings *settings, Estimator estimate,
-                          const void *estimator_settings, const char *name,
-                          const char *settings_text, const Reference *reference,
-                          RenderResult *result)
+#if CHAPTER >= 6
+/* The largest reflectance (any channel) of the scene's diffuse materials. */
+static double largest_diffuse_reflectance(const Scene *scene)
 {
-    experiment_render(scene, settings, estimate, estimator_settings, result);
-    int whole_pass = render_samples_per_pixel(result) >= 1.0;
-    if (!result->interrupted || whole_pass)
-        experiment_write_image(options, name, &result->image, PANEL_EXPOSURE);
-    experiment_exit_if_interrupted(result, whole_pass ? name : NULL);
-    return measured_row(name, settings_text, result, reference);
+    double largest = 0.0;
+    for (int i = 0; i < scene->material_count; i++)
+        if (material_is_diffuse(&scene->materials[i]))
+            largest = fmax(largest, vec3_max_component(scene->materials[i].reflectance));
+    return largest;
+}
+#endif
+
+int experiment_infinite_variance(const Scene *scene, const PathSettings *path)
+{
+#if CHAPTER >= 6
+    return measure_roulette_variance_infinite(path->rr_survival > 0.0 ? path->rr_survival : 1.0,
+                                              largest_diffuse_reflectance(scene));
+#else
+    (void)scene, (void)path;
+    return 0;
+#endif
 }
 
 TableRow experiment_path_row(const Options *options, const Scene *scene,
@@ -443,10 +488,9 @@ TableRow experiment_path_row(const Options *options, const Scene *scene,
 {
     RenderSettings settings = experiment_render_settings(options, scene, spp, sampling, name);
     RenderResult result;
-    TableRow row = image ? experiment_panel(options, scene, &settings, path_radiance, path, name,
-                                            settings_text, reference, &result)
-                         : experiment_measure(scene, &settings, path_radiance, path, name,
-                                              settings_text, reference, &result);
+    TableRow row = experiment_runs(options, scene, &settings, path_radiance, path, name,
+                                   settings_text, reference, image != NULL, &result);
+    row.infinite_variance = experiment_infinite_variance(scene, path);
     image_free(&result.std_error);
     image_free(&result.average_std_error);
     if (image)

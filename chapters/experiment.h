@@ -63,6 +63,12 @@ void experiment_render(const Scene *scene, const RenderSettings *settings, Estim
 /* The path of `file_name` in the output directory, which is created if needed. */
 void experiment_path(const Options *options, const char *file_name, char *path, size_t size);
 
+/* The options for a chapter's sweep on a quarter-size image: a quarter of --size (at
+ * least 16 pixels), and a reference with 4 times the samples per pixel (at most 2^20):
+ * its noise is then half as large beside the sweep's errors, for a quarter of the cost
+ * of the full-size reference. */
+Options experiment_quarter_size(const Options *options);
+
 /* Exposure of every panel's PNG: radiance 1 is white. */
 #define PANEL_EXPOSURE 1.0
 
@@ -104,28 +110,30 @@ void experiment_path_reference(const Options *options, const Scene *scene,
                                const PathSettings *path, const char *rough_material,
                                double rough_sigma, Reference *reference);
 
-/* The path tracer at `spp` samples per pixel as one table row. With `image`, a panel:
- * written as NAME.png/.pfm and kept in *image; without, only measured. */
+/* The path tracer at `spp` samples per pixel as one table row (experiment_runs), marked
+ * when its variance is infinite. With `image`, a panel: the first run written as
+ * NAME.png/.pfm and kept in *image; without, only measured. */
 TableRow experiment_path_row(const Options *options, const Scene *scene,
                              const PathSettings *path, int spp, PixelSampling sampling,
                              const char *name, const char *settings_text,
                              const Reference *reference, Image *image);
 
-/* One measurement: render, and return its table row (labelled `name`) with the error
- * columns filled when a reference is given (else NULL). The rendered image stays in
- * *result. An interrupted render exits the program (experiment_exit_if_interrupted). */
-TableRow experiment_measure(const Scene *scene, const RenderSettings *settings,
-                            Estimator estimate, const void *estimator_settings,
-                            const char *name, const char *settings_text,
-                            const Reference *reference, RenderResult *result);
+/* One setting measured over options->runs independent runs (seeds options->seed + k;
+ * one run without a reference), combined into one table row (measure_combine_runs):
+ * the mean error over the runs and its spread. The first run's render stays in *first;
+ * with `write_panel`, its image is written as NAME.png/.pfm. An interruption saves
+ * the first run's panel if it was being rendered and has a sample in every pixel, and
+ * exits (experiment_exit_if_interrupted). */
+TableRow experiment_runs(const Options *options, const Scene *scene,
+                         const RenderSettings *settings, Estimator estimate,
+                         const void *estimator_settings, const char *name,
+                         const char *settings_text, const Reference *reference, int write_panel,
+                         RenderResult *first);
 
-/* One panel of a figure: experiment_measure, and the image written as NAME.png/.pfm
- * (also when interrupted, before the program exits). */
-TableRow experiment_panel(const Options *options, const Scene *scene,
-                          const RenderSettings *settings, Estimator estimate,
-                          const void *estimator_settings, const char *name,
-                          const char *settings_text, const Reference *reference,
-                          RenderResult *result);
+/* Whether the path tracer with these settings has infinite variance in this scene:
+ * roulette with alpha <= rho^2 of its brightest diffuse surface (chapter 6; always 0
+ * before). */
+int experiment_infinite_variance(const Scene *scene, const PathSettings *path);
 
 /* A figure caption from a table row: its settings, then time and error. */
 void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size);

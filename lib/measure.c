@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stddef.h>
 #include <stdlib.h>
 
 #include "atomic_file.h"
@@ -95,7 +96,44 @@ void measure_fill_row(TableRow *row, const Image *image, const Reference *refere
     measure_error_estimate(image, &reference->image, std_error, &error);
     row->rmse = error.rmse;
     row->rel_mse = error.rel_mse;
+    row->reference_share = error.reference_share;
     row->efficiency = error.rel_mse > 0.0 ? 1.0 / (error.rel_mse * row->seconds) : NAN;
+}
+
+/* The mean over the runs of the field at `offset` of each row (a double). */
+static double mean_of(const TableRow *runs, int count, size_t offset)
+{
+    double sum = 0.0;
+    for (int i = 0; i < count; i++)
+        sum += *(const double *)((const char *)&runs[i] + offset);
+    return sum / count;
+}
+
+int measure_combine_runs(const TableRow *runs, int count, TableRow *combined)
+{
+    double *rmse = malloc(sizeof *rmse * (size_t)count);
+    if (!rmse)
+        return -1;
+    for (int i = 0; i < count; i++)
+        rmse[i] = runs[i].rmse;
+    RunSummary summary;
+    int status = measure_summarise_runs(rmse, count, &summary);
+    free(rmse);
+    if (status != 0)
+        return -1;
+    *combined = runs[0];
+    combined->runs = count;
+    combined->rmse = summary.mean;
+    combined->rmse_spread = count > 1 ? summary.std_dev : NAN;
+    combined->rel_mse = mean_of(runs, count, offsetof(TableRow, rel_mse));
+    combined->reference_share = mean_of(runs, count, offsetof(TableRow, reference_share));
+    combined->seconds = mean_of(runs, count, offsetof(TableRow, seconds));
+    combined->efficiency = combined->rel_mse > 0.0
+                               ? 1.0 / (combined->rel_mse * combined->seconds) : NAN;
+    combined->nonfinite = 0;
+    for (int i = 0; i < count; i++)
+        combined->nonfinite += runs[i].nonfinite;
+    return 0;
 }
 
 static int compare_doubles(const void *a, const void *b)

@@ -71,8 +71,8 @@ static Outcome run_panel(void (*when)(void), long raise_at)
         long calls = 0;
         Interrupting estimator = {raise_at, &calls};
         RenderResult result;
-        experiment_panel(&options, &scene, &settings, interrupting, &estimator, "panel",
-                         "test", NULL, &result);
+        experiment_runs(&options, &scene, &settings, interrupting, &estimator, "panel",
+                        "test", NULL, 1, &result);
         _exit(0);
     }
     close(pipe_ends[1]);
