@@ -263,7 +263,8 @@ TableRow experiment_row(const char *panel, const char *settings, const RenderRes
     row.seconds = result->seconds;
     row.threads = result->threads;
     row.rays = result->rays;
-    row.rmse = row.rel_mse = row.efficiency = row.rmse_spread = row.reference_share = NAN;
+    row.rmse = row.rel_mse = row.efficiency = row.rmse_spread = row.rel_mse_spread = NAN;
+    row.reference_share = NAN;
     row.nonfinite = result->nonfinite;
     row.runs = 1;
     return row;

@@ -109,23 +109,31 @@ static double mean_of(const TableRow *runs, int count, size_t offset)
     return sum / count;
 }
 
-int measure_combine_runs(const TableRow *runs, int count, TableRow *combined)
+/* The summary of the runs' field at `offset` (a double). */
+static int summarise_field(const TableRow *runs, int count, size_t offset, RunSummary *summary)
 {
-    double *rmse = malloc(sizeof *rmse * (size_t)count);
-    if (!rmse)
+    double *values = malloc(sizeof *values * (size_t)count);
+    if (!values)
         return -1;
     for (int i = 0; i < count; i++)
-        rmse[i] = runs[i].rmse;
-    RunSummary summary;
-    int status = measure_summarise_runs(rmse, count, &summary);
-    free(rmse);
-    if (status != 0)
+        values[i] = *(const double *)((const char *)&runs[i] + offset);
+    int status = measure_summarise_runs(values, count, summary);
+    free(values);
+    return status;
+}
+
+int measure_combine_runs(const TableRow *runs, int count, TableRow *combined)
+{
+    RunSummary rmse, rel_mse;
+    if (summarise_field(runs, count, offsetof(TableRow, rmse), &rmse) != 0 ||
+        summarise_field(runs, count, offsetof(TableRow, rel_mse), &rel_mse) != 0)
         return -1;
     *combined = runs[0];
     combined->runs = count;
-    combined->rmse = summary.mean;
-    combined->rmse_spread = count > 1 ? summary.std_dev : NAN;
-    combined->rel_mse = mean_of(runs, count, offsetof(TableRow, rel_mse));
+    combined->rmse = rmse.mean;
+    combined->rmse_spread = count > 1 ? rmse.std_dev : NAN;
+    combined->rel_mse = rel_mse.mean;
+    combined->rel_mse_spread = count > 1 ? rel_mse.std_dev : NAN;
     combined->reference_share = mean_of(runs, count, offsetof(TableRow, reference_share));
     combined->seconds = mean_of(runs, count, offsetof(TableRow, seconds));
     combined->efficiency = combined->rel_mse > 0.0

@@ -123,7 +123,8 @@ int measure_summarise_runs(const double *values, int count, RunSummary *summary)
 
 /* One table row for count >= 1 independent runs of one setting, each measured with
  * measure_fill_row: rmse, rel_mse, reference_share and seconds are the means over the
- * runs, rmse_spread the standard deviation of the runs' RMSE (NaN for one run),
+ * runs, rmse_spread and rel_mse_spread the standard deviations of the runs' RMSE and
+ * relative MSE (NaN for one run),
  * efficiency = 1 / (mean rel_mse x mean seconds) (NaN unless positive); the rest (names,
  * rays, spp, threads) is the first run's, with the non-finite samples of all. Returns 0,
  * or -1 when memory runs out. */

@@ -99,7 +99,7 @@ int table_write_csv(const char *path, const TableRow *rows, int count)
         return -1;
     fprintf(file.file, "panel,settings,spp,seconds,threads,camera_rays,bounce_rays,shadow_rays,"
                        "mrays_per_second,rmse,rel_mse,efficiency,nonfinite,runs,rmse_sd,"
-                       "reference_share,variance\n");
+                       "rel_mse_sd,reference_share,variance\n");
     for (int i = 0; i < count; i++) {
         const TableRow *r = &rows[i];
         csv_text(file.file, r->panel);
@@ -113,6 +113,7 @@ int table_write_csv(const char *path, const TableRow *rows, int count)
         csv_measure(file.file, r->efficiency);
         fprintf(file.file, ",%llu,%d", r->nonfinite, r->runs > 1 ? r->runs : 1);
         csv_measure(file.file, r->rmse_spread);
+        csv_measure(file.file, r->rel_mse_spread);
         csv_measure(file.file, r->reference_share);
         fprintf(file.file, ",%s\n", r->infinite_variance ? "infinite" : "finite");
     }

@@ -37,6 +37,7 @@ typedef struct {
      * 1 / (mean rel_mse x mean seconds). */
     int runs;                      /* 0 or 1: a single run */
     double rmse_spread;            /* standard deviation of the runs' RMSE; NaN for one */
+    double rel_mse_spread;         /* and of their relative MSE */
     double reference_share;        /* of the raw MSE, what the reference's noise makes */
     int infinite_variance;         /* the estimator's variance is infinite: its error
                                       cannot be pinned down by any number of runs */

@@ -21,7 +21,7 @@
 #include "check.h"
 #include "table.h"
 
-#define FIELDS 17
+#define FIELDS 18
 #define FIELD_SIZE 128
 
 /* Two rows as a chapter would make them: one measured against a reference, one not. */
@@ -30,12 +30,12 @@ static void sample_rows(TableRow rows[2])
     rows[0] = (TableRow){.panel = "Figure 11a", .settings = "64 spp, M=1 depth=5", .spp = 64,
                          .seconds = 1.5, .threads = 8, .rays = {1000000, 1500000, 500000},
                          .rmse = 0.0123, .rel_mse = 4.56e-3, .efficiency = 146.198830409,
-                         .nonfinite = 3, .runs = 5, .rmse_spread = 0.0021,
+                         .nonfinite = 3, .runs = 5, .rmse_spread = 0.0021, .rel_mse_spread = 3e-4,
                          .reference_share = 0.125, .infinite_variance = 1};
     rows[1] = (TableRow){.panel = "Figure 1", .settings = "1 ray/pixel, depth 5", .spp = 1,
                          .seconds = 0.25, .threads = 1, .rays = {40000, 10000, 30000},
                          .rmse = NAN, .rel_mse = NAN, .efficiency = NAN,
-                         .rmse_spread = NAN, .reference_share = NAN};
+                         .rmse_spread = NAN, .rel_mse_spread = NAN, .reference_share = NAN};
 }
 
 /* Mrays/s is all rays (camera + bounce + shadow) per second, in millions: 3e6 rays in
@@ -148,8 +148,8 @@ static void test_csv_values(void **state)
     const char *header[FIELDS] = {"panel", "settings", "spp", "seconds", "threads",
                                   "camera_rays", "bounce_rays", "shadow_rays",
                                   "mrays_per_second", "rmse", "rel_mse", "efficiency",
-                                  "nonfinite", "runs", "rmse_sd", "reference_share",
-                                  "variance"};
+                                  "nonfinite", "runs", "rmse_sd", "rel_mse_sd",
+                                  "reference_share", "variance"};
     for (int f = 0; f < FIELDS; f++)
         assert_string_equal(lines[0][f], header[f]);
     for (int i = 0; i < 2; i++) {
@@ -170,11 +170,15 @@ static void test_csv_values(void **state)
             assert_string_equal(fields[14], "");
         else
             assert_close(number(fields[14]), r->rmse_spread, 1e-9);
-        if (isnan(r->reference_share))
+        if (isnan(r->rel_mse_spread))
             assert_string_equal(fields[15], "");
         else
-            assert_close(number(fields[15]), r->reference_share, 1e-9);
-        assert_string_equal(fields[16], r->infinite_variance ? "infinite" : "finite");
+            assert_close(number(fields[15]), r->rel_mse_spread, 1e-9);
+        if (isnan(r->reference_share))
+            assert_string_equal(fields[16], "");
+        else
+            assert_close(number(fields[16]), r->reference_share, 1e-9);
+        assert_string_equal(fields[17], r->infinite_variance ? "infinite" : "finite");
     }
     assert_close(number(lines[1][9]), 0.0123, 1e-12);
     assert_close(number(lines[1][10]), 4.56e-3, 1e-12);
