@@ -1,5 +1,5 @@
-/* test_supersampling.c: sub-pixels and random positions estimate the same image, and a
- * stratified render stopped early is unbiased (camera.h, render.h; chapter 2).
+/* test_supersampling.c: sub-pixels against random positions (chapter 2). Both estimate
+ * the same image, and a stratified render stopped early is unbiased (camera.h, render.h).
  *
  * 1. The report's room at 12 x 12 pixels (large pixels: the lamp's, the sphere's and the
  *    walls' edges cross many of them), chapter 3's estimator (one shadow ray, depth 6)
