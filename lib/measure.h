@@ -136,7 +136,9 @@ int measure_summarise_runs(const double *values, int count, RunSummary *summary)
  * reflectance (the white furnace), and in any scene where paths can keep bouncing on
  * such surfaces: this returns 1 then, marking a setting whose error cannot be pinned
  * down. alpha >= 1 is no roulette: 0. (A depth limit D keeps the variance finite
- * formally, but it grows as (rho^2 / alpha)^D.) */
+ * formally, but it grows as (rho^2 / alpha)^D.) For Oren-Nayar surfaces pass the
+ * largest weight rho * oren_nayar_factor a bounce can carry, which exceeds rho at
+ * grazing angles. */
 int measure_roulette_variance_infinite(double alpha, double max_reflectance);
 
 /* Load a cached reference "DIR/HASH.pfm" with its "DIR/HASH-stderr.pfm" and "DIR/HASH.txt"
