@@ -221,8 +221,7 @@ int main(int argc, char **argv)
 
     /* Figure 9, and its red square enlarged; the mean radiance says how much light the
      * bounces beyond the depth limit would have added. */
-    double reference_mean, reference_error;
-    measure_image_mean(&reference.image, &reference.std_error, &reference_mean, &reference_error);
+    double reference_mean = reference.mean, reference_error = reference.mean_std_error;
     TableRow rows[2];
     Image images[2], crops[2];
     double means[2], errors[2];
@@ -233,9 +232,10 @@ int main(int argc, char **argv)
         RenderResult result;
         rows[i] = render_panel(&options, &scene, &reference, FIGURE_DEPTH[i], options.fresnel,
                                PIXEL_SUBPIXELS, name, &result);
-        measure_image_mean(&result.image, &result.std_error, &means[i], &errors[i]);
+        measure_image_mean(&result.image, &result.average_std_error, &means[i], &errors[i]);
         images[i] = result.image;
         image_free(&result.std_error);
+        image_free(&result.average_std_error);
         experiment_caption(&rows[i], i == 0 ? "Figure 9, left" : "Figure 9, right",
                            captions[i], sizeof captions[i]);
         crops[i] = crop_enlarged(&images[i]);

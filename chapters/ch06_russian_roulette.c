@@ -93,8 +93,7 @@ int main(int argc, char **argv)
 
     Options sweep_options = experiment_quarter_size(&options);
     reference_for(&sweep_options, &scene, &reference);
-    double reference_mean, reference_error;
-    measure_image_mean(&reference.image, &reference.std_error, &reference_mean, &reference_error);
+    double reference_mean = reference.mean, reference_error = reference.mean_std_error;
     TableRow sweep[SWEEP_COUNT];
     sweep_options.spp = SWEEP_SPP;
     printf("\nsweep of alpha at %d pixels wide, %d spp each; mean radiance of the image "

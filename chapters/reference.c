@@ -128,7 +128,9 @@ int main(int argc, char **argv)
     if (result.interrupted)
         fail(130, "%s", "interrupted; nothing was cached");
     Reference reference = {result.image, result.std_error, measure_rms(&result.std_error),
-                           render_samples_per_pixel(&result), result.seconds, 0};
+                           render_samples_per_pixel(&result), result.seconds, 0, 0.0, 0.0};
+    measure_image_mean(&result.image, &result.average_std_error, &reference.mean,
+                       &reference.mean_std_error);
     image_free(&result.average_std_error);
     uint64_t key = strtoull(request.key, NULL, 16);
     if (measure_save_reference(request.out, key, &reference) != 0)

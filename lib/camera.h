@@ -20,10 +20,12 @@
  * fixed points, a quadrature with an aliasing bias at every edge; jittered, its expected
  * value is the cell's average, and n of them average to the pixel's.
  *
- * The order of the cells, and an interrupted render (issue: a render stopped after k < n
- * samples must still be unbiased). No fixed order can make every prefix cover the pixel
- * evenly: k cells of area 1/n cover only k/n of it, and visiting them top row first
- * samples only the top strip of every pixel. What does make every prefix unbiased is
+ * The order of the cells, and a render stopped early: one stopped (SIGINT) after k < n
+ * samples per pixel must still be unbiased. No fixed order can make every prefix cover
+ * the pixel evenly: k cells of area 1/n cover only k/n of it, and visiting them top row
+ * first samples only the top strip of every pixel. (Counting only whole passes over the
+ * n cells would be unbiased too, but with n = spp a stopped render would keep nothing.)
+ * What does make every prefix unbiased is
  * that each sample on its own is uniform over the pixel. So each pixel starts its visit
  * at its own random cell s, uniform in [0, n) (camera_first_stratum), and sample i goes
  * to cell

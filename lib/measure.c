@@ -201,11 +201,13 @@ int measure_load_reference(const char *directory, uint64_t key, int width, int h
     FILE *file = fopen(info, "r");
     if (!file)
         return -1;
-    int fields = fscanf(file, "spp %lf seconds %lf", &reference->spp, &reference->seconds);
+    int fields = fscanf(file, "spp %lf seconds %lf mean %lf mean_std_error %lf",
+                        &reference->spp, &reference->seconds, &reference->mean,
+                        &reference->mean_std_error);
     fclose(file);
     /* An entry whose images are not both width x height is broken (a partial write, or
      * a file put there by hand): it is rendered again, never compared pixel by pixel. */
-    if (fields != 2 || !(reference->spp > 0.0) ||
+    if (fields != 4 || !(reference->spp > 0.0) ||
         image_read_pfm(mean, &reference->image, message, sizeof message) != 0 ||
         image_read_pfm(error, &reference->std_error, message, sizeof message) != 0 ||
         reference->image.width != width || reference->image.height != height ||
@@ -242,7 +244,8 @@ int measure_save_reference(const char *directory, uint64_t key, const Reference 
     AtomicFile file;
     if (atomic_open(&file, info) != 0)
         return undo_save(mean, error);
-    fprintf(file.file, "spp %.17g seconds %.17g\n", reference->spp, reference->seconds);
+    fprintf(file.file, "spp %.17g seconds %.17g mean %.17g mean_std_error %.17g\n",
+            reference->spp, reference->seconds, reference->mean, reference->mean_std_error);
     if (atomic_close(&file, 0) != 0)
         return undo_save(mean, error);
     return 0;

@@ -57,6 +57,8 @@ typedef struct {
     double spp;
     double seconds; /* how long it took to render (when it was rendered) */
     int cached;     /* read from the cache rather than rendered now */
+    double mean, mean_std_error; /* the image's mean and its standard error, computed
+                                    when it was rendered (measure_image_mean) */
 } Reference;
 
 /* FNV-1a over `size` bytes, continuing from `hash` (start with MEASURE_HASH_START). */
@@ -143,12 +145,14 @@ int measure_combine_runs(const TableRow *runs, int count, TableRow *combined);
  * reflectance (the white furnace), and in any scene where paths can keep bouncing on
  * such surfaces: this returns 1 then, marking a setting whose error cannot be pinned
  * down. alpha >= 1 is no roulette: 0. (A depth limit D keeps the variance finite
- * formally, but it grows as (rho^2 / alpha)^D.) */
+ * formally, but it grows as (rho^2 / alpha)^D.) For Oren-Nayar surfaces pass the
+ * largest weight rho * oren_nayar_factor a bounce can carry, which exceeds rho at
+ * grazing angles. */
 int measure_roulette_variance_infinite(double alpha, double max_reflectance);
 #endif
 
 /* Load a cached reference "DIR/HASH.pfm" with its "DIR/HASH-stderr.pfm" and "DIR/HASH.txt"
- * (spp and seconds), both images width x height. Returns 0, or -1 when it is not there,
+ * (spp, seconds, mean and its standard error), both images width x height. Returns 0, or -1 when it is not there,
  * unreadable, or of another size. */
 int measure_load_reference(const char *directory, uint64_t key, int width, int height,
                            Reference *reference);

@@ -164,7 +164,8 @@ int render(const Scene *scene, const RenderSettings *settings, Estimator estimat
     PixelSum *pixels = calloc((size_t)settings->width * settings->height, sizeof *pixels);
     Worker *workers = calloc((size_t)r.threads, sizeof *workers);
     pthread_t *threads = calloc((size_t)r.threads, sizeof *threads);
-    if (!r.image.pixels || !r.std_error.pixels || !r.average_std_error.pixels || !pixels || !workers || !threads) {
+    if (!r.image.pixels || !r.std_error.pixels || !r.average_std_error.pixels || !pixels ||
+        !workers || !threads) {
         free(pixels);
         free(workers);
         free(threads);

@@ -1,5 +1,6 @@
-/* agreement.h (chapter 2): do two images estimate the same expectation, pixel by pixel? (tests,
- * chapters 2-6; SPEC §7). Include after cmocka.h.
+/* agreement.h (chapter 3): per-pixel agreement of two renders. Do two images estimate
+ * the same expectation, pixel by pixel? (SPEC §7; used by the tests of chapters 3-6.)
+ * Include after cmocka.h.
  *
  * After Mitsuba 3's render tests (src/render/tests/test_renders.py), which compare each
  * rendered image with a reference by a z-test per pixel and channel, at a significance

@@ -1,15 +1,15 @@
-/* test_agreement.c (chapter 3): every chapter's estimator agrees, pixel by pixel, with an
- * independent estimator of the same image rendered with more samples (agreement.h:
- * per-pixel z-tests at a Sidak-corrected 1% level, after Mitsuba 3's render tests;
- * SPEC §7). Chapters 2-6:
+/* test_agreement.c (chapter 3): per-pixel agreement of the path tracer's estimators.
+ * Every chapter's estimator agrees, pixel by pixel, with an independent estimator of the
+ * same image rendered with more samples (agreement.h: per-pixel z-tests at a Sidak-
+ * corrected 1% level, after Mitsuba 3's render tests; SPEC §7). Chapters 2-6:
  *   - shadow rays (chapter 3): M = 1 against chapter 2's M = 0, which finds light only
  *     by hitting it, on the report's room;
  *   - exact Fresnel (chapter 4): the same pair with the exact Fresnel reflectance at
  *     the glass;
- *   - Oren-Nayar (chapter 5): the same pair on scenes/oren_nayar.scene, whose rough
- *     sphere is lit only through eq. 21's BRDF (diffuse_brdf) with M = 1 and only
- *     through the sampling weight (diffuse_sample) with M = 0, so the two code paths of
- *     Oren-Nayar must agree;
+ *   - Oren-Nayar (chapter 5): the same pair on scenes/oren_nayar.scene. With M = 1 the
+ *     rough sphere's direct light goes through eq. 21's BRDF (diffuse_brdf), with M = 0
+ *     only through the sampling weight (diffuse_sample): Oren-Nayar's two code paths
+ *     must agree;
  *   - roulette (chapter 6): alpha = 0.75 > rho^2 = 0.64 (finite variance, measure.h)
  *     against no roulette, both with one shadow ray and the same depth.
  * M = 0 finds the lamp rarely, so its samples are heavy-tailed and a pixel's mean is
@@ -19,16 +19,17 @@
  * narrowed to the rough sphere, 6 x 6 pixels of 65,536 samples (four sets of seeds:
  * largest |z| 2.2 to 2.9, bound 3.9; over the whole scene at 16 x 16 with 8192, pixels
  * that had seen the lamp a few dozen times fell 5 standard errors below M = 1). The
- * chapter 4 test narrows the room's camera to the glass sphere likewise. Depth 4
+ * chapter 4 test narrows the room's camera to the glass sphere likewise (three sets of
+ * seeds: largest |z| 2.6 to 3.6, bound 4.23). Depth 4
  * throughout (caustics included: camera, wall, mirror, lamp), 8 for roulette;
  * Schlick's Fresnel except in chapter 4's test.
  * Deliberately broken: a lamp whose second triangle is missing from the light list (a
  * scene_prepare bug: shadow rays then find half the lamp while hitting finds all of it).
- * Planted in the library, these bugs fail (see the report to the lead): emission added
- * again after a diffuse bounce with shadow rays (chapters 3, 4, 5 tests), roulette
- * without the division by alpha (chapter 6), Oren-Nayar's sampling weight without its
- * factor (chapter 5). Not seen here: bugs that both estimators of a pair share, such as
- * a wrong Fresnel reflectance (test_fresnel.c and test_path.c hold those).
+ * Planted in the library, these bugs were rejected: emission added again after a
+ * diffuse bounce with shadow rays (by the chapter 3, 4 and 5 tests), roulette without
+ * the division by alpha (chapter 6), Oren-Nayar's sampling weight without its factor
+ * (chapter 5). Not seen here: bugs that both estimators of a pair share, such as a
+ * wrong Fresnel reflectance (test_fresnel.c and test_path.c hold those).
  */
 #include <stdarg.h>
 #include <stddef.h>

@@ -556,7 +556,8 @@ static int remove_scratch(void **state)
 static Reference sample_reference(void)
 {
     Reference reference = {.image = image_new(3, 2), .std_error = image_new(3, 2),
-                           .spp = 4096, .seconds = 12.345678901234567};
+                           .spp = 4096, .seconds = 12.345678901234567,
+                           .mean = 0.56789012345678901, .mean_std_error = 1.25e-3};
     assert_non_null(reference.image.pixels);
     assert_non_null(reference.std_error.pixels);
     for (int i = 0; i < 18; i++) {
@@ -594,6 +595,8 @@ static void test_reference_round_trip(void **state)
     assert_memory_equal(loaded.std_error.pixels, saved.std_error.pixels, 18 * sizeof(float));
     assert_true(loaded.spp == saved.spp);
     assert_true(loaded.seconds == saved.seconds);
+    assert_true(loaded.mean == saved.mean);
+    assert_true(loaded.mean_std_error == saved.mean_std_error);
     assert_int_equal(loaded.cached, 1);
     assert_true(loaded.noise == measure_rms(&saved.std_error));
     assert_true(loaded.noise > 0.0);

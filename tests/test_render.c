@@ -1,9 +1,10 @@
 /* test_render.c (chapter 1): Tests of the pixel loop (lib/render.c).
  *
  * - Determinism: the room rendered with 1, 2 and 7 threads is the same image bit for
- *   bit (every sample has its own generator, and every pixel sums its samples in order;
- *   SPEC §9). Chapter 1 renders it with Whitted at random positions; from chapter 6 on,
- *   with the path tracer and every option it has.
+ *   bit, with random positions and with sub-pixels (every sample has its own
+ *   generator, every pixel its own stratum start, and every pixel sums its samples in
+ *   order; SPEC §9). Chapter 1 renders it with Whitted; from chapter 6 on, with the path
+ *   tracer and every option it has.
  * - Estimates: with an estimator that returns a known value per sample, each pixel is
  *   the mean of its samples and its standard errors (per channel, and of the channel
  *   mean) are the textbook ones, also for a bright pixel of small spread, where only a
@@ -29,6 +30,32 @@
 #include "whitted.h"
 #endif
 
+/* Render the room with 1, 2 and 7 threads: the same images bit for bit, and the same
+ * ray counts. The one-thread result is left in *first. */
+static void assert_same_for_any_thread_count(const Scene *scene, Estimator estimate,
+                                             const void *estimator_settings,
+                                             PixelSampling sampling, RenderResult *first)
+{
+    const int threads[] = {1, 2, 7};
+    size_t bytes = 3 * 48 * 48 * sizeof(float);
+    RenderResult results[3];
+    for (int i = 0; i < 3; i++) {
+        RenderSettings settings = {48, 48, 3, sampling, threads[i], 2019, 0, "test"};
+        assert_int_equal(render(scene, &settings, estimate, estimator_settings, &results[i]), 0);
+        assert_int_equal(results[i].threads, threads[i]);
+    }
+    for (int i = 1; i < 3; i++) {
+        assert_memory_equal(results[0].image.pixels, results[i].image.pixels, bytes);
+        assert_memory_equal(results[0].std_error.pixels, results[i].std_error.pixels, bytes);
+        assert_memory_equal(results[0].average_std_error.pixels,
+                            results[i].average_std_error.pixels, bytes);
+        assert_true(results[0].rays.bounce == results[i].rays.bounce);
+        assert_true(results[0].rays.shadow == results[i].rays.shadow);
+        render_result_free(&results[i]);
+    }
+    *first = results[0];
+}
+
 static void test_same_image_for_any_thread_count(void **state)
 {
     (void)state;
@@ -45,29 +72,17 @@ static void test_same_image_for_any_thread_count(void **state)
     WhittedSettings path = {10};
 #endif
     assert_int_equal(scene_load(scene_file, &scene, error, sizeof error), 0);
-    const int threads[] = {1, 2, 7};
-    RenderResult results[3];
-    for (int i = 0; i < 3; i++) {
-        RenderSettings settings = {48, 48, 3, PIXEL_RANDOM, threads[i], 2019, 0, "test"};
-        assert_int_equal(render(&scene, &settings, estimate, &path, &results[i]), 0);
-        assert_int_equal(results[i].threads, threads[i]);
-    }
-    size_t bytes = 3 * 48 * 48 * sizeof(float);
-    for (int i = 1; i < 3; i++) {
-        assert_memory_equal(results[0].image.pixels, results[i].image.pixels, bytes);
-        assert_memory_equal(results[0].std_error.pixels, results[i].std_error.pixels, bytes);
-        assert_memory_equal(results[0].average_std_error.pixels,
-                            results[i].average_std_error.pixels, bytes);
-        assert_true(results[0].rays.bounce == results[i].rays.bounce);
-        assert_true(results[0].rays.shadow == results[i].rays.shadow);
-    }
+    RenderResult random, subpixels;
+    assert_same_for_any_thread_count(&scene, estimate, &path, PIXEL_RANDOM, &random);
+    assert_same_for_any_thread_count(&scene, estimate, &path, PIXEL_SUBPIXELS, &subpixels);
     /* A different seed gives a different image: the test above is not vacuous. */
+    size_t bytes = 3 * 48 * 48 * sizeof(float);
     RenderSettings other = {48, 48, 3, PIXEL_RANDOM, 2, 2020, 0, "test"};
     RenderResult different;
     assert_int_equal(render(&scene, &other, estimate, &path, &different), 0);
-    assert_true(memcmp(results[0].image.pixels, different.image.pixels, bytes) != 0);
-    for (int i = 0; i < 3; i++)
-        render_result_free(&results[i]);
+    assert_true(memcmp(random.image.pixels, different.image.pixels, bytes) != 0);
+    render_result_free(&random);
+    render_result_free(&subpixels);
     render_result_free(&different);
     scene_free(&scene);
 }
