@@ -16,9 +16,9 @@
  * a point-relative offset. Nor may it be absolute: an absolute floor of RAY_OFFSET
  * (this file until issue 9) jumped through the walls of a room scaled by 1e-12 and
  * left half its pixels black. RAY_OFFSET sits between two limits, both tested at scene
- * scales 1e-12 to 1e40 (tests/test_scene.c): above the rounding error of hit points (a
- * few ulps of the scale), and below the gap to the nearest other surface: two planes
- * 1e-6 of the scene apart must still see each other. Moving along the normal rather
+ * scales from 1e-45 to 1e45 (tests/test_scene.c): above the rounding error of hit
+ * points (a few ulps of the scale), and below the gap to the nearest other surface: two
+ * planes 1e-6 of the scene apart must still see each other. Moving along the normal rather
  * than along the ray keeps the offset effective at grazing angles, and choosing the
  * side by the new direction makes refraction into a sphere and shadow rays behave alike.
  */
