@@ -7,7 +7,8 @@
 #   make diff-chapterN    what chapter N adds to chapter N-1, as a unified diff
 #   make source-chapterN  the clean source of chapter N in build/source/chapterN/
 #   make sanitize         the tests under AddressSanitizer and UndefinedBehaviorSanitizer
-#   make fuzz             run the libFuzzer targets (FUZZ_SECONDS each)
+#   make fuzz             run the libFuzzer targets (scene reader, command line), each for
+#                         FUZZ_SECONDS
 #   make bench            the speed benchmark (a benchmark, not a test)
 #   make gallery          rewrite build/figures/index.html from the figures there
 #   make browser-test     open that page in headless Chromium and check every image loads
@@ -188,16 +189,36 @@ sanitize:
 	    CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
 	    LDFLAGS="-fsanitize=address,undefined" test
 
-FUZZ_BIN := $(BUILD)/fuzz/fuzz_scene_file
-FUZZ_SRC := $(addprefix lib/,scene_file.c scene.c bvh.c triangle.c sphere.c camera.c ray.c vec.c rng.c)
-$(FUZZ_BIN): tests/fuzz_scene_file.c $(FUZZ_SRC) | $(DEPS_OK)
-	@sh .ci/install-deps clang
-	@mkdir -p $(@D) $(BUILD)/fuzz/corpus
-	clang $(REQUIRED) -DCHAPTER=$(FINAL) -Ilib -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $^ -lm -o $@
+# The libFuzzer targets, under AddressSanitizer and UndefinedBehaviorSanitizer, each for
+# FUZZ_SECONDS: fuzz_scene_file gives any bytes to the scene reader; fuzz_argv gives any
+# command line to cli_parse, compiled with its exit() renamed so that it jumps back to
+# the target instead of ending the process (tests/fuzz_argv.c).
+FUZZ_DIR       := $(BUILD)/fuzz
+FUZZ_SANITIZE  := address,undefined -fno-sanitize-recover=all
+FUZZ_FLAGS     := $(REQUIRED) -DCHAPTER=$(FINAL) -Ilib -Ichapters -g -O1
+FUZZ_SCENE_SRC := $(addprefix lib/,scene_file.c scene.c bvh.c triangle.c sphere.c camera.c ray.c vec.c rng.c)
+FUZZ_BINS      := $(FUZZ_DIR)/fuzz_scene_file $(FUZZ_DIR)/fuzz_argv
 
-fuzz: $(FUZZ_BIN)
-	$(FUZZ_BIN) -max_total_time=$(FUZZ_SECONDS) -timeout=5 -max_len=4096 \
-	    $(BUILD)/fuzz/corpus tests/fuzz_corpus scenes
+$(FUZZ_DIR)/fuzz_scene_file: tests/fuzz_scene_file.c $(FUZZ_SCENE_SRC) | $(DEPS_OK)
+	@sh .ci/install-deps clang
+	@mkdir -p $(@D)
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer,$(FUZZ_SANITIZE) $^ -lm -o $@
+
+$(FUZZ_DIR)/cli.o: chapters/cli.c chapters/cli.h | $(DEPS_OK)
+	@sh .ci/install-deps clang
+	@mkdir -p $(@D)
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link,$(FUZZ_SANITIZE) -Dexit=fuzz_argv_exit -c $< -o $@
+
+$(FUZZ_DIR)/fuzz_argv: tests/fuzz_argv.c $(FUZZ_DIR)/cli.o
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer,$(FUZZ_SANITIZE) $^ -lm -o $@
+
+# New inputs go to the first directory, under $(FUZZ_DIR); the seeds stay in tests/.
+fuzz: $(FUZZ_BINS)
+	@mkdir -p $(FUZZ_DIR)/corpus/scene_file $(FUZZ_DIR)/corpus/argv
+	$(FUZZ_DIR)/fuzz_scene_file -max_total_time=$(FUZZ_SECONDS) -timeout=5 -max_len=4096 \
+	    $(FUZZ_DIR)/corpus/scene_file tests/fuzz_corpus/scene_file scenes
+	$(FUZZ_DIR)/fuzz_argv -max_total_time=$(FUZZ_SECONDS) -timeout=5 -max_len=1024 \
+	    -close_fd_mask=3 $(FUZZ_DIR)/corpus/argv tests/fuzz_corpus/argv
 
 # The benchmark: speed, not correctness (BENCH_ARGS="--size 400" to change it).
 BENCH_ARGS ?=

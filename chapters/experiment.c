@@ -80,48 +80,15 @@ static void check_output_directory(const Options *options)
         cli_fail(1, "--out %s: cannot write there: %s", options->out, strerror(saved_errno));
 }
 
-/* Read at most EXPERIMENT_SCENE_MAX bytes of `path` into scene_text. */
-static void read_scene_bytes(const char *path)
-{
-    FILE *file = fopen(path, "rb");
-    if (!file)
-        cli_fail(2, "%s:0: cannot open: %s", path, strerror(errno));
-    size_t capacity = 1 << 16;
-    scene_text = malloc(capacity);
-    scene_length = 0;
-    while (scene_text) {
-        size_t n = fread(scene_text + scene_length, 1, capacity - scene_length, file);
-        scene_length += n;
-        if (n == 0)
-            break;
-        if (scene_length > EXPERIMENT_SCENE_MAX)
-            break;
-        if (scene_length == capacity) {
-            capacity *= 2;
-            char *grown = realloc(scene_text, capacity);
-            if (!grown)
-                free(scene_text);
-            scene_text = grown;
-        }
-    }
-    int read_error = ferror(file);
-    fclose(file);
-    if (!scene_text)
-        cli_fail(1, "%s: out of memory reading the scene", path);
-    if (read_error)
-        cli_fail(2, "%s:0: cannot read: %s", path, strerror(errno));
-    if (scene_length > EXPERIMENT_SCENE_MAX)
-        cli_fail(2, "%s:0: larger than %u MiB: not a scene file", path, EXPERIMENT_SCENE_MAX >> 20);
-}
-
 void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
                       Options *options, Scene *scene)
 {
     cli_parse(argc, argv, info, options);
+    render_install_interrupt(); /* from the start: temporary files are removed on a signal */
     check_output_directory(options);
-    read_scene_bytes(options->scene);
     char error[4400];
-    if (scene_parse(scene_text, scene_length, options->scene, scene, error, sizeof error) != 0)
+    if (scene_file_read(options->scene, &scene_text, &scene_length, error, sizeof error) != 0 ||
+        scene_parse(scene_text, scene_length, options->scene, scene, error, sizeof error) != 0)
         cli_fail(2, "%s", error);
     if (need == NEEDS_POINT_LIGHT && scene->point_light_count == 0)
         cli_fail(2, "%s:%d: no point_light: %s needs one", scene->source, scene->line_count,
@@ -379,7 +346,7 @@ void experiment_path_reference(const Options *options, const Scene *scene,
                     options->quiet ? "--quiet" : NULL, NULL};
     /* The key: the scene's bytes, everything the program is told but where to write, and
      * the program itself. */
-    uint64_t key = measure_hash(MEASURE_HASH_START, scene_text, scene_length);
+    uint64_t key = scene->source_hash;
     for (int i = 5; i < 17; i++)
         key = measure_hash(key, argv[i], strlen(argv[i]) + 1);
     key = measure_hash(key, &(uint64_t){program_identity(program)}, sizeof(uint64_t));

@@ -38,12 +38,11 @@ typedef enum { NEEDS_POINT_LIGHT, NEEDS_AREA_LIGHT } LightNeed;
 
 /* Every chapter program's first lines: parse the command line (cli_parse), check that
  * --out can be written (before any time is spent rendering), then read options->scene
- * once (at most EXPERIMENT_SCENE_MAX bytes; a pipe or FIFO works) and parse it, or exit
+ * once (scene_file_read: a pipe or FIFO works) and parse it, or exit
  * with status 2 and the reader's message. Also an error: a scene without the kind of
  * light the chapter needs, or with a material this chapter does not have yet. Without
  * the figures' font, exit with status 1 (before any rendering), as
  * experiment_write_figure would. */
-#define EXPERIMENT_SCENE_MAX (64u << 20)
 void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
                       Options *options, Scene *scene);
 

@@ -82,7 +82,7 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
             add_emission = 1;
         }
         counts->bounce++;
-        ray = ray_spawn(hit.point, n, direction);
+        ray = ray_spawn(hit.point, n, direction, scene->scale);
     }
     return radiance;
 }

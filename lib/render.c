@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include "atomic_file.h"
+
 /* What one pixel has received so far: for the three channels and their mean (index 3),
  * Welford's running mean and M2 (render.h). */
 typedef struct {
@@ -38,19 +40,31 @@ typedef struct {
 
 static volatile sig_atomic_t interrupt_requested = 0;
 
-static void on_interrupt(int signal_number)
+/* The one signal path. The first SIGINT asks a running render to stop early (it saves
+ * what it has). SIGTERM, SIGHUP and a second SIGINT end the program: first the
+ * temporary files being written are removed (atomic_file.h), then the signal is raised
+ * again with its default action, so the program dies of it as it would have. */
+static void on_signal(int signal_number)
 {
-    (void)signal_number;
-    interrupt_requested = 1;
+    if (signal_number == SIGINT && !interrupt_requested) {
+        interrupt_requested = 1;
+        return;
+    }
+    atomic_remove_temporaries();
+    signal(signal_number, SIG_DFL);
+    raise(signal_number); /* delivered when this handler returns */
 }
 
 void render_install_interrupt(void)
 {
+    static const int handled[] = {SIGINT, SIGTERM, SIGHUP};
     struct sigaction action = {0};
-    action.sa_handler = on_interrupt;
-    action.sa_flags = SA_RESETHAND; /* a second SIGINT kills as usual */
+    action.sa_handler = on_signal;
     sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, NULL);
+    for (int i = 0; i < 3; i++)
+        sigaddset(&action.sa_mask, handled[i]); /* one at a time */
+    for (int i = 0; i < 3; i++)
+        sigaction(handled[i], &action, NULL);
 }
 
 int render_interrupted(void)

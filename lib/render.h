@@ -76,7 +76,8 @@ void render_result_free(RenderResult *result);
 double render_samples_per_pixel(const RenderResult *result);
 
 /* From now on, SIGINT asks a running render to stop early instead of killing the
- * program; a second SIGINT kills as usual. */
+ * program. SIGTERM, SIGHUP and a second SIGINT still end it, as their default action
+ * does, but only after removing the temporary files being written (atomic_file.h). */
 void render_install_interrupt(void);
 
 /* Whether SIGINT has asked to stop. */

@@ -12,20 +12,37 @@
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
+#include <stdint.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
-/* Numbers beyond this magnitude are refused: areas (size^2) and volumes (size^3) of
- * the geometry must stay finite in double precision. */
-#define NUMBER_MAX 1e100
+/* The scales the reader accepts: numbers within +-NUMBER_MAX, and every shape (and the
+ * camera's image plane) at least SIZE_MIN across. The geometry computes up to fourth
+ * powers of a shape's size (the squared length of a cross product of two edges), and
+ * those must stay well inside double precision's range, 1e-308 to 1e308: 1e77 already
+ * overflowed (issue 9, case 11), 1e-80 underflows. Within this range the renderer works
+ * at any scale (the ray offset is relative to the scene, ray.h). */
+#define NUMBER_MAX 1e50
+#define SIZE_MIN 1e-50
 
 /* A shape thinner than this fraction of its size is flat: a triangle of zero area, a
  * non-planar quad, a tetrahedron of zero volume, a camera with a degenerate image plane.
- * Relative, so that the same scene scaled by 1e-3 or 1e3 reads the same. */
+ * Relative, so that the same scene scaled by 1e-12 or 1e12 reads the same. */
 #define FLAT 1e-9
+
+/* Emitted radiance, and point lights' intensity, above this are refused. A sample is
+ * the emission times a gain (reflectances <= 1, a light's area over a squared
+ * distance); 1e20 leaves that gain 18 orders of magnitude before the images' 32-bit
+ * floats (at most 3.4e38) overflow, where 1e100 gave +inf pixels (issue 9, case 12). */
+#define EMISSION_MAX 1e20
+
+/* A scene file larger than this is refused, before more is read (/dev/zero gives up
+ * at once instead of filling the memory). */
+#define SCENE_BYTES_MAX ((size_t)64 << 20)
+#define SCENE_BYTES_MAX_TEXT "64 MiB"
 
 /* The most numbers a line holds (camera, quad, tetrahedron). */
 #define NUMBERS_MAX 12
@@ -59,16 +76,35 @@ struct Form {
     const char *usage;
 };
 
-/* Write "NAME:LINE: message" into the error buffer. Always returns -1. */
+/* Write "NAME:LINE: reason" into error[size]. A name too long to leave room for the
+ * rest is shortened in its middle, "start...end", so that the line and the reason are
+ * always there (a 609-character path used to cut them off: issue 9, case 16). */
+static void write_message(char *error, size_t size, const char *name, int line,
+                          const char *reason)
+{
+    char rest[640];
+    int rest_length = snprintf(rest, sizeof rest, ":%d: %s", line, reason);
+    size_t name_length = strlen(name), room = size - 1;
+    if (rest_length < 0 || name_length + (size_t)rest_length <= room ||
+        room < (size_t)rest_length + 3 + 16) {
+        snprintf(error, size, "%s%s", name, rest); /* whole, or a buffer too small to help */
+        return;
+    }
+    size_t keep = room - (size_t)rest_length - 3; /* the name's bytes around the "..." */
+    size_t head = keep / 3, tail = keep - head;
+    snprintf(error, size, "%.*s...%s%s", (int)head, name, name + name_length - tail, rest);
+}
+
+/* Report "NAME:LINE: message" into the error buffer. Always returns -1. */
 static int fail(Reader *r, const char *format, ...)
 {
-    int used = snprintf(r->error, r->error_size, "%s:%d: ", r->name, r->line);
-    if (used >= 0 && (size_t)used < r->error_size) {
-        va_list args;
-        va_start(args, format);
-        vsnprintf(r->error + used, r->error_size - (size_t)used, format, args);
-        va_end(args);
-    }
+    char reason[512];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(reason, sizeof reason, format, args);
+    va_end(args);
+    if (r->error_size > 0)
+        write_message(r->error, r->error_size, r->name, r->line, reason);
     return -1;
 }
 
@@ -92,12 +128,26 @@ static double size_of(const Vec3 *p, int count)
     return size;
 }
 
+/* Whether a shape of this size (not 0: that is a degenerate shape) is below SIZE_MIN. */
+static int size_too_small(double size)
+{
+    return size > 0.0 && size < SIZE_MIN;
+}
+
+static int fail_too_small(Reader *r, const char *what, double size)
+{
+    return fail(r, "%s %g across is too small: the reader takes sizes from %g to %g",
+                what, size, SIZE_MIN, NUMBER_MAX);
+}
+
 /* Add triangle (a, b, c), front side (b - a) x (c - a), unless it has no area. */
 static int add_triangle(Reader *r, const Statement *s, Vec3 a, Vec3 b, Vec3 c)
 {
     Vec3 corners[3] = {a, b, c};
     double size = size_of(corners, 3);
     double twice_area = vec3_length(vec3_cross(vec3_sub(b, a), vec3_sub(c, a)));
+    if (size_too_small(size))
+        return fail_too_small(r, s->form->keyword, size);
     if (!(twice_area > FLAT * size * size))
         return fail(r, "degenerate %s (zero area)", s->form->keyword);
     if (scene_add_triangle(r->scene, triangle_make(a, b, c, s->material)) < 0)
@@ -121,6 +171,8 @@ static int read_camera(Reader *r, const Statement *s)
     Vec3 right = vec3_sub(br, bl), up = vec3_sub(tl, bl);
     Vec3 normal = vec3_cross(right, up);
     double size = fmax(vec3_length(right), vec3_length(up));
+    if (size_too_small(size))
+        return fail_too_small(r, "camera: the image plane", size);
     if (!(vec3_length(normal) > FLAT * size * size))
         return fail(r, "degenerate camera: the image plane's corners are collinear");
     double eye_height = fabs(vec3_dot(vec3_sub(eye, bl), vec3_normalize(normal)));
@@ -160,6 +212,9 @@ static int read_material(Reader *r, const Statement *s)
     } else if (m.kind == MATERIAL_LIGHT) {
         if (!is_non_negative(colour))
             return fail(r, "negative emission %g %g %g", colour.x, colour.y, colour.z);
+        if (!(vec3_max_component(colour) <= EMISSION_MAX))
+            return fail(r, "emission %g %g %g above %g: the image's radiance must stay "
+                           "finite", colour.x, colour.y, colour.z, EMISSION_MAX);
         m.emission = colour;
     } else {
         if (!in_unit_interval(colour))
@@ -187,6 +242,8 @@ static int read_quad(Reader *r, const Statement *s)
     Vec3 p[4] = {point(s->n), point(s->n + 3), point(s->n + 6), point(s->n + 9)};
     double size = size_of(p, 4);
     Vec3 normal = vec3_cross(vec3_sub(p[1], p[0]), vec3_sub(p[2], p[0]));
+    if (size_too_small(size))
+        return fail_too_small(r, "quad", size);
     if (!(vec3_length(normal) > FLAT * size * size))
         return fail(r, "degenerate quad (zero area)");
     normal = vec3_normalize(normal);
@@ -209,6 +266,8 @@ static int read_sphere(Reader *r, const Statement *s)
                        "boxes or tetrahedra");
     if (!(s->n[3] > 0.0))
         return fail(r, "sphere radius %g must be > 0", s->n[3]);
+    if (size_too_small(s->n[3]))
+        return fail_too_small(r, "sphere: a radius of", s->n[3]);
     Sphere sphere = {point(s->n), s->n[3], s->material};
     if (scene_add_sphere(r->scene, sphere) < 0)
         return fail(r, "out of memory");
@@ -250,6 +309,8 @@ static int read_tetrahedron(Reader *r, const Statement *s)
     double size = size_of(p, 4);
     double six_volume = vec3_dot(vec3_sub(p[1], p[0]),
                                  vec3_cross(vec3_sub(p[2], p[0]), vec3_sub(p[3], p[0])));
+    if (size_too_small(size))
+        return fail_too_small(r, "tetrahedron", size);
     if (!(fabs(six_volume) > FLAT * size * size * size))
         return fail(r, "flat tetrahedron (zero volume)");
     for (int opposite = 0; opposite < 4; opposite++) {
@@ -267,6 +328,9 @@ static int read_point_light(Reader *r, const Statement *s)
     PointLight light = {point(s->n), point(s->n + 3)};
     if (!is_non_negative(light.intensity))
         return fail(r, "negative point_light intensity");
+    if (!(vec3_max_component(light.intensity) <= EMISSION_MAX))
+        return fail(r, "point_light intensity above %g: the image's radiance must stay "
+                       "finite", EMISSION_MAX);
     if (scene_add_point_light(r->scene, light) < 0)
         return fail(r, "out of memory");
     return 0;
@@ -356,8 +420,8 @@ static int read_number(Reader *r, const char *token, double *value)
         return fail(r, "'%.40s' is not a decimal number", token);
     *value = strtod(token, NULL);
     if (!(fabs(*value) <= NUMBER_MAX))
-        return fail(r, "'%.40s' is out of range: numbers are finite and within +-1e100",
-                    token);
+        return fail(r, "'%.40s' is out of range: numbers are finite and within +-%g "
+                       "(the scales the reader takes)", token, NUMBER_MAX);
     return 0;
 }
 
@@ -388,11 +452,11 @@ static int read_statement(Reader *r, char **tokens, int count)
     return s.form->read(r, &s);
 }
 
-/* Split `line` in place at white space, up to a '#'. Returns the number of tokens. */
+/* Split `line` in place at white space; the comment is already cut off. Returns the
+ * number of tokens. */
 static int split(char *line, char **tokens)
 {
     int count = 0;
-    line[strcspn(line, "#")] = '\0';
     for (char *p = line; *p;) {
         while (isspace((unsigned char)*p))
             p++;
@@ -407,30 +471,104 @@ static int split(char *line, char **tokens)
     return count;
 }
 
-/* Read every line of the text; the scene is complete but not yet checked as a whole. */
+/* The code point of the UTF-8 sequence at p[0..n), or -1 if it is not one (a stray
+ * byte, an overlong form, a surrogate). */
+static long utf8_code_point(const unsigned char *p, size_t n)
+{
+    int length = p[0] >= 0xF0 ? 4 : p[0] >= 0xE0 ? 3 : p[0] >= 0xC0 ? 2 : 0;
+    static const long smallest[5] = {0, 0, 0x80, 0x800, 0x10000};
+    if (length == 0 || p[0] >= 0xF8 || (size_t)length > n)
+        return -1;
+    long code = p[0] & (0x7F >> length);
+    for (int i = 1; i < length; i++) {
+        if ((p[i] & 0xC0) != 0x80)
+            return -1;
+        code = code << 6 | (p[i] & 0x3F);
+    }
+    if (code < smallest[length] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
+        return -1;
+    return code;
+}
+
+/* What an editor or a copy from a web page or a word processor puts into text unseen. */
+static const char *character_name(long code)
+{
+    switch (code) {
+    case 0x00A0: return " (a no-break space?)";
+    case 0x2009: return " (a thin space?)";
+    case 0x200B: return " (a zero-width space?)";
+    case 0x202F: return " (a narrow no-break space?)";
+    case 0xFEFF: return " (a byte order mark?)";
+    case 0x2212: return " (a minus sign? write '-')";
+    case 0x2013: return " (an en dash? write '-')";
+    default: return "";
+    }
+}
+
+/* Outside comments a scene is plain ASCII: report the first other byte of line[0..n),
+ * by its code point when it starts a UTF-8 character, never as the raw bytes (which
+ * may be invisible). Returns 0 when there is none. */
+static int check_ascii(Reader *r, const char *line, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)line[i];
+        if (c >= 0x20 && c < 0x7F)
+            continue;
+        if (c == '\t' || c == '\v' || c == '\f')
+            continue;
+        if (c < 0x80)
+            return fail(r, "control character 0x%02X in column %zu", c, i + 1);
+        long code = utf8_code_point((const unsigned char *)line + i, n - i);
+        if (code < 0)
+            return fail(r, "byte 0x%02X in column %zu is not ASCII (nor UTF-8): outside "
+                           "comments, a scene file is plain ASCII", c, i + 1);
+        return fail(r, "non-ASCII character U+%04lX%s in column %zu: outside comments, a "
+                       "scene file is plain ASCII", code, character_name(code), i + 1);
+    }
+    return 0;
+}
+
+/* The length of the line at `start` (ending at \n, \r\n or \r, or at `end`); *next is
+ * where the following line begins. */
+static size_t line_length(const char *start, const char *end, const char **next)
+{
+    const char *p = start;
+    while (p < end && *p != '\n' && *p != '\r')
+        p++;
+    *next = p == end ? end : p + 1 + (*p == '\r' && p + 1 < end && p[1] == '\n');
+    return (size_t)(p - start);
+}
+
+/* Read every line of the text; the scene is complete but not yet checked as a whole.
+ * A UTF-8 byte order mark at the very start is skipped (editors on Windows add it). */
 static int read_lines(Reader *r, const char *text, size_t length)
 {
     char line[SCENE_LINE_MAX + 1];
     char *tokens[SCENE_LINE_MAX / 2 + 1];
     const char *end = text + length;
-    for (const char *start = text; start < end;) {
+    const char *start = text;
+    if (length >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
+        start += 3;
+    while (start < end) {
         if (r->line == INT_MAX)
             return fail(r, "more than %d lines", INT_MAX);
         r->line++;
-        const char *newline = memchr(start, '\n', (size_t)(end - start));
-        size_t n = (size_t)((newline ? newline : end) - start);
-        if (n > 0 && start[n - 1] == '\r')
-            n--;
+        const char *next;
+        size_t n = line_length(start, end, &next);
         if (n > SCENE_LINE_MAX)
             return fail(r, "line longer than %d bytes", SCENE_LINE_MAX);
         if (memchr(start, '\0', n))
             return fail(r, "a NUL byte in the text");
-        memcpy(line, start, n);
-        line[n] = '\0';
+        const char *comment = memchr(start, '#', n);
+        size_t statement = comment ? (size_t)(comment - start) : n;
+        if (check_ascii(r, start, statement) != 0)
+            return -1;
+        memcpy(line, start, statement);
+        line[statement] = '\0';
         int count = split(line, tokens);
         if (count > 0 && read_statement(r, tokens, count) != 0)
             return -1;
-        start = newline ? newline + 1 : end;
+        start = next;
     }
     return 0;
 }
@@ -440,8 +578,9 @@ int scene_parse(const char *text, size_t length, const char *name, Scene *scene,
 {
     Reader r = {name, 0, 0, scene, error, error_size};
     scene_init(scene);
-    snprintf(scene->source, sizeof scene->source, "%s", name);
-    int status = read_lines(&r, text, length);
+    scene->source = strdup(name);
+    scene->source_hash = scene_hash(SCENE_HASH_START, text, length);
+    int status = scene->source ? read_lines(&r, text, length) : fail(&r, "out of memory");
     if (status == 0 && !scene->has_camera)
         status = fail(&r, "no camera (a scene declares exactly one)");
     if (status == 0 && scene_prepare(scene) != 0)
@@ -454,25 +593,40 @@ int scene_parse(const char *text, size_t length, const char *name, Scene *scene,
     return 0;
 }
 
-/* Read the whole file, or report why not at line 0. */
-int scene_load(const char *path, Scene *scene, char *error, size_t error_size)
+/* Read the whole file once, up to SCENE_BYTES_MAX, or report why not at line 0. Pipes,
+ * FIFOs and /dev/stdin are read like files: the bytes are kept, never read again. */
+int scene_file_read(const char *path, char **text_out, size_t *length_out, char *error,
+                    size_t error_size)
 {
-    Reader r = {path, 0, 0, scene, error, error_size};
-    scene_init(scene);
+    Reader r = {path, 0, 0, NULL, error, error_size};
     FILE *file = fopen(path, "rb");
     if (!file)
         return fail(&r, "cannot open: %s", strerror(errno));
     struct stat info;
-    if (fstat(fileno(file), &info) == 0 && S_ISDIR(info.st_mode)) {
+    int known = fstat(fileno(file), &info) == 0;
+    if (known && S_ISDIR(info.st_mode)) {
         fclose(file);
         return fail(&r, "cannot read: %s", strerror(EISDIR));
+    }
+    if (known && S_ISREG(info.st_mode) && (uintmax_t)info.st_size > SCENE_BYTES_MAX) {
+        fclose(file);
+        return fail(&r, "larger than " SCENE_BYTES_MAX_TEXT " (%jd bytes), the limit for a "
+                        "scene file", (intmax_t)info.st_size);
     }
     char *text = NULL;
     size_t length = 0, capacity = 0;
     int status = 0;
     for (;;) {
         if (length == capacity) {
+            if (capacity > SCENE_BYTES_MAX) {
+                status = fail(&r, "larger than " SCENE_BYTES_MAX_TEXT
+                                  ", the limit for a scene file");
+                break;
+            }
+            /* Doubling, up to one byte beyond the limit: enough to see it passed. */
             capacity = capacity ? 2 * capacity : 4096;
+            if (capacity > SCENE_BYTES_MAX)
+                capacity = SCENE_BYTES_MAX + 1;
             char *grown = realloc(text, capacity);
             if (!grown) {
                 status = fail(&r, "out of memory");
@@ -489,8 +643,23 @@ int scene_load(const char *path, Scene *scene, char *error, size_t error_size)
             break;
     }
     fclose(file);
-    if (status == 0)
-        status = scene_parse(text, length, path, scene, error, error_size);
+    if (status != 0) {
+        free(text);
+        return -1;
+    }
+    *text_out = text;
+    *length_out = length;
+    return 0;
+}
+
+int scene_load(const char *path, Scene *scene, char *error, size_t error_size)
+{
+    scene_init(scene);
+    char *text;
+    size_t length;
+    if (scene_file_read(path, &text, &length, error, error_size) != 0)
+        return -1;
+    int status = scene_parse(text, length, path, scene, error, error_size);
     free(text);
     return status;
 }

@@ -5,7 +5,7 @@
  * a ray re-launched from a hit point with ray_spawn must never find the surface it
  * left at t ~ 0, must still find a surface a hair away, and a shadow ray between two
  * surface points must not be blocked by either end's own surface. All of it at scene
- * scales 1e-3, 1 and 1e3.
+ * scales from 1e-45 to 1e45.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -13,13 +13,18 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include <stdio.h>
 #include <string.h>
 
 #include "check.h"
 #include "rng.h"
 #include "scene.h"
+#include "scene_file.h"
 
-static const double scales[] = {1e-3, 1.0, 1e3};
+/* From the smallest to the largest scale the reader takes (scene_file.c: sizes 1e-50
+ * to 1e50), through 1e-12, where an absolute ray offset failed (issue 9, case 10). */
+static const double scales[] = {1e-45, 1e-12, 1e-3, 1.0, 1e3, 1e45};
+#define SCALE_COUNT (int)(sizeof scales / sizeof scales[0])
 
 /* A random direction on the side of the surface that `normal` points to. */
 static Vec3 random_direction_along(Rng *rng, Vec3 normal)
@@ -137,7 +142,7 @@ static void test_no_acne_on_triangles(void **state)
 {
     (void)state;
     Rng rng = rng_for_sample(31, 0, 0);
-    for (int i = 0; i < 3; i++)
+    for (int i = 0; i < SCALE_COUNT; i++)
         for (int near_origin = 0; near_origin < 2; near_origin++) {
             double s = scales[i];
             Scene scene;
@@ -155,7 +160,7 @@ static void test_no_acne_on_triangles(void **state)
                 Hit hit, again;
                 assert_true(scene_intersect(&scene, ray_through(eye, target), INFINITY, &hit));
                 Vec3 dir = random_direction_along(&rng, rng_uniform(&rng) < 0.5 ? n : vec3_neg(n));
-                if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir), INFINITY, &again))
+                if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, scene.scale), INFINITY, &again))
                     fail_msg("scale %g: self-hit at t = %g, %g from the origin", s, again.t,
                              vec3_length(hit.point));
             }
@@ -171,7 +176,7 @@ static void test_no_acne_on_spheres(void **state)
 {
     (void)state;
     Rng rng = rng_for_sample(32, 0, 0);
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < SCALE_COUNT; i++) {
         double s = scales[i];
         Scene scene;
         scene_init(&scene);
@@ -186,11 +191,11 @@ static void test_no_acne_on_spheres(void **state)
             if (!scene_intersect(&scene, first, INFINITY, &hit))
                 continue;
             Vec3 out = random_direction_along(&rng, hit.normal);
-            if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, out), INFINITY, &again))
+            if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, out, scene.scale), INFINITY, &again))
                 fail_msg("scale %g: outward ray hit the sphere at t = %g", s, again.t);
             Vec3 in = random_direction_along(&rng, vec3_neg(hit.normal));
             double cos_theta = -vec3_dot(in, hit.normal);
-            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, in), INFINITY, &again));
+            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, in, scene.scale), INFINITY, &again));
             if (!(again.t > sphere.radius * cos_theta))
                 fail_msg("scale %g: inward ray hit at t = %g, chord %g", s, again.t,
                          2 * sphere.radius * cos_theta);
@@ -206,7 +211,7 @@ static void test_near_parallel_planes(void **state)
 {
     (void)state;
     Rng rng = rng_for_sample(33, 0, 0);
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < SCALE_COUNT; i++) {
         double s = scales[i], gap = 1e-6 * s;
         Scene scene;
         scene_init(&scene);
@@ -231,7 +236,7 @@ static void test_near_parallel_planes(void **state)
             do
                 dir = random_direction_along(&rng, towards);
             while (vec3_dot(dir, towards) < 0.5);
-            int found = scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir), INFINITY, &near);
+            int found = scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, scene.scale), INFINITY, &near);
             if (!found || (near.triangle >= 2) != up)
                 fail_msg("scale %g: missed the plane %g away (found %d, triangle %d)", s, gap,
                          found, found ? near.triangle : -1);
@@ -249,7 +254,7 @@ static void test_corner(void **state)
 {
     (void)state;
     Rng rng = rng_for_sample(34, 0, 0);
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < SCALE_COUNT; i++) {
         double s = scales[i], d = 1e-6 * s;
         Scene scene;
         scene_init(&scene);
@@ -270,7 +275,7 @@ static void test_corner(void **state)
             /* towards the wall (-x), rising at most 45 degrees above the floor */
             double rise = rng_uniform(&rng), swing = rng_uniform(&rng) - 0.5;
             Vec3 dir = vec3_normalize(vec3(-1, swing, rise));
-            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir), INFINITY, &wall));
+            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, scene.scale), INFINITY, &wall));
             if (wall.triangle < 2)
                 fail_msg("scale %g: hit the floor again at t = %g", s, wall.t);
         }
@@ -285,7 +290,7 @@ static void test_occluded(void **state)
 {
     (void)state;
     Rng rng = rng_for_sample(35, 0, 0);
-    for (int i = 0; i < 3; i++)
+    for (int i = 0; i < SCALE_COUNT; i++)
         for (int blocked = 0; blocked < 2; blocked++) {
             double s = scales[i];
             Scene scene;
@@ -316,7 +321,7 @@ static void test_occluded(void **state)
 static void test_occluded_by_spheres(void **state)
 {
     (void)state;
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < SCALE_COUNT; i++) {
         double s = scales[i];
         Scene scene;
         scene_init(&scene);
@@ -332,6 +337,124 @@ static void test_occluded_by_spheres(void **state)
         assert_false(scene_occluded(&scene, beside, floor_up, vec3(3 * s, 0, 6 * s), floor_up));
         scene_free(&scene);
     }
+}
+
+/* `in` scaled by s, into a new prepared scene: triangles from their stored corners, so
+ * that the copy with s = 1 is the reference the scaled copies are compared with. */
+static void scale_scene(const Scene *in, double s, Scene *out)
+{
+    scene_init(out);
+    for (int i = 0; i < in->material_count; i++)
+        scene_add_material(out, in->materials[i]);
+    for (int i = 0; i < in->triangle_count; i++) {
+        const Triangle *t = &in->triangles[i];
+        scene_add_triangle(out, triangle_make(vec3_scale(t->v0, s),
+                                              vec3_scale(vec3_add(t->v0, t->e1), s),
+                                              vec3_scale(vec3_add(t->v0, t->e2), s), t->material));
+    }
+    for (int i = 0; i < in->sphere_count; i++) {
+        Sphere sphere = in->spheres[i];
+        sphere.center = vec3_scale(sphere.center, s);
+        sphere.radius *= s;
+        scene_add_sphere(out, sphere);
+    }
+    const Camera *c = &in->camera;
+    out->camera = camera_make(vec3_scale(c->eye, s), vec3_scale(c->bottom_left, s),
+                              vec3_scale(vec3_add(c->bottom_left, c->right), s),
+                              vec3_scale(vec3_add(c->bottom_left, c->up), s));
+    out->has_camera = 1;
+    assert_int_equal(scene_prepare(out), 0);
+}
+
+/* The room scaled by 2^-40 (about 1e-12, where an absolute ray offset jumped through
+ * the walls and left half the pixels black: issue 9, case 10) and by 2^130 (about
+ * 1e39). Scaling by a power of two is exact, and so is every query computed from it,
+ * the ray offset included (it is relative to the scene's scale, ray.h): from every
+ * pixel of a 32 x 32 view, the camera ray and then four bounces in random directions
+ * (the same in every copy) hit the same primitives at the same t, times the scale, as
+ * in the room itself. */
+static void test_scaled_room(void **state)
+{
+    (void)state;
+    Scene room, reference;
+    char error[512];
+    if (scene_load("scenes/room.scene", &room, error, sizeof error) != 0)
+        fail_msg("%s", error);
+    scale_scene(&room, 1.0, &reference);
+    const int exponents[] = {-40, 130};
+    for (int e = 0; e < 2; e++) {
+        double s = ldexp(1.0, exponents[e]);
+        Scene scaled;
+        scale_scene(&room, s, &scaled);
+        for (int pixel = 0; pixel < 32 * 32; pixel++) {
+            Ray a = camera_ray(&reference.camera, 32, 32, pixel % 32, pixel / 32, 0.5, 0.5);
+            Ray b = camera_ray(&scaled.camera, 32, 32, pixel % 32, pixel / 32, 0.5, 0.5);
+            Rng rng = rng_for_sample(36, (uint64_t)pixel, 0);
+            for (int bounce = 0; bounce < 5; bounce++) {
+                Hit hit_a, hit_b;
+                int found_a = scene_intersect(&reference, a, INFINITY, &hit_a);
+                int found_b = scene_intersect(&scaled, b, INFINITY, &hit_b);
+                assert_int_equal(found_a, found_b);
+                if (!found_a)
+                    break;
+                if (hit_a.triangle != hit_b.triangle || hit_a.material != hit_b.material ||
+                    hit_b.t != hit_a.t * s)
+                    fail_msg("scale 2^%d, pixel %d, bounce %d: triangle %d at t = %g "
+                             "instead of triangle %d at t = %g", exponents[e], pixel, bounce,
+                             hit_b.triangle, hit_b.t / s, hit_a.triangle, hit_a.t);
+                Vec3 towards = vec3_dot(a.dir, hit_a.normal) < 0 ? hit_a.normal
+                                                                  : vec3_neg(hit_a.normal);
+                Vec3 dir = random_direction_along(&rng, towards);
+                a = ray_spawn(hit_a.point, hit_a.normal, dir, reference.scale);
+                b = ray_spawn(hit_b.point, hit_b.normal, dir, scaled.scale);
+            }
+        }
+        scene_free(&scaled);
+    }
+    scene_free(&reference);
+    scene_free(&room);
+}
+
+/* Materials by name, 100,000 of them (issue 9, case 8: a linear scan took 33 s to read
+ * as many). Each name is found at its index, and the cost of a lookup -- the names it
+ * compares -- stays that of a hash table at most half full, whatever the count: at
+ * most 2 on average and 40 at worst, for the names there and for unknown names alike
+ * (a scan compares 50,000 on average). A second material of a name finds the first. */
+static void test_material_lookup(void **state)
+{
+    (void)state;
+    enum { COUNT = 100000 };
+    Scene scene;
+    scene_init(&scene);
+    Material m;
+    memset(&m, 0, sizeof m);
+    for (int i = 0; i < COUNT; i++) {
+        snprintf(m.name, sizeof m.name, "material%d", i);
+        assert_int_equal(scene_add_material(&scene, m), i);
+    }
+    long total = 0, unknown_total = 0;
+    int worst = 0;
+    for (int i = 0; i < COUNT; i++) {
+        char name[MATERIAL_NAME_MAX];
+        snprintf(name, sizeof name, "material%d", i);
+        assert_int_equal(scene_find_material(&scene, name), i);
+        int cost = scene_material_comparisons(&scene, name);
+        total += cost;
+        worst = cost > worst ? cost : worst;
+        snprintf(name, sizeof name, "other%d", i);
+        assert_int_equal(scene_find_material(&scene, name), -1);
+        cost = scene_material_comparisons(&scene, name);
+        unknown_total += cost;
+        worst = cost > worst ? cost : worst;
+    }
+    printf("material lookups: %.2f names compared on average (%.2f for unknown names), "
+           "%d at worst\n", (double)total / COUNT, (double)unknown_total / COUNT, worst);
+    assert_true(total <= 2L * COUNT && unknown_total <= 2L * COUNT);
+    assert_true(worst <= 40);
+    strcpy(m.name, "material7");
+    assert_int_equal(scene_add_material(&scene, m), COUNT);
+    assert_int_equal(scene_find_material(&scene, "material7"), 7);
+    scene_free(&scene);
 }
 
 /* scene_prepare lists exactly the emitting triangles, in order, with the running sum
@@ -382,6 +505,8 @@ int main(void)
         cmocka_unit_test(test_occluded),
         cmocka_unit_test(test_occluded_by_spheres),
         cmocka_unit_test(test_light_list),
+        cmocka_unit_test(test_scaled_room),
+        cmocka_unit_test(test_material_lookup),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -3,9 +3,11 @@
  *
  * The report's room loads with the counts SPEC §5 gives; each material kind and shape
  * is stored as material.h and SPEC §4 document (quads split along P0-P2, box and
- * tetrahedron normals outward); comments, blank lines, tabs and CRLF are only layout;
- * and every kind of bad input is an error "NAME:LINE: what is wrong" at the right line
- * that leaves the scene empty.
+ * tetrahedron normals outward); comments, blank lines, tabs, a byte order mark and
+ * CRLF or CR line ends are only layout; and every kind of bad input is an error
+ * "NAME:LINE: what is wrong" at the right line that leaves the scene empty -- an
+ * invisible non-ASCII character named by its code point, a scale, an emission or a
+ * file size beyond the limits, under a name of any length (issue 9).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -13,8 +15,12 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "check.h"
 #include "scene_file.h"
@@ -287,9 +293,11 @@ static void test_scale_invariance(void **state)
              "material m lambert .5 .5 .5\n"
              "quad m 0 0 0  1e-4 0 0  1e-4 1e-4 0  0 1e-4 0\n"
              "tetrahedron m 1e3 0 0  1001 0 0  1e3 1 0  1e3 0 1\n"
-             "triangle m 1e6 0 0  2e6 0 0  1e6 1e6 0\n",
+             "triangle m 1e6 0 0  2e6 0 0  1e6 1e6 0\n"
+             "triangle m 1e-40 0 0  2e-40 0 0  1e-40 1e-40 0\n"
+             "quad m 0 0 0  1e40 0 0  1e40 1e40 0  0 1e40 0\n",
              &scene);
-    assert_int_equal(scene.triangle_count, 7);
+    assert_int_equal(scene.triangle_count, 10);
     scene_free(&scene);
 }
 
@@ -328,7 +336,7 @@ static void test_not_a_number(void **state)
 {
     (void)state;
     const char *bad[] = {"nan", "inf", "-infinity", "0x10", "1.5abc", "1e", "e5", ".", "-",
-                         "+-1", "1,5", "--1", "1e+", "\xc3\xa9"};
+                         "+-1", "1,5", "--1", "1e+"};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         char text[128], what[64];
         snprintf(text, sizeof text, "point_light 0 0 %s 1 1 1\n", bad[i]);
@@ -337,13 +345,65 @@ static void test_not_a_number(void **state)
     }
 }
 
-/* Numbers that overflow to infinity, or beyond 1e100 (where areas and volumes would). */
+/* Numbers that overflow to infinity, or beyond 1e50 (the scales the reader takes). The
+ * room scaled by 1e77 is refused for that, not for "the eye on the image plane" (the
+ * overflowed cross product of issue 9, case 11). 1e50 itself is accepted. */
 static void test_number_out_of_range(void **state)
 {
     (void)state;
     expect_error("point_light 0 0 1e400 1 1 1\n", 1, "'1e400' is out of range");
     expect_error("point_light 0 0 0 -1e309 1 1\n", 1, "'-1e309' is out of range");
-    expect_error("point_light 0 0 0 1e101 1 1\n", 1, "'1e101' is out of range");
+    expect_error("point_light 0 0 0 1e51 1 1\n", 1, "'1e51' is out of range: numbers are "
+                                                    "finite and within +-1e+50");
+    expect_error("camera -1e77 0 0  0 1e77 -1e77  0 -1e77 -1e77  0 1e77 1e77\n", 1,
+                 "'-1e77' is out of range");
+    Scene scene;
+    parse_ok(CAMERA "point_light 0 0 -1e50 1 1 1\n", &scene);
+    scene_free(&scene);
+}
+
+/* Shapes below 1e-50 across are refused as too small (their cross products would
+ * underflow), each kind by name; at 1e-49 they are read. */
+static void test_too_small(void **state)
+{
+    (void)state;
+    const char *shapes[] = {"triangle m 0 0 0  %s 0 0  0 %s 0\n",
+                            "quad m 0 0 0  %s 0 0  %s %s 0  0 %s 0\n",
+                            "box m 0 0 0  %s %s %s\n",
+                            "tetrahedron m 0 0 0  %s 0 0  0 %s 0  0 0 %s\n",
+                            "sphere m 0 0 0 %s\n"};
+    const char *names[] = {"triangle", "quad", "box", "tetrahedron", "sphere"};
+    for (int i = 0; i < 5; i++) {
+        char line[256], text[512];
+        snprintf(line, sizeof line, shapes[i], "1e-51", "1e-51", "1e-51", "1e-51");
+        snprintf(text, sizeof text, CAMERA "material m lambert .5 .5 .5\n%s", line);
+        expect_error(text, 3, names[i]);
+        expect_error(text, 3, "is too small: the reader takes sizes from 1e-50 to 1e+50");
+        snprintf(line, sizeof line, shapes[i], "1e-49", "1e-49", "1e-49", "1e-49");
+        snprintf(text, sizeof text, CAMERA "material m lambert .5 .5 .5\n%s", line);
+        Scene scene;
+        parse_ok(text, &scene);
+        scene_free(&scene);
+    }
+    expect_error("camera -1e-51 0 0  0 1e-51 -1e-51  0 -1e-51 -1e-51  0 1e-51 1e-51\n", 1,
+                 "camera: the image plane");
+}
+
+/* Emission (and point lights' intensity) above 1e20 is refused, so that the image's
+ * radiance stays finite: 1e100 gave +inf pixels (issue 9, case 12); it is now beyond
+ * the numbers' range too. 1e20 is read. */
+static void test_emission_bound(void **state)
+{
+    (void)state;
+    expect_error("material L light 1e100 1e100 1e100\n", 1, "'1e100' is out of range");
+    expect_error("material L light 1e30 1e30 1e30\n", 1,
+                 "emission 1e+30 1e+30 1e+30 above 1e+20");
+    expect_error("material L light 0 1.1e20 0\n", 1, "above 1e+20");
+    expect_error("point_light 0 0 0  1 1e21 1\n", 1, "point_light intensity above 1e+20");
+    Scene scene;
+    parse_ok(CAMERA "material L light 1e20 1e20 1e20\npoint_light 0 0 0 1e20 0 0\n", &scene);
+    assert_close(scene.materials[0].emission.y, 1e20, 0.0);
+    scene_free(&scene);
 }
 
 /* A material used before it is defined, or never. */
@@ -532,6 +592,245 @@ static void test_nul_byte(void **state)
     assert_scene_empty(&scene);
 }
 
+/* Line ends and a byte order mark are layout (issue 9, case 15): a UTF-8 BOM at the
+ * start is skipped, and lines end at LF, CRLF or a lone CR (old Mac files), mixed
+ * too; errors still name the right line. */
+static void test_line_ends_and_bom(void **state)
+{
+    (void)state;
+    const char *bodies[] = {"\xEF\xBB\xBF" CAMERA "material m lambert .5 .5 .5\nsphere m 0 0 0 1\n",
+                            "camera -1 0 0  0 1 -1  0 -1 -1  0 1 1\rmaterial m lambert .5 .5 .5\r"
+                            "sphere m 0 0 0 1\r",
+                            "\xEF\xBB\xBF# mixed\r\ncamera -1 0 0  0 1 -1  0 -1 -1  0 1 1\r"
+                            "material m lambert .5 .5 .5\n\r\nsphere m 0 0 0 1"};
+    const int lines[] = {3, 3, 5};
+    for (int i = 0; i < 3; i++) {
+        Scene scene;
+        parse_ok(bodies[i], &scene);
+        assert_int_equal(scene.sphere_count, 1);
+        assert_int_equal(scene.line_count, lines[i]);
+        scene_free(&scene);
+    }
+    expect_error("# one\r# two\rcamera\r", 3, "expected 12 numbers");
+    expect_error("\xEF\xBB\xBF\r\n\rspher m 0 0 0 1\r\n", 3, "unknown keyword 'spher'");
+}
+
+/* Whether the message is printable ASCII: no raw, possibly invisible, bytes. */
+static int is_printable(const char *message)
+{
+    for (const char *p = message; *p; p++)
+        if ((unsigned char)*p < 0x20 || (unsigned char)*p >= 0x7F)
+            return 0;
+    return 1;
+}
+
+/* Parsing `text` fails at `line` with a message containing `what`, in ASCII only. */
+static void expect_ascii_error(const char *text, int line, const char *what)
+{
+    expect_error(text, line, what);
+    Scene scene;
+    char error[512];
+    scene_parse(text, strlen(text), "t.scene", &scene, error, sizeof error);
+    if (!is_printable(error))
+        fail_msg("the message has raw bytes: \"%s\"", error);
+}
+
+/* Outside comments a scene is ASCII (issue 9, case 15): a no-break space, a minus sign,
+ * a byte order mark inside the text, a stray byte and a control character are each
+ * named, with their column, never printed raw; inside a comment they are fine. */
+static void test_non_ascii(void **state)
+{
+    (void)state;
+    expect_ascii_error(CAMERA "material\xC2\xA0white lambert 1 1 1\n", 2,
+                       "non-ASCII character U+00A0 (a no-break space?) in column 9");
+    expect_ascii_error(CAMERA "point_light 0 0 \xE2\x88\x92" "1 1 1 1\n", 2,
+                       "U+2212 (a minus sign? write '-') in column 17");
+    expect_ascii_error(CAMERA "\xEF\xBB\xBFsphere m 0 0 0 1\n", 2,
+                       "U+FEFF (a byte order mark?) in column 1");
+    expect_ascii_error(CAMERA "point_light 0 0 \xC3\xA9 1 1 1\n", 2, "U+00E9 in column 17");
+    expect_ascii_error(CAMERA "point_light 0 0 0 1 1 1\xFF\n", 2,
+                       "byte 0xFF in column 24 is not ASCII (nor UTF-8)");
+    expect_ascii_error(CAMERA "point_light 0 0 0 1 1 1 \xC0\xA0\n", 2,
+                       "byte 0xC0 in column 25"); /* an overlong form */
+    expect_ascii_error(CAMERA "point_light\x01 0 0 0 1 1 1\n", 2,
+                       "control character 0x01 in column 12");
+    Scene scene;
+    parse_ok(CAMERA "material m lambert .5 .5 .5  # caf\xC3\xA9, \xC2\xA0, \xFF\n", &scene);
+    assert_int_equal(scene.material_count, 1);
+    scene_free(&scene);
+}
+
+/* A name long enough to fill the error buffer (a 609- or 4000-character path) is
+ * shortened in its middle, so the message keeps "...end-of-name:LINE: reason"
+ * (issue 9, case 16); scene.source keeps the whole name. */
+static void test_long_name(void **state)
+{
+    (void)state;
+    const size_t lengths[] = {609, 4000};
+    for (int i = 0; i < 2; i++) {
+        static char name[4001];
+        memset(name, 'd', lengths[i]);
+        memcpy(name, "/very/", 6);
+        strcpy(name + lengths[i] - 11, "/room.scene");
+        Scene scene;
+        char error[512];
+        const char *text = CAMERA "spher m 0 0 0 1\n";
+        assert_int_equal(scene_parse(text, strlen(text), name, &scene, error, sizeof error), -1);
+        const char *end = "dd/room.scene:2: unknown keyword 'spher'";
+        size_t length = strlen(error);
+        assert_true(length < sizeof error);
+        assert_true(length > strlen(end));
+        assert_string_equal(error + length - strlen(end), end);
+        assert_memory_equal(error, "/very/", 6);
+        assert_non_null(strstr(error, "..."));
+        text = CAMERA;
+        assert_int_equal(scene_parse(text, strlen(text), name, &scene, error, sizeof error), 0);
+        assert_string_equal(scene.source, name);
+        scene_free(&scene);
+    }
+}
+
+/* Writes zeros into `fd` until the reader closes it; exits with the number of MiB
+ * written (rounded up, at most 255), so the test learns how much the reader took. */
+static void write_zeros_until_closed(int fd, const char *text, size_t length)
+{
+    (void)text;
+    (void)length;
+    static char zeros[1 << 16];
+    signal(SIGPIPE, SIG_IGN);
+    long long written = 0;
+    for (ssize_t n; (n = write(fd, zeros, sizeof zeros)) > 0;)
+        written += n;
+    long long mib = (written + (1 << 20) - 1) >> 20;
+    _exit(mib < 255 ? (int)mib : 255);
+}
+
+static void write_text(int fd, const char *text, size_t length)
+{
+    _exit(write(fd, text, length) == (ssize_t)length ? 0 : 1);
+}
+
+/* scene_load from a pipe ("/dev/fd/N") that a child process fills by calling
+ * feed(fd, text, length); the child's wait status goes to *fed. */
+static int load_from_pipe(void (*feed)(int fd, const char *text, size_t length),
+                          const char *text, size_t length, Scene *scene, char *error,
+                          size_t error_size, int *fed)
+{
+    int ends[2];
+    assert_int_equal(pipe(ends), 0);
+    fflush(NULL);
+    pid_t writer = fork();
+    assert_true(writer >= 0);
+    if (writer == 0) {
+        close(ends[0]);
+        feed(ends[1], text, length);
+    }
+    close(ends[1]);
+    char pipe_path[64];
+    snprintf(pipe_path, sizeof pipe_path, "/dev/fd/%d", ends[0]);
+    int status = scene_load(pipe_path, scene, error, error_size);
+    close(ends[0]);
+    assert_int_equal(waitpid(writer, fed, 0), writer);
+    return status;
+}
+
+/* A scene file over 64 MiB is refused at line 0 (issue 9, case 7): an endless stream
+ * after 64 MiB + 1 bytes, not more -- /dev/zero, and a pipe that counts what it gave
+ * (64 MiB, plus the pipe's own buffer: 65 MiB at most) -- and a sparse regular file of
+ * 64 MiB + 1 from its size, unread. */
+static void test_size_limit(void **state)
+{
+    (void)state;
+    Scene scene;
+    char error[512];
+    assert_int_equal(scene_load("/dev/zero", &scene, error, sizeof error), -1);
+    assert_string_equal(error, "/dev/zero:0: larger than 64 MiB, the limit for a scene file");
+    assert_scene_empty(&scene);
+
+    int status;
+    assert_int_equal(load_from_pipe(write_zeros_until_closed, NULL, 0, &scene, error,
+                                    sizeof error, &status), -1);
+    assert_non_null(strstr(error, ":0: larger than 64 MiB, the limit for a scene file"));
+    assert_true(WIFEXITED(status));
+    if (WEXITSTATUS(status) > 65)
+        fail_msg("the reader took %d MiB of an endless pipe", WEXITSTATUS(status));
+
+    char path[] = "/tmp/test_scene_file_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    assert_int_equal(ftruncate(fd, (64 << 20) + 1), 0);
+    close(fd);
+    char expected[128];
+    snprintf(expected, sizeof expected,
+             "%s:0: larger than 64 MiB (67108865 bytes), the limit for a scene file", path);
+    assert_int_equal(scene_load(path, &scene, error, sizeof error), -1);
+    unlink(path);
+    assert_string_equal(error, expected);
+}
+
+/* The bytes are read once and their hash kept (scene.source_hash), so a cache can name
+ * the scene without opening the path again -- a pipe or a FIFO cannot be read twice
+ * (issue 9, cases 5 and 6). Read from a file and from a pipe, the hash is that of the
+ * bytes; different bytes, a different hash. */
+static void test_source_hash(void **state)
+{
+    (void)state;
+    static char text[8192];
+    FILE *file = fopen("scenes/room.scene", "rb");
+    assert_non_null(file);
+    size_t length = fread(text, 1, sizeof text, file);
+    fclose(file);
+    assert_true(length > 0 && length < sizeof text);
+    uint64_t expected = scene_hash(SCENE_HASH_START, text, length);
+    Scene scene;
+    char error[512];
+    assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
+    assert_true(scene.source_hash == expected);
+    scene_free(&scene);
+
+    int fed;
+    if (load_from_pipe(write_text, text, length, &scene, error, sizeof error, &fed) != 0)
+        fail_msg("%s", error);
+    assert_true(WIFEXITED(fed) && WEXITSTATUS(fed) == 0);
+    assert_int_equal(scene.triangle_count, 38);
+    assert_true(scene.source_hash == expected);
+    scene_free(&scene);
+
+    text[length - 2] ^= 1; /* a different digit or letter in the last line's comment */
+    parse_ok(text, &scene);
+    assert_true(scene.source_hash != expected);
+    scene_free(&scene);
+}
+
+/* 100,000 materials and 100,000 spheres using them, each its own: read with every
+ * sphere on its material (issue 9, case 8 took 115 s with a linear material scan;
+ * test_scene.c holds the lookup's cost). */
+static void test_many_materials(void **state)
+{
+    (void)state;
+    enum { COUNT = 100000 };
+    size_t size = (size_t)COUNT * 80 + sizeof CAMERA, used = 0;
+    char *text = malloc(size);
+    assert_non_null(text);
+    used += (size_t)snprintf(text, size, CAMERA);
+    for (int i = 0; i < COUNT; i++)
+        used += (size_t)snprintf(text + used, size - used, "material m%d lambert .5 .5 .5\n", i);
+    for (int i = 0; i < COUNT; i++)
+        used += (size_t)snprintf(text + used, size - used, "sphere m%d %d %d 5 0.25\n",
+                                 COUNT - 1 - i, i % 400, i / 400);
+    Scene scene;
+    char error[512] = "";
+    int status = scene_parse(text, used, "many.scene", &scene, error, sizeof error);
+    free(text);
+    if (status != 0)
+        fail_msg("%s", error);
+    assert_int_equal(scene.material_count, COUNT);
+    assert_int_equal(scene.sphere_count, COUNT);
+    for (int i = 0; i < COUNT; i++)
+        assert_int_equal(scene.spheres[i].material, COUNT - 1 - i);
+    scene_free(&scene);
+}
+
 /* A failure after many good lines frees everything already built. */
 static void test_failure_leaves_scene_empty(void **state)
 {
@@ -586,6 +885,8 @@ int main(void)
         cmocka_unit_test(test_wrong_count),
         cmocka_unit_test(test_not_a_number),
         cmocka_unit_test(test_number_out_of_range),
+        cmocka_unit_test(test_too_small),
+        cmocka_unit_test(test_emission_bound),
         cmocka_unit_test(test_unknown_material),
         cmocka_unit_test(test_duplicate_material),
         cmocka_unit_test(test_material_name_too_long),
@@ -607,6 +908,12 @@ int main(void)
         cmocka_unit_test(test_missing_camera),
         cmocka_unit_test(test_overlong_line),
         cmocka_unit_test(test_nul_byte),
+        cmocka_unit_test(test_many_materials),
+        cmocka_unit_test(test_line_ends_and_bom),
+        cmocka_unit_test(test_non_ascii),
+        cmocka_unit_test(test_long_name),
+        cmocka_unit_test(test_size_limit),
+        cmocka_unit_test(test_source_hash),
         cmocka_unit_test(test_failure_leaves_scene_empty),
         cmocka_unit_test(test_unreadable_file),
         cmocka_unit_test(test_small_error_buffer),
