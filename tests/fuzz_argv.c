@@ -1,4 +1,4 @@
-/* fuzz_argv.c (chapter 1): libFuzzer target for the command line of every chapter program (cli.h,
+/* fuzz_argv.c (chapter 7): libFuzzer target for the command line of every chapter program (cli.h,
  * chapter 1; issue 9).
  *
  * The input is one byte choosing which flags beyond FLAGS_COMMON the program takes

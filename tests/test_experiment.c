@@ -77,8 +77,12 @@ static Outcome run_panel(void (*when)(void), long raise_at)
     }
     close(pipe_ends[1]);
     Outcome outcome = {0};
-    ssize_t n = read(pipe_ends[0], outcome.message, sizeof outcome.message - 1);
-    outcome.message[n > 0 ? n : 0] = '\0';
+    size_t length = 0; /* read to the end: a child writing to a closed pipe would die */
+    ssize_t n;
+    while ((n = read(pipe_ends[0], outcome.message + length,
+                     sizeof outcome.message - 1 - length)) > 0)
+        length += (size_t)n;
+    outcome.message[length] = '\0';
     close(pipe_ends[0]);
     int status;
     assert_int_equal(waitpid(child, &status, 0), child);

@@ -44,8 +44,13 @@
 
 #if CHAPTER >= 6
 #define SAMPLES 100000
+#define TRUNCATION 0.0
 #else
 #define SAMPLES 20000 /* every path runs to the depth limit without roulette */
+/* What the depth limit of 60 leaves out: a ray trapped inside the sphere spends many
+ * segments there (total internal reflection), so about 2e-7, which the nearly exact
+ * light-by-hitting estimate (standard error 2e-8) would otherwise see. */
+#define TRUNCATION 1e-6
 #endif
 #define TOLERANCE_SIGMAS 4.0
 #define EXPECTED FURNACE_BORDERED_RADIANCE
@@ -106,10 +111,10 @@ static void assert_furnace_radiance(const Scene *scene, const PathSettings *sett
     }
     double mean = sum / SAMPLES;
     double std_error = sqrt((sum_squares / SAMPLES - mean * mean) / (SAMPLES - 1));
-    print_message("    %-30s M=%d %-7s: %.5f +- %.5f (expected %.1f)\n", KIND_NAMES[kind],
+    print_message("    %-30s M=%d %-7s: %.9f +- %.9f (expected %.1f)\n", KIND_NAMES[kind],
                   settings->shadow_rays, settings->fresnel == FRESNEL_EXACT ? "exact" : "schlick",
                   mean, std_error, EXPECTED);
-    assert_true(fabs(mean - EXPECTED) < TOLERANCE_SIGMAS * std_error);
+    assert_true(fabs(mean - EXPECTED) < TOLERANCE_SIGMAS * std_error + TRUNCATION);
     assert_true(std_error < 0.01 * EXPECTED);
 }
 
