@@ -48,6 +48,7 @@ int main(int argc, char **argv)
     const Panel panels[] = {
         {"ch02_figure8_1spp", "Figure 8, left (light by hitting only)", 1, PIXEL_SUBPIXELS},
         {"ch02_figure8_4spp", "Figure 8, right (light by hitting only)", 4, PIXEL_SUBPIXELS},
+        {"ch02_random_1spp", "random positions", 1, PIXEL_RANDOM},
         {"ch02_random_4spp", "random positions", 4, PIXEL_RANDOM},
         {"ch02_subpixels", "Figure 2", options.spp, PIXEL_SUBPIXELS},
         {"ch02_random", "random positions", options.spp, PIXEL_RANDOM},
@@ -65,11 +66,11 @@ int main(int argc, char **argv)
         experiment_caption(&rows[i], panels[i].title, captions[i], sizeof captions[i]);
     }
 
-    const char *figure2[] = {captions[3]};
+    const char *figure2[] = {captions[4]};
     const char *figure8[] = {captions[0], captions[1]};
-    const char *supersampling[] = {captions[1], captions[2], captions[3], captions[4]};
-    Image supersampling_images[] = {images[1], images[2], images[3], images[4]};
-    experiment_write_figure(&options, "ch02_figure2", &images[3], figure2, 1, PANEL_EXPOSURE);
+    const char *supersampling[] = {captions[1], captions[3], captions[4], captions[5]};
+    Image supersampling_images[] = {images[1], images[3], images[4], images[5]};
+    experiment_write_figure(&options, "ch02_figure2", &images[4], figure2, 1, PANEL_EXPOSURE);
     experiment_write_figure(&options, "ch02_figure8", images, figure8, 2, PANEL_EXPOSURE);
     experiment_write_figure(&options, "ch02_subpixels_vs_random", supersampling_images,
                             supersampling, 4, PANEL_EXPOSURE);
