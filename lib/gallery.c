@@ -346,8 +346,8 @@ static void write_header(Writer *w)
     fprintf(out, "%s</h1>\n", w->run.quick ? " <span class=\"quick\">QUICK</span>" : "");
     if (w->run.quick)
         fputs("<p class=\"quick\"><strong>QUICK figures</strong> (<code>make figures "
-              "QUICK=1</code>): a quarter of each image's size and of the reference's samples, "
-              "for a first look. They are not the report's settings; <code>make figures</code> "
+              "QUICK=1</code>): a quarter of each image's size, and more runs of each measured "
+              "setting, for a first look. They are not the report's settings; <code>make figures</code> "
               "renders those.</p>\n",
               out);
     fprintf(out, "<p>Page made %s.", made);
@@ -704,8 +704,8 @@ static int write_chapter(Writer *w, const GalleryChapter *chapter)
             "are the program's defaults%s; <code>make chapter%d ARGS=--help</code> lists "
             "them, and each table's settings column names each render's.</p>\n",
             n, w->run.quick ? " QUICK=1" : "",
-            w->run.quick ? ", with <code>--quick</code> (a quarter of the size and of the "
-                           "reference's samples)"
+            w->run.quick ? ", with <code>--quick</code> (a quarter of the size, and more "
+                           "runs of each measured setting)"
                          : "",
             n);
     if (write_kind(w, chapter, FILE_TEXT, "Settings files") != 0 ||
