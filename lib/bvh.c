@@ -1,9 +1,12 @@
-/* bvh.c: building and traversing the bounding volume hierarchy (chapter 7).
+/* bvh.c: building and traversing the bounding volume hierarchy (chapter 1).
  * See bvh.h. */
 #include "bvh.h"
 
+#include <float.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* Building: boxes in double, in the scene's coordinates. */
 
 typedef struct {
     Vec3 lower, upper;
@@ -17,8 +20,8 @@ static Box box_empty(void)
 
 static Box box_grow(Box box, Vec3 p)
 {
-    box.lower = vec3(fmin(box.lower.x, p.x), fmin(box.lower.y, p.y), fmin(box.lower.z, p.z));
-    box.upper = vec3(fmax(box.upper.x, p.x), fmax(box.upper.y, p.y), fmax(box.upper.z, p.z));
+    box.lower = vec3(min2(box.lower.x, p.x), min2(box.lower.y, p.y), min2(box.lower.z, p.z));
+    box.upper = vec3(max2(box.upper.x, p.x), max2(box.upper.y, p.y), max2(box.upper.z, p.z));
     return box;
 }
 
@@ -31,6 +34,16 @@ static double box_area(Box box)
 {
     Vec3 d = vec3_sub(box.upper, box.lower);
     return d.x < 0.0 ? 0.0 : 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x);
+}
+
+static Vec3 box_centroid(Box box)
+{
+    return vec3_scale(vec3_add(box.lower, box.upper), 0.5);
+}
+
+static double axis_value(Vec3 v, int axis)
+{
+    return axis == 0 ? v.x : axis == 1 ? v.y : v.z;
 }
 
 static Box primitive_box(BvhPrimitives p, int index)
@@ -46,73 +59,127 @@ static Box primitive_box(BvhPrimitives p, int index)
     return box;
 }
 
-static double axis_value(Vec3 v, int axis)
+/* Exact copies. Two primitives whose stored numbers are equal give every ray the same
+ * t, so the first (lowest number, the one testing every primitive reports) answers
+ * for all its copies. Without this, a pile of copies is tested in full by every ray
+ * that reaches it: equal t never lets one copy cull another. Each primitive's key is
+ * every number its intersection test reads; sorting the keys brings copies together. */
+#define KEY_SIZE 12
+
+typedef struct {
+    double key[KEY_SIZE];
+    int primitive;
+} Keyed;
+
+static void primitive_key(BvhPrimitives p, int index, double key[KEY_SIZE])
 {
-    return axis == 0 ? v.x : axis == 1 ? v.y : v.z;
+    memset(key, 0, KEY_SIZE * sizeof *key);
+    if (index < p.triangle_count) {
+        const Triangle *t = &p.triangles[index];
+        const Vec3 v[3] = {t->v0, t->e1, t->e2};
+        for (int i = 0; i < 3; i++) {
+            key[3 * i] = v[i].x;
+            key[3 * i + 1] = v[i].y;
+            key[3 * i + 2] = v[i].z;
+        }
+        key[9] = t->area;
+        key[10] = t->longest_edge;
+    } else {
+        const Sphere *s = &p.spheres[index - p.triangle_count];
+        key[0] = s->center.x;
+        key[1] = s->center.y;
+        key[2] = s->center.z;
+        key[3] = s->radius;
+        key[11] = 1.0; /* a sphere's key never equals a triangle's */
+    }
 }
 
-/* What the builder needs: the primitives and their boxes. The sort's comparison reads
- * the boxes and axis through two file-level variables, since qsort passes no context;
- * building is done once per scene, by one thread. */
+static int compare_keyed(const void *a, const void *b)
+{
+    const Keyed *ka = a, *kb = b;
+    int order = memcmp(ka->key, kb->key, sizeof ka->key);
+    return order != 0 ? order : (ka->primitive > kb->primitive) - (ka->primitive < kb->primitive);
+}
+
+/* Write the primitives that are not a copy of a lower-numbered one into `kept`, and
+ * return their number, or -1 when memory runs out. */
+static int without_copies(BvhPrimitives p, int n, int *kept)
+{
+    Keyed *keyed = malloc((size_t)n * sizeof *keyed);
+    if (!keyed)
+        return -1;
+    for (int i = 0; i < n; i++) {
+        primitive_key(p, i, keyed[i].key);
+        keyed[i].primitive = i;
+    }
+    qsort(keyed, (size_t)n, sizeof *keyed, compare_keyed);
+    int count = 0;
+    for (int i = 0; i < n; i++)
+        if (i == 0 || memcmp(keyed[i].key, keyed[i - 1].key, sizeof keyed[i].key) != 0)
+            kept[count++] = keyed[i].primitive;
+    free(keyed);
+    return count;
+}
+
+/* The binary tree. Each item carries the key it is being sorted by (its centroid on
+ * one axis), so the sort needs no other context. */
 typedef struct {
-    BvhPrimitives primitives;
-    Box *boxes;
-    Bvh *bvh;
+    double key;
+    int primitive;
+} Item;
+
+static int compare_items(const void *a, const void *b)
+{
+    const Item *ia = a, *ib = b;
+    if (ia->key != ib->key)
+        return ia->key < ib->key ? -1 : 1;
+    return (ia->primitive > ib->primitive) - (ia->primitive < ib->primitive);
+}
+
+typedef struct {
+    Box box;
+    int left, right; /* inner node: its children */
+    int first;       /* leaf: its first entry of the primitive order */
+    int count;       /* leaf: its number of primitives; inner node: 0 */
+} BinaryNode;
+
+typedef struct {
+    const Box *boxes;    /* of every primitive */
+    BinaryNode *nodes;
+    int node_count;
+    int *order;          /* the primitives in leaf order */
+    double *right_area;  /* scratch for the heuristic */
 } Builder;
 
-static const Box *sort_boxes;
-static int sort_axis;
-
-static int compare_centroids(const void *a, const void *b)
+static void sort_along(const Builder *builder, Item *items, int count, int axis)
 {
-    const Box *box_a = &sort_boxes[*(const int *)a], *box_b = &sort_boxes[*(const int *)b];
-    double ca = axis_value(vec3_add(box_a->lower, box_a->upper), sort_axis);
-    double cb = axis_value(vec3_add(box_b->lower, box_b->upper), sort_axis);
-    return (ca > cb) - (ca < cb);
-}
-
-static void sort_by_centroid(const Builder *builder, int *items, int count, int axis)
-{
-    sort_boxes = builder->boxes;
-    sort_axis = axis;
-    qsort(items, (size_t)count, sizeof *items, compare_centroids);
+    for (int i = 0; i < count; i++)
+        items[i].key = axis_value(box_centroid(builder->boxes[items[i].primitive]), axis);
+    qsort(items, (size_t)count, sizeof *items, compare_items);
 }
 
 /* Below this level the builder splits at the median, which bounds the tree's depth
  * (and the traversal stack) whatever the heuristic would prefer. */
 #define BVH_SAH_LEVELS 32
+#define BVH_MAX_DEPTH (BVH_SAH_LEVELS + 32)
 
-/* Build the subtree over items[0..count) at `level` and return its node's index. */
-static int build(Builder *builder, int *items, int count, int first, int level)
+/* The split of the surface area heuristic over every split of every axis's centroid
+ * order: leaves items sorted along the best axis and returns the left part's size. */
+static int sah_split(Builder *builder, Item *items, int count)
 {
-    Bvh *bvh = builder->bvh;
-    int index = bvh->node_count++;
-    Box box = box_empty();
-    for (int i = 0; i < count; i++)
-        box = box_union(box, builder->boxes[items[i]]);
-    bvh->nodes[index].lower = box.lower;
-    bvh->nodes[index].upper = box.upper;
-    if (count <= BVH_LEAF_SIZE) {
-        bvh->nodes[index].first = first;
-        bvh->nodes[index].count = count;
-        memcpy(bvh->primitives + first, items, (size_t)count * sizeof *items);
-        return index;
-    }
-    /* The surface area heuristic over every split of every axis's centroid order. */
-    double *right_area = malloc((size_t)count * sizeof *right_area);
     double best_cost = INFINITY;
     int best_axis = 0, best_split = count / 2;
-    for (int axis = 0; axis < 3 && right_area && level < BVH_SAH_LEVELS; axis++) {
-        sort_by_centroid(builder, items, count, axis);
+    for (int axis = 0; axis < 3; axis++) {
+        sort_along(builder, items, count, axis);
         Box right = box_empty();
         for (int i = count - 1; i > 0; i--) {
-            right = box_union(right, builder->boxes[items[i]]);
-            right_area[i] = box_area(right);
+            right = box_union(right, builder->boxes[items[i].primitive]);
+            builder->right_area[i] = box_area(right);
         }
         Box left = box_empty();
         for (int split = 1; split < count; split++) {
-            left = box_union(left, builder->boxes[items[split - 1]]);
-            double cost = box_area(left) * split + right_area[split] * (count - split);
+            left = box_union(left, builder->boxes[items[split - 1].primitive]);
+            double cost = box_area(left) * split + builder->right_area[split] * (count - split);
             if (cost < best_cost) {
                 best_cost = cost;
                 best_axis = axis;
@@ -120,28 +187,125 @@ static int build(Builder *builder, int *items, int count, int first, int level)
             }
         }
     }
-    free(right_area);
-    sort_by_centroid(builder, items, count, best_axis);
-    bvh->nodes[index].count = 0;
-    build(builder, items, best_split, first, level + 1);
-    bvh->nodes[index].first =
-        build(builder, items + best_split, count - best_split, first + best_split, level + 1);
+    sort_along(builder, items, count, best_axis);
+    return best_split;
+}
+
+/* Build the subtree over items[0..count), at `level`, whose primitives take the leaf
+ * order from `first` on. Returns its node. */
+static int build(Builder *builder, Item *items, int count, int first, int level)
+{
+    int index = builder->node_count++;
+    Box box = box_empty(), centroids = box_empty();
+    for (int i = 0; i < count; i++) {
+        box = box_union(box, builder->boxes[items[i].primitive]);
+        centroids = box_grow(centroids, box_centroid(builder->boxes[items[i].primitive]));
+    }
+    BinaryNode *node = &builder->nodes[index];
+    node->box = box;
+    Vec3 spread = vec3_sub(centroids.upper, centroids.lower);
+    if (count <= BVH_LEAF_SIZE || vec3_max_component(spread) == 0.0) {
+        node->first = first;
+        node->count = count;
+        for (int i = 0; i < count; i++)
+            builder->order[first + i] = items[i].primitive;
+        return index;
+    }
+    int split;
+    if (level < BVH_SAH_LEVELS) {
+        split = sah_split(builder, items, count);
+    } else {
+        int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
+        sort_along(builder, items, count, axis);
+        split = count / 2;
+    }
+    node->count = 0;
+    int left = build(builder, items, split, first, level + 1);
+    int right = build(builder, items + split, count - split, first + split, level + 1);
+    builder->nodes[index].left = left;
+    builder->nodes[index].right = right;
     return index;
 }
 
-/* Give inner node i the boxes of its children (node i + 1 and node `first`). */
-static void copy_child_boxes(Bvh *bvh, int i)
+/* The four-wide tree, in the hierarchy's frame. Float planes rounded outward: a float
+ * no larger (no smaller) than x. Converting rounds to nearest, by at most 2^-24 |x|
+ * (2^-150 for the smallest floats), so stepping 2^-23 |x| + 2^-100 away first is
+ * enough; beyond the float range, the infinity on that side. */
+static float float_below(double x)
 {
-    BvhNode *node = &bvh->nodes[i];
-    const BvhNode *children[2] = {&bvh->nodes[i + 1], &bvh->nodes[node->first]};
-    for (int k = 0; k < 2; k++) {
-        const double lower[3] = {children[k]->lower.x, children[k]->lower.y, children[k]->lower.z};
-        const double upper[3] = {children[k]->upper.x, children[k]->upper.y, children[k]->upper.z};
-        for (int axis = 0; axis < 3; axis++) {
-            node->child_lower[axis][k] = lower[axis];
-            node->child_upper[axis][k] = upper[axis];
-        }
+    double below = x - (fabs(x) * 0x1p-23 + 0x1p-100);
+    return below < -FLT_MAX ? -INFINITY : (float)below;
+}
+
+static float float_above(double x)
+{
+    double above = x + (fabs(x) * 0x1p-23 + 0x1p-100);
+    return above > FLT_MAX ? INFINITY : (float)above;
+}
+
+static double to_frame(const Bvh *bvh, Vec3 p, int axis)
+{
+    return (axis_value(p, axis) - axis_value(bvh->centre, axis)) * bvh->scale;
+}
+
+/* The children binary node `index` stands for in a four-wide node: itself, its
+ * inner nodes opened, the largest first, until there are BVH_WIDTH or only leaves. */
+static int gather_children(const BinaryNode *nodes, int index, int children[BVH_WIDTH])
+{
+    int n = 1;
+    children[0] = index;
+    while (n < BVH_WIDTH) {
+        int largest = -1;
+        for (int k = 0; k < n; k++)
+            if (nodes[children[k]].count == 0 &&
+                (largest < 0 || box_area(nodes[children[k]].box) > box_area(nodes[children[largest]].box)))
+                largest = k;
+        if (largest < 0)
+            break;
+        const BinaryNode *opened = &nodes[children[largest]];
+        children[largest] = opened->left;
+        children[n++] = opened->right;
     }
+    return n;
+}
+
+/* Make the four-wide node for binary node `index` and, recursively, its subtree. */
+static int make_wide(Bvh *bvh, const BinaryNode *nodes, int index)
+{
+    int wide = bvh->node_count++;
+    int children[BVH_WIDTH];
+    int n = gather_children(nodes, index, children);
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        BvhNode *node = &bvh->nodes[wide];
+        for (int axis = 0; axis < 3; axis++) {
+            node->bounds[0][axis][k] = INFINITY;
+            node->bounds[1][axis][k] = -INFINITY;
+        }
+        node->child[k] = -1;
+        node->count[k] = 0;
+        if (k >= n)
+            continue;
+        const BinaryNode *c = &nodes[children[k]];
+        for (int axis = 0; axis < 3; axis++) {
+            node->bounds[0][axis][k] = float_below(to_frame(bvh, c->box.lower, axis));
+            node->bounds[1][axis][k] = float_above(to_frame(bvh, c->box.upper, axis));
+        }
+        node->count[k] = c->count;
+        node->child[k] = c->count > 0 ? c->first : make_wide(bvh, nodes, children[k]);
+    }
+    return wide;
+}
+
+/* The frame: the box of all primitives centred on the origin and scaled by a power of
+ * two (exact) into [-1, 1]^3. */
+static void choose_frame(Bvh *bvh, Box box)
+{
+    bvh->centre = box_centroid(box);
+    double half = 0.5 * vec3_max_component(vec3_sub(box.upper, box.lower));
+    int exponent = 0;
+    if (half > 0.0 && isfinite(half))
+        frexp(half, &exponent);
+    bvh->scale = ldexp(1.0, -exponent);
 }
 
 int bvh_build(Bvh *bvh, BvhPrimitives primitives)
@@ -150,27 +314,39 @@ int bvh_build(Bvh *bvh, BvhPrimitives primitives)
     memset(bvh, 0, sizeof *bvh);
     if (n == 0)
         return 0;
-    Builder builder = {primitives, malloc((size_t)n * sizeof(Box)), bvh};
-    int *items = malloc((size_t)n * sizeof *items);
-    bvh->nodes = malloc((size_t)(2 * n - 1) * sizeof *bvh->nodes);
+    Box *boxes = malloc((size_t)n * sizeof *boxes);
+    int *kept = malloc((size_t)n * sizeof *kept);
+    Item *items = malloc((size_t)n * sizeof *items);
+    double *right_area = malloc((size_t)n * sizeof *right_area);
+    BinaryNode *binary = malloc((size_t)(2 * n - 1) * sizeof *binary);
+    bvh->nodes = malloc((size_t)n * sizeof *bvh->nodes);
     bvh->primitives = malloc((size_t)n * sizeof *bvh->primitives);
-    if (!builder.boxes || !items || !bvh->nodes || !bvh->primitives) {
-        free(builder.boxes);
-        free(items);
+    int kept_count = -1;
+    if (boxes && kept && items && right_area && binary && bvh->nodes && bvh->primitives)
+        kept_count = without_copies(primitives, n, kept);
+    if (kept_count > 0) {
+        Box all = box_empty();
+        for (int i = 0; i < n; i++)
+            boxes[i] = primitive_box(primitives, i);
+        for (int i = 0; i < kept_count; i++) {
+            items[i].primitive = kept[i];
+            all = box_union(all, boxes[kept[i]]);
+        }
+        Builder builder = {boxes, binary, 0, bvh->primitives, right_area};
+        build(&builder, items, kept_count, 0, 0);
+        bvh->primitive_count = kept_count;
+        choose_frame(bvh, all);
+        make_wide(bvh, binary, 0);
+    }
+    free(boxes);
+    free(kept);
+    free(items);
+    free(right_area);
+    free(binary);
+    if (kept_count < 0) {
         bvh_free(bvh);
         return -1;
     }
-    for (int i = 0; i < n; i++) {
-        items[i] = i;
-        builder.boxes[i] = primitive_box(primitives, i);
-    }
-    bvh->primitive_count = n;
-    build(&builder, items, n, 0, 0);
-    for (int i = 0; i < bvh->node_count; i++)
-        if (bvh->nodes[i].count == 0)
-            copy_child_boxes(bvh, i);
-    free(builder.boxes);
-    free(items);
     return 0;
 }
 
@@ -181,24 +357,68 @@ void bvh_free(Bvh *bvh)
     memset(bvh, 0, sizeof *bvh);
 }
 
-/* The distances at which the ray enters the node's two children's boxes, or INFINITY
- * where it misses one within (0, tmax): the slab test. inverse = 1/d per axis (huge
- * for d = 0: the slab is then all or nothing). max2/min2 rather than fmax/fmin, which
- * the C library must make NaN-aware: this is the renderer's innermost loop. */
-static inline void children_entry(const BvhNode *node, const double origin[3],
-                                  const double inverse[3], double tmax, double entry[2])
+/* Traversal. What every box test needs from the ray, computed once per ray, in the
+ * hierarchy's frame: 1/d per axis, which corner holds the slab plane the ray meets
+ * first (the lower one when d >= 0), and the origin rounded to floats two ways, so that
+ * the near plane's t can only come out smaller and the far plane's larger. A
+ * direction component of 0 gives 1/d = +-inf: the slab is then all (t = -inf or NaN
+ * at both planes) or nothing (t = +inf at the near one); the tests below skip a NaN.
+ * (A component so small that 1/d overflows a float counts as 0, exact for every origin
+ * within 2^25 scene sizes of the scene.) */
+typedef struct {
+    float origin[2][3]; /* [0] for the near planes, [1] for the far planes */
+    float inverse[3];
+    int near[3];        /* 0: the near plane is the box's lower one, 1: its upper one */
+} BoxRay;
+
+static BoxRay box_ray_make(const Bvh *bvh, Ray ray)
 {
-    double near[2] = {0.0, 0.0}, far[2] = {tmax, tmax};
-    for (int axis = 0; axis < 3; axis++)
-        for (int k = 0; k < 2; k++) {
-            double t0 = (node->child_lower[axis][k] - origin[axis]) * inverse[axis];
-            double t1 = (node->child_upper[axis][k] - origin[axis]) * inverse[axis];
-            near[k] = max2(near[k], min2(t0, t1));
-            far[k] = min2(far[k], max2(t0, t1));
+    BoxRay r;
+    for (int axis = 0; axis < 3; axis++) {
+        double o = to_frame(bvh, ray.origin, axis), d = axis_value(ray.dir, axis);
+        double inverse = d != 0.0 ? 1.0 / d : copysign(INFINITY, d);
+        r.near[axis] = signbit(d) ? 1 : 0;
+        r.inverse[axis] = fabs(inverse) > FLT_MAX ? (float)copysign(INFINITY, d) : (float)inverse;
+        r.origin[0][axis] = r.near[axis] ? float_below(o) : float_above(o);
+        r.origin[1][axis] = r.near[axis] ? float_above(o) : float_below(o);
+    }
+    return r;
+}
+
+/* The slab test's margin. With exact planes and origin, each computed t carries three
+ * roundings (the subtraction, 1/d, the product: relative error 3u, u = 2^-24), so a
+ * ray that meets the box has near <= far * (1 + 3u) / (1 - 3u), and the product with
+ * the margin rounds once more: 1 + 7u is enough, 1 + 16u leaves room. */
+#define BVH_BOX_MARGIN (1.0f + 0x1p-20f)
+
+/* Which children of the node the ray meets within (0, limit), as a bit mask, and the
+ * (frame) distances at which it enters them. Written as plain loops over the four
+ * children, which the compiler turns into four-wide SSE instructions. `a > b ? a : b`
+ * (not fmaxf) is what one SSE instruction computes, and it keeps b when a is NaN. */
+static inline int children_hit(const BvhNode *node, const BoxRay *r, float limit,
+                               float entry[BVH_WIDTH])
+{
+    float near[BVH_WIDTH], far[BVH_WIDTH];
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        near[k] = 0.0f;
+        far[k] = limit;
+    }
+    for (int axis = 0; axis < 3; axis++) {
+        const float *near_plane = node->bounds[r->near[axis]][axis];
+        const float *far_plane = node->bounds[1 - r->near[axis]][axis];
+        for (int k = 0; k < BVH_WIDTH; k++) {
+            float t_near = (near_plane[k] - r->origin[0][axis]) * r->inverse[axis];
+            float t_far = (far_plane[k] - r->origin[1][axis]) * r->inverse[axis];
+            near[k] = t_near > near[k] ? t_near : near[k];
+            far[k] = t_far < far[k] ? t_far : far[k];
         }
-    /* A relative margin keeps flat boxes (a wall's) and rounding from losing a hit. */
-    for (int k = 0; k < 2; k++)
-        entry[k] = near[k] <= far[k] * (1.0 + 1e-12) ? near[k] : INFINITY;
+    }
+    int mask = 0;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        entry[k] = near[k];
+        mask |= (near[k] <= far[k] * BVH_BOX_MARGIN) << k;
+    }
+    return mask;
 }
 
 static inline double primitive_intersect(BvhPrimitives p, int index, Ray ray, double tmax)
@@ -208,64 +428,70 @@ static inline double primitive_intersect(BvhPrimitives p, int index, Ray ray, do
     return sphere_intersect(&p.spheres[index - p.triangle_count], ray, 0.0, tmax);
 }
 
-/* The traversal shared by both queries: any_hit stops at the first hit found. The
- * stack holds subtrees still to visit with the distance at which the ray enters their
- * box, so that one beyond the nearest hit found since is skipped when popped. */
-static double safe_inverse(double d)
+/* Subtrees still to visit, with the distance at which the ray enters their box: one
+ * entered beyond the nearest hit found since is skipped when popped. Each level of the
+ * tree adds at most BVH_WIDTH - 1 entries. */
+typedef struct {
+    int child, count; /* as in BvhNode */
+    float entry;
+} StackEntry;
+
+#define BVH_STACK ((BVH_WIDTH - 1) * BVH_MAX_DEPTH + 1)
+
+/* Push the children in `mask`, farthest first, so that the nearest is popped next. */
+static inline int push_children(const BvhNode *node, int mask, const float entry[BVH_WIDTH],
+                                StackEntry *stack, int depth)
 {
-    return 1.0 / (d != 0.0 ? d : copysign(1e-300, d)); /* huge, never infinite: no 0 * inf */
+    int order[BVH_WIDTH], n = 0;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        if (!(mask >> k & 1))
+            continue;
+        int i = n++;
+        for (; i > 0 && entry[order[i - 1]] < entry[k]; i--)
+            order[i] = order[i - 1];
+        order[i] = k;
+    }
+    for (int i = 0; i < n; i++) {
+        StackEntry e = {node->child[order[i]], node->count[order[i]], entry[order[i]]};
+        stack[depth++] = e;
+    }
+    return depth;
 }
 
+/* The traversal shared by both queries: any_hit stops at the first hit found. */
 static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int any_hit)
 {
-    const double origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
-    const double inverse[3] = {safe_inverse(ray.dir.x), safe_inverse(ray.dir.y),
-                               safe_inverse(ray.dir.z)};
     if (bvh->node_count == 0)
         return -1;
-    struct { int node; double entry; } stack[BVH_SAH_LEVELS + 32];
-    int depth = 0, nearest = -1, node = 0;
-    for (;;) {
-        const BvhNode *n = &bvh->nodes[node];
-        if (n->count > 0) {
-            for (int i = n->first; i < n->first + n->count; i++) {
-                double t = primitive_intersect(p, bvh->primitives[i], ray, *tmax);
-                if (t < *tmax) {
-                    *tmax = t;
-                    nearest = bvh->primitives[i];
-                    if (any_hit)
-                        return nearest;
-                }
-            }
-        } else {
-            int near = node + 1, far = n->first;
-            double entry[2];
-            children_entry(n, origin, inverse, *tmax, entry);
-            double t_near = entry[0], t_far = entry[1];
-            if (t_far < t_near) {
-                int swap = near;
-                near = far;
-                far = swap;
-                double t = t_near;
-                t_near = t_far;
-                t_far = t;
-            }
-            if (t_far < INFINITY) {
-                stack[depth].node = far;
-                stack[depth++].entry = t_far;
-            }
-            if (t_near < INFINITY) {
-                node = near;
-                continue;
+    BoxRay box_ray = box_ray_make(bvh, ray);
+    float limit = float_above(*tmax * bvh->scale);
+    StackEntry stack[BVH_STACK];
+    int depth = 0, nearest = -1;
+    StackEntry root = {0, 0, 0.0f};
+    stack[depth++] = root;
+    while (depth > 0) {
+        StackEntry e = stack[--depth];
+        if (e.entry > limit * BVH_BOX_MARGIN)
+            continue;
+        if (e.count == 0) {
+            const BvhNode *node = &bvh->nodes[e.child];
+            float entry[BVH_WIDTH];
+            int mask = children_hit(node, &box_ray, limit, entry);
+            depth = push_children(node, mask, entry, stack, depth);
+            continue;
+        }
+        for (int i = e.child; i < e.child + e.count; i++) {
+            double t = primitive_intersect(p, bvh->primitives[i], ray, *tmax);
+            if (t < *tmax) {
+                *tmax = t;
+                nearest = bvh->primitives[i];
+                if (any_hit)
+                    return nearest;
+                limit = float_above(t * bvh->scale);
             }
         }
-        do {
-            if (depth == 0)
-                return nearest;
-            depth--;
-        } while (stack[depth].entry > *tmax * (1.0 + 1e-12)); /* margin as in children_entry */
-        node = stack[depth].node;
     }
+    return nearest;
 }
 
 int bvh_intersect(const Bvh *bvh, BvhPrimitives primitives, Ray ray, double *tmax)
