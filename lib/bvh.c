@@ -165,7 +165,7 @@ static void sort_along(const Builder *builder, Item *items, int count, int axis)
 
 /* The split of the surface area heuristic over every split of every axis's centroid
  * order: leaves items sorted along the best axis and returns the left part's size. */
-static int sah_split(Builder *builder, Item *items, int count)
+static int sah_split(Builder *builder, Item *items, int count, double *cost)
 {
     double best_cost = INFINITY;
     int best_axis = 0, best_split = count / 2;
@@ -188,6 +188,7 @@ static int sah_split(Builder *builder, Item *items, int count)
         }
     }
     sort_along(builder, items, count, best_axis);
+    *cost = best_cost;
     return best_split;
 }
 
@@ -204,20 +205,25 @@ static int build(Builder *builder, Item *items, int count, int first, int level)
     BinaryNode *node = &builder->nodes[index];
     node->box = box;
     Vec3 spread = vec3_sub(centroids.upper, centroids.lower);
-    if (count <= BVH_LEAF_SIZE || vec3_max_component(spread) == 0.0) {
+    int split = 0; /* 0: a leaf */
+    if (count > 1 && vec3_max_component(spread) > 0.0) {
+        if (level < BVH_SAH_LEVELS) {
+            double cost;
+            split = sah_split(builder, items, count, &cost);
+            if (count <= BVH_LEAF_SIZE && count <= BVH_NODE_COST + cost / box_area(box))
+                split = 0;
+        } else {
+            int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
+            sort_along(builder, items, count, axis);
+            split = count / 2;
+        }
+    }
+    if (split == 0) {
         node->first = first;
         node->count = count;
         for (int i = 0; i < count; i++)
             builder->order[first + i] = items[i].primitive;
         return index;
-    }
-    int split;
-    if (level < BVH_SAH_LEVELS) {
-        split = sah_split(builder, items, count);
-    } else {
-        int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
-        sort_along(builder, items, count, axis);
-        split = count / 2;
     }
     node->count = 0;
     int left = build(builder, items, split, first, level + 1);
@@ -269,6 +275,18 @@ static int gather_children(const BinaryNode *nodes, int index, int children[BVH_
     return n;
 }
 
+static int make_leaf(Bvh *bvh, const BinaryNode *node)
+{
+    BvhLeaf *leaf = &bvh->leaves[bvh->leaf_count];
+    for (int axis = 0; axis < 3; axis++) {
+        leaf->bounds[0][axis] = axis_value(node->box.lower, axis);
+        leaf->bounds[1][axis] = axis_value(node->box.upper, axis);
+    }
+    leaf->first = node->first;
+    leaf->count = node->count;
+    return bvh->leaf_count++;
+}
+
 /* Make the four-wide node for binary node `index` and, recursively, its subtree. */
 static int make_wide(Bvh *bvh, const BinaryNode *nodes, int index)
 {
@@ -282,7 +300,7 @@ static int make_wide(Bvh *bvh, const BinaryNode *nodes, int index)
             node->bounds[1][axis][k] = -INFINITY;
         }
         node->child[k] = -1;
-        node->count[k] = 0;
+        node->is_leaf[k] = 0;
         if (k >= n)
             continue;
         const BinaryNode *c = &nodes[children[k]];
@@ -290,8 +308,8 @@ static int make_wide(Bvh *bvh, const BinaryNode *nodes, int index)
             node->bounds[0][axis][k] = float_below(to_frame(bvh, c->box.lower, axis));
             node->bounds[1][axis][k] = float_above(to_frame(bvh, c->box.upper, axis));
         }
-        node->count[k] = c->count;
-        node->child[k] = c->count > 0 ? c->first : make_wide(bvh, nodes, children[k]);
+        node->is_leaf[k] = c->count > 0;
+        node->child[k] = c->count > 0 ? make_leaf(bvh, c) : make_wide(bvh, nodes, children[k]);
     }
     return wide;
 }
@@ -320,9 +338,10 @@ int bvh_build(Bvh *bvh, BvhPrimitives primitives)
     double *right_area = malloc((size_t)n * sizeof *right_area);
     BinaryNode *binary = malloc((size_t)(2 * n - 1) * sizeof *binary);
     bvh->nodes = malloc((size_t)n * sizeof *bvh->nodes);
+    bvh->leaves = malloc((size_t)n * sizeof *bvh->leaves);
     bvh->primitives = malloc((size_t)n * sizeof *bvh->primitives);
     int kept_count = -1;
-    if (boxes && kept && items && right_area && binary && bvh->nodes && bvh->primitives)
+    if (boxes && kept && items && right_area && binary && bvh->nodes && bvh->leaves && bvh->primitives)
         kept_count = without_copies(primitives, n, kept);
     if (kept_count > 0) {
         Box all = box_empty();
@@ -353,22 +372,26 @@ int bvh_build(Bvh *bvh, BvhPrimitives primitives)
 void bvh_free(Bvh *bvh)
 {
     free(bvh->nodes);
+    free(bvh->leaves);
     free(bvh->primitives);
     memset(bvh, 0, sizeof *bvh);
 }
 
-/* Traversal. What every box test needs from the ray, computed once per ray, in the
- * hierarchy's frame: 1/d per axis, which corner holds the slab plane the ray meets
- * first (the lower one when d >= 0), and the origin rounded to floats two ways, so that
- * the near plane's t can only come out smaller and the far plane's larger. A
- * direction component of 0 gives 1/d = +-inf: the slab is then all (t = -inf or NaN
- * at both planes) or nothing (t = +inf at the near one); the tests below skip a NaN.
- * (A component so small that 1/d overflows a float counts as 0, exact for every origin
- * within 2^25 scene sizes of the scene.) */
+/* Traversal. What every box test needs from the ray, computed once per ray: 1/d per
+ * axis, which corner holds the slab plane the ray meets first (the lower one when
+ * d >= 0), and the origin. For the float boxes, all of it in the hierarchy's frame, the
+ * origin rounded to floats two ways so that the near plane's t can only come out
+ * smaller and the far plane's larger. A direction component of 0 gives 1/d = +-inf:
+ * the slab is then all (t = -inf or NaN at both planes) or nothing (t = +inf at the
+ * near one); the tests below skip a NaN. (A component so small that 1/d overflows a
+ * float counts as 0 in the float test, exact for every origin within 2^25 scene sizes
+ * of the scene.) */
 typedef struct {
-    float origin[2][3]; /* [0] for the near planes, [1] for the far planes */
+    int near[3];              /* 0: the near plane is the box's lower one, 1: its upper one */
+    float origin[2][3];       /* frame origin, [0] for the near planes, [1] for the far */
     float inverse[3];
-    int near[3];        /* 0: the near plane is the box's lower one, 1: its upper one */
+    double exact_origin[3];   /* for the leaves' boxes, in the scene's coordinates */
+    double exact_inverse[3];
 } BoxRay;
 
 static BoxRay box_ray_make(const Bvh *bvh, Ray ray)
@@ -378,47 +401,77 @@ static BoxRay box_ray_make(const Bvh *bvh, Ray ray)
         double o = to_frame(bvh, ray.origin, axis), d = axis_value(ray.dir, axis);
         double inverse = d != 0.0 ? 1.0 / d : copysign(INFINITY, d);
         r.near[axis] = signbit(d) ? 1 : 0;
-        r.inverse[axis] = fabs(inverse) > FLT_MAX ? (float)copysign(INFINITY, d) : (float)inverse;
         r.origin[0][axis] = r.near[axis] ? float_below(o) : float_above(o);
         r.origin[1][axis] = r.near[axis] ? float_above(o) : float_below(o);
+        r.inverse[axis] = fabs(inverse) > FLT_MAX ? (float)copysign(INFINITY, d) : (float)inverse;
+        r.exact_origin[axis] = axis_value(ray.origin, axis);
+        r.exact_inverse[axis] = inverse;
     }
     return r;
 }
 
-/* The slab test's margin. With exact planes and origin, each computed t carries three
- * roundings (the subtraction, 1/d, the product: relative error 3u, u = 2^-24), so a
- * ray that meets the box has near <= far * (1 + 3u) / (1 - 3u), and the product with
- * the margin rounds once more: 1 + 7u is enough, 1 + 16u leaves room. */
+/* The float slab test's margin. With exact planes and origin, each computed t carries
+ * three roundings (the subtraction, 1/d, the product: relative error 3u, u = 2^-24),
+ * so a ray that meets the box has near <= far * (1 + 3u) / (1 - 3u), and the product
+ * with the margin rounds once more: 1 + 7u is enough, 1 + 16u leaves room. */
 #define BVH_BOX_MARGIN (1.0f + 0x1p-20f)
 
-/* Which children of the node the ray meets within (0, limit), as a bit mask, and the
- * (frame) distances at which it enters them. Written as plain loops over the four
- * children, which the compiler turns into four-wide SSE instructions. `a > b ? a : b`
- * (not fmaxf) is what one SSE instruction computes, and it keeps b when a is NaN. */
-static inline int children_hit(const BvhNode *node, const BoxRay *r, float limit,
-                               float entry[BVH_WIDTH])
+/* Narrow each child's interval [near, far] to the slab of one axis. Written as a plain
+ * loop over the four children, which the compiler turns into four-wide SSE
+ * instructions. `a > b ? a : b` (not fmaxf) is what one SSE instruction computes, and
+ * it keeps b when a is NaN. */
+static inline void clip_to_slab(const BvhNode *node, const BoxRay *r, int axis,
+                                float near[BVH_WIDTH], float far[BVH_WIDTH])
+{
+    const float *near_plane = node->bounds[r->near[axis]][axis];
+    const float *far_plane = node->bounds[1 - r->near[axis]][axis];
+    float origin_near = r->origin[0][axis], origin_far = r->origin[1][axis];
+    float inverse = r->inverse[axis];
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        float t_near = (near_plane[k] - origin_near) * inverse;
+        float t_far = (far_plane[k] - origin_far) * inverse;
+        near[k] = t_near > near[k] ? t_near : near[k];
+        far[k] = t_far < far[k] ? t_far : far[k];
+    }
+}
+
+/* The (frame) distance at which the ray enters each child's box within (0, limit), or
+ * infinity where it misses it. */
+static inline void children_entry(const BvhNode *node, const BoxRay *r, float limit,
+                                  float entry[BVH_WIDTH])
 {
     float near[BVH_WIDTH], far[BVH_WIDTH];
     for (int k = 0; k < BVH_WIDTH; k++) {
         near[k] = 0.0f;
         far[k] = limit;
     }
-    for (int axis = 0; axis < 3; axis++) {
-        const float *near_plane = node->bounds[r->near[axis]][axis];
-        const float *far_plane = node->bounds[1 - r->near[axis]][axis];
-        for (int k = 0; k < BVH_WIDTH; k++) {
-            float t_near = (near_plane[k] - r->origin[0][axis]) * r->inverse[axis];
-            float t_far = (far_plane[k] - r->origin[1][axis]) * r->inverse[axis];
-            near[k] = t_near > near[k] ? t_near : near[k];
-            far[k] = t_far < far[k] ? t_far : far[k];
-        }
-    }
-    int mask = 0;
-    for (int k = 0; k < BVH_WIDTH; k++) {
-        entry[k] = near[k];
-        mask |= (near[k] <= far[k] * BVH_BOX_MARGIN) << k;
-    }
-    return mask;
+    clip_to_slab(node, r, 0, near, far);
+    clip_to_slab(node, r, 1, near, far);
+    clip_to_slab(node, r, 2, near, far);
+    for (int k = 0; k < BVH_WIDTH; k++)
+        entry[k] = near[k] <= far[k] * BVH_BOX_MARGIN ? near[k] : INFINITY;
+}
+
+/* The same slab test in double for one leaf's box, with a relative margin that covers
+ * rounding (a few 1e-16) many times over. */
+#define BVH_LEAF_MARGIN (1.0 + 1e-12)
+
+static inline void clip_to_leaf_slab(const BvhLeaf *leaf, const BoxRay *r, int axis,
+                                     double *near, double *far)
+{
+    double t_near = (leaf->bounds[r->near[axis]][axis] - r->exact_origin[axis]) * r->exact_inverse[axis];
+    double t_far = (leaf->bounds[1 - r->near[axis]][axis] - r->exact_origin[axis]) * r->exact_inverse[axis];
+    *near = t_near > *near ? t_near : *near;
+    *far = t_far < *far ? t_far : *far;
+}
+
+static inline int leaf_hit(const BvhLeaf *leaf, const BoxRay *r, double tmax)
+{
+    double near = 0.0, far = tmax;
+    clip_to_leaf_slab(leaf, r, 0, &near, &far);
+    clip_to_leaf_slab(leaf, r, 1, &near, &far);
+    clip_to_leaf_slab(leaf, r, 2, &near, &far);
+    return near <= far * BVH_LEAF_MARGIN;
 }
 
 static inline double primitive_intersect(BvhPrimitives p, int index, Ray ray, double tmax)
@@ -432,28 +485,25 @@ static inline double primitive_intersect(BvhPrimitives p, int index, Ray ray, do
  * entered beyond the nearest hit found since is skipped when popped. Each level of the
  * tree adds at most BVH_WIDTH - 1 entries. */
 typedef struct {
-    int child, count; /* as in BvhNode */
+    int child, is_leaf; /* as in BvhNode */
     float entry;
 } StackEntry;
 
-#define BVH_STACK ((BVH_WIDTH - 1) * BVH_MAX_DEPTH + 1)
+#define BVH_STACK ((BVH_WIDTH - 1) * BVH_MAX_DEPTH + BVH_WIDTH)
 
-/* Push the children in `mask`, farthest first, so that the nearest is popped next. */
-static inline int push_children(const BvhNode *node, int mask, const float entry[BVH_WIDTH],
+/* Push the children the ray meets, farthest first, so that the nearest is popped next. */
+static inline int push_children(const BvhNode *node, const float entry[BVH_WIDTH],
                                 StackEntry *stack, int depth)
 {
-    int order[BVH_WIDTH], n = 0;
+    int bottom = depth;
     for (int k = 0; k < BVH_WIDTH; k++) {
-        if (!(mask >> k & 1))
+        if (entry[k] == INFINITY)
             continue;
-        int i = n++;
-        for (; i > 0 && entry[order[i - 1]] < entry[k]; i--)
-            order[i] = order[i - 1];
-        order[i] = k;
-    }
-    for (int i = 0; i < n; i++) {
-        StackEntry e = {node->child[order[i]], node->count[order[i]], entry[order[i]]};
-        stack[depth++] = e;
+        StackEntry e = {node->child[k], node->is_leaf[k], entry[k]};
+        int i = depth++;
+        for (; i > bottom && stack[i - 1].entry < e.entry; i--)
+            stack[i] = stack[i - 1];
+        stack[i] = e;
     }
     return depth;
 }
@@ -473,14 +523,17 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
         StackEntry e = stack[--depth];
         if (e.entry > limit * BVH_BOX_MARGIN)
             continue;
-        if (e.count == 0) {
+        if (!e.is_leaf) {
             const BvhNode *node = &bvh->nodes[e.child];
             float entry[BVH_WIDTH];
-            int mask = children_hit(node, &box_ray, limit, entry);
-            depth = push_children(node, mask, entry, stack, depth);
+            children_entry(node, &box_ray, limit, entry);
+            depth = push_children(node, entry, stack, depth);
             continue;
         }
-        for (int i = e.child; i < e.child + e.count; i++) {
+        const BvhLeaf *leaf = &bvh->leaves[e.child];
+        if (!leaf_hit(leaf, &box_ray, *tmax))
+            continue;
+        for (int i = leaf->first; i < leaf->first + leaf->count; i++) {
             double t = primitive_intersect(p, bvh->primitives[i], ray, *tmax);
             if (t < *tmax) {
                 *tmax = t;

@@ -44,23 +44,40 @@
 #include "sphere.h"
 #include "triangle.h"
 
-#define BVH_WIDTH 4     /* children per node */
+#ifndef BVH_WIDTH
+#define BVH_WIDTH 4 /* children per node */
+#endif
+#ifndef BVH_LEAF_SIZE
 #define BVH_LEAF_SIZE 2 /* most primitives per leaf, unless they cannot be separated */
+#endif
+#ifndef BVH_NODE_COST
+#define BVH_NODE_COST 0.5
+#endif
 
 typedef struct {
     /* The children's boxes in the hierarchy's frame: [0] lower, [1] upper corner. An
      * unused slot holds an empty box (lower +inf, upper -inf), which no ray meets. */
     float bounds[2][3][BVH_WIDTH];
-    int child[BVH_WIDTH]; /* inner child: its node; leaf: its first entry of `primitives` */
-    int count[BVH_WIDTH]; /* inner child: 0; leaf: its number of primitives */
+    int child[BVH_WIDTH];   /* the child's number among the nodes, or among the leaves */
+    int is_leaf[BVH_WIDTH]; /* which of the two */
 } BvhNode;
+
+/* A leaf keeps its box in double too, in the scene's coordinates: a float box cannot
+ * tell a ray that starts (or ends) RAY_OFFSET off a surface from one that touches it,
+ * and every shadow and bounce ray does that. */
+typedef struct {
+    double bounds[2][3]; /* [0] lower, [1] upper corner */
+    int first, count; /* its primitives: entries first .. first + count - 1 of `primitives` */
+} BvhLeaf;
 
 typedef struct {
     BvhNode *nodes; /* the root is nodes[0] */
     int node_count;
+    BvhLeaf *leaves;
+    int leaf_count;
     int *primitives; /* primitive numbers in leaf order (exact copies left out) */
     int primitive_count;
-    Vec3 centre;  /* the frame of the boxes: X = (x - centre) * scale */
+    Vec3 centre;  /* the frame of the float boxes: X = (x - centre) * scale */
     double scale;
 } Bvh;
 
