@@ -60,14 +60,14 @@ static inline double triangle_intersect(const Triangle *tri, Ray ray, double tmi
     double edge = tri->longest_edge;
     double slack = TRIANGLE_EDGE_SLACK * (vec3_max_abs(s) + edge) * edge * fabs(inv_det);
     double u = vec3_dot(s, p) * inv_det;
-    if (u < -slack || u > 1.0 + slack)
-        return INFINITY;
     Vec3 q = vec3_cross(s, tri->e1);
     double v = vec3_dot(ray.dir, q) * inv_det;
-    if (v < -slack || u + v > 1.0 + slack)
-        return INFINITY;
     double t = vec3_dot(tri->e2, q) * inv_det;
-    return (t > tmin && t < tmax) ? t : INFINITY;
+    /* All the conditions at once, with & rather than &&: a ray misses about half its
+     * triangles on u, and a branch that goes either way at random costs more than
+     * finishing the arithmetic. */
+    int inside = (u >= -slack) & (u <= 1.0 + slack) & (v >= -slack) & (u + v <= 1.0 + slack);
+    return inside & (t > tmin) & (t < tmax) ? t : INFINITY;
 }
 
 /* The point T(u, v) of eq. 16. */
