@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Building: boxes in double, in the scene's coordinates. */
+/* Boxes in double, in the scene's coordinates, for building. */
 
 typedef struct {
     Vec3 lower, upper;
@@ -36,7 +36,7 @@ static double box_area(Box box)
     return d.x < 0.0 ? 0.0 : 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x);
 }
 
-static Vec3 box_centroid(Box box)
+static Vec3 box_centre(Box box)
 {
     return vec3_scale(vec3_add(box.lower, box.upper), 0.5);
 }
@@ -60,9 +60,9 @@ static Box primitive_box(BvhPrimitives p, int index)
 }
 
 /* Exact copies. Two primitives whose stored numbers are equal give every ray the same
- * t, so the first (lowest number, the one testing every primitive reports) answers
- * for all its copies. Without this, a pile of copies is tested in full by every ray
- * that reaches it: equal t never lets one copy cull another. Each primitive's key is
+ * t, so the first (the lowest number, which testing every primitive reports) answers
+ * for all of its copies. Without this, a pile of copies is tested in full by every ray
+ * that reaches it: an equal t never lets one copy cull another. A primitive's key is
  * every number its intersection test reads; sorting the keys brings copies together. */
 #define KEY_SIZE 12
 
@@ -101,8 +101,8 @@ static int compare_keyed(const void *a, const void *b)
     return order != 0 ? order : (ka->primitive > kb->primitive) - (ka->primitive < kb->primitive);
 }
 
-/* Write the primitives that are not a copy of a lower-numbered one into `kept`, and
- * return their number, or -1 when memory runs out. */
+/* Write the primitives that are no copy of a lower-numbered one into `kept`, and
+ * return how many there are, or -1 when memory runs out. */
 static int without_copies(BvhPrimitives p, int n, int *kept)
 {
     Keyed *keyed = malloc((size_t)n * sizeof *keyed);
@@ -121,8 +121,9 @@ static int without_copies(BvhPrimitives p, int n, int *kept)
     return count;
 }
 
-/* The binary tree. Each item carries the key it is being sorted by (its centroid on
- * one axis), so the sort needs no other context. */
+/* The binary tree. Each item carries the key it is being sorted by (its box centre on
+ * one axis), so that the sort needs no other context; ties go by primitive number, so
+ * the tree is the same with every C library. */
 typedef struct {
     double key;
     int primitive;
@@ -144,28 +145,23 @@ typedef struct {
 } BinaryNode;
 
 typedef struct {
-    const Box *boxes;    /* of every primitive */
+    const Box *boxes;   /* of every primitive */
     BinaryNode *nodes;
     int node_count;
-    int *order;          /* the primitives in leaf order */
-    double *right_area;  /* scratch for the heuristic */
+    int *order;         /* the primitives in leaf order */
+    double *right_area; /* scratch for the heuristic */
 } Builder;
 
 static void sort_along(const Builder *builder, Item *items, int count, int axis)
 {
     for (int i = 0; i < count; i++)
-        items[i].key = axis_value(box_centroid(builder->boxes[items[i].primitive]), axis);
+        items[i].key = axis_value(box_centre(builder->boxes[items[i].primitive]), axis);
     qsort(items, (size_t)count, sizeof *items, compare_items);
 }
 
-/* Below this level the builder splits at the median, which bounds the tree's depth
- * (and the traversal stack) whatever the heuristic would prefer. */
-#define BVH_SAH_LEVELS 32
-#define BVH_MAX_DEPTH (BVH_SAH_LEVELS + 32)
-
-/* The split of the surface area heuristic over every split of every axis's centroid
- * order: leaves items sorted along the best axis and returns the left part's size. */
-static int sah_split(Builder *builder, Item *items, int count, double *cost)
+/* The surface area heuristic over every split of every axis's order: leaves the items
+ * sorted along the best axis and returns the size of the left part. */
+static int sah_split(Builder *builder, Item *items, int count)
 {
     double best_cost = INFINITY;
     int best_axis = 0, best_split = count / 2;
@@ -188,7 +184,6 @@ static int sah_split(Builder *builder, Item *items, int count, double *cost)
         }
     }
     sort_along(builder, items, count, best_axis);
-    *cost = best_cost;
     return best_split;
 }
 
@@ -197,33 +192,28 @@ static int sah_split(Builder *builder, Item *items, int count, double *cost)
 static int build(Builder *builder, Item *items, int count, int first, int level)
 {
     int index = builder->node_count++;
-    Box box = box_empty(), centroids = box_empty();
+    Box box = box_empty(), centres = box_empty();
     for (int i = 0; i < count; i++) {
         box = box_union(box, builder->boxes[items[i].primitive]);
-        centroids = box_grow(centroids, box_centroid(builder->boxes[items[i].primitive]));
+        centres = box_grow(centres, box_centre(builder->boxes[items[i].primitive]));
     }
     BinaryNode *node = &builder->nodes[index];
     node->box = box;
-    Vec3 spread = vec3_sub(centroids.upper, centroids.lower);
-    int split = 0; /* 0: a leaf */
-    if (count > 1 && vec3_max_component(spread) > 0.0) {
-        if (level < BVH_SAH_LEVELS) {
-            double cost;
-            split = sah_split(builder, items, count, &cost);
-            if (count <= BVH_LEAF_SIZE && count <= BVH_NODE_COST + cost / box_area(box))
-                split = 0;
-        } else {
-            int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
-            sort_along(builder, items, count, axis);
-            split = count / 2;
-        }
-    }
-    if (split == 0) {
+    Vec3 spread = vec3_sub(centres.upper, centres.lower);
+    if (count == 1 || !(vec3_max_component(spread) > 0.0)) {
         node->first = first;
         node->count = count;
         for (int i = 0; i < count; i++)
             builder->order[first + i] = items[i].primitive;
         return index;
+    }
+    int split;
+    if (level < BVH_SAH_LEVELS) {
+        split = sah_split(builder, items, count);
+    } else {
+        int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
+        sort_along(builder, items, count, axis);
+        split = count / 2;
     }
     node->count = 0;
     int left = build(builder, items, split, first, level + 1);
@@ -233,20 +223,30 @@ static int build(Builder *builder, Item *items, int count, int first, int level)
     return index;
 }
 
-/* The four-wide tree, in the hierarchy's frame. Float planes rounded outward: a float
- * no larger (no smaller) than x. Converting rounds to nearest, by at most 2^-24 |x|
- * (2^-150 for the smallest floats), so stepping 2^-23 |x| + 2^-100 away first is
- * enough; beyond the float range, the infinity on that side. */
-static float float_below(double x)
+/* Rounding outward. A float no larger (no smaller) than x: converting rounds to
+ * nearest, by at most 2^-24 |x|, and stepping 2^-22 |f| + 2^-100 further away in float
+ * arithmetic (which rounds once more, by at most 2^-24 |f|) clears it. The same in
+ * double for the leaves' boxes, 2^-50 |x| being several roundings of 2^-53 |x|. */
+static inline void float_bracket(double x, float *below, float *above)
 {
-    double below = x - (fabs(x) * 0x1p-23 + 0x1p-100);
-    return below < -FLT_MAX ? -INFINITY : (float)below;
+    float f = (float)x, step = fabsf(f) * 0x1p-22f + 0x1p-100f;
+    *below = f - step;
+    *above = f + step;
 }
 
-static float float_above(double x)
+static double double_below(double x) { return x - (fabs(x) * 0x1p-50 + 0x1p-1000); }
+static double double_above(double x) { return x + (fabs(x) * 0x1p-50 + 0x1p-1000); }
+
+/* The frame: the box of all primitives centred on the origin and scaled by a power of
+ * two (so exactly) into [-1, 1]^3. */
+static void choose_frame(Bvh *bvh, Box box)
 {
-    double above = x + (fabs(x) * 0x1p-23 + 0x1p-100);
-    return above > FLT_MAX ? INFINITY : (float)above;
+    bvh->centre = box_centre(box);
+    double half = 0.5 * vec3_max_component(vec3_sub(box.upper, box.lower));
+    int exponent = 0;
+    if (half > 0.0 && isfinite(half))
+        frexp(half, &exponent);
+    bvh->scale = ldexp(1.0, -exponent);
 }
 
 static double to_frame(const Bvh *bvh, Vec3 p, int axis)
@@ -254,8 +254,8 @@ static double to_frame(const Bvh *bvh, Vec3 p, int axis)
     return (axis_value(p, axis) - axis_value(bvh->centre, axis)) * bvh->scale;
 }
 
-/* The children binary node `index` stands for in a four-wide node: itself, its
- * inner nodes opened, the largest first, until there are BVH_WIDTH or only leaves. */
+/* The children binary node `index` stands for in a four-wide node: itself, its inner
+ * nodes opened, the largest first, until there are BVH_WIDTH or only leaves. */
 static int gather_children(const BinaryNode *nodes, int index, int children[BVH_WIDTH])
 {
     int n = 1;
@@ -279,8 +279,8 @@ static int make_leaf(Bvh *bvh, const BinaryNode *node)
 {
     BvhLeaf *leaf = &bvh->leaves[bvh->leaf_count];
     for (int axis = 0; axis < 3; axis++) {
-        leaf->bounds[0][axis] = axis_value(node->box.lower, axis);
-        leaf->bounds[1][axis] = axis_value(node->box.upper, axis);
+        leaf->bounds[0][axis] = double_below(axis_value(node->box.lower, axis));
+        leaf->bounds[1][axis] = double_above(axis_value(node->box.upper, axis));
     }
     leaf->first = node->first;
     leaf->count = node->count;
@@ -305,25 +305,16 @@ static int make_wide(Bvh *bvh, const BinaryNode *nodes, int index)
             continue;
         const BinaryNode *c = &nodes[children[k]];
         for (int axis = 0; axis < 3; axis++) {
-            node->bounds[0][axis][k] = float_below(to_frame(bvh, c->box.lower, axis));
-            node->bounds[1][axis][k] = float_above(to_frame(bvh, c->box.upper, axis));
+            float below, above;
+            float_bracket(to_frame(bvh, c->box.lower, axis), &below, &above);
+            node->bounds[0][axis][k] = below;
+            float_bracket(to_frame(bvh, c->box.upper, axis), &below, &above);
+            node->bounds[1][axis][k] = above;
         }
         node->is_leaf[k] = c->count > 0;
         node->child[k] = c->count > 0 ? make_leaf(bvh, c) : make_wide(bvh, nodes, children[k]);
     }
     return wide;
-}
-
-/* The frame: the box of all primitives centred on the origin and scaled by a power of
- * two (exact) into [-1, 1]^3. */
-static void choose_frame(Bvh *bvh, Box box)
-{
-    bvh->centre = box_centroid(box);
-    double half = 0.5 * vec3_max_component(vec3_sub(box.upper, box.lower));
-    int exponent = 0;
-    if (half > 0.0 && isfinite(half))
-        frexp(half, &exponent);
-    bvh->scale = ldexp(1.0, -exponent);
 }
 
 int bvh_build(Bvh *bvh, BvhPrimitives primitives)
@@ -340,8 +331,10 @@ int bvh_build(Bvh *bvh, BvhPrimitives primitives)
     bvh->nodes = malloc((size_t)n * sizeof *bvh->nodes);
     bvh->leaves = malloc((size_t)n * sizeof *bvh->leaves);
     bvh->primitives = malloc((size_t)n * sizeof *bvh->primitives);
+    bvh->triangles = calloc((size_t)n, sizeof *bvh->triangles);
     int kept_count = -1;
-    if (boxes && kept && items && right_area && binary && bvh->nodes && bvh->leaves && bvh->primitives)
+    if (boxes && kept && items && right_area && binary && bvh->nodes && bvh->leaves &&
+        bvh->primitives && bvh->triangles)
         kept_count = without_copies(primitives, n, kept);
     if (kept_count > 0) {
         Box all = box_empty();
@@ -354,6 +347,9 @@ int bvh_build(Bvh *bvh, BvhPrimitives primitives)
         Builder builder = {boxes, binary, 0, bvh->primitives, right_area};
         build(&builder, items, kept_count, 0, 0);
         bvh->primitive_count = kept_count;
+        for (int i = 0; i < kept_count; i++)
+            if (bvh->primitives[i] < primitives.triangle_count)
+                bvh->triangles[i] = primitives.triangles[bvh->primitives[i]];
         choose_frame(bvh, all);
         make_wide(bvh, binary, 0);
     }
@@ -374,6 +370,7 @@ void bvh_free(Bvh *bvh)
     free(bvh->nodes);
     free(bvh->leaves);
     free(bvh->primitives);
+    free(bvh->triangles);
     memset(bvh, 0, sizeof *bvh);
 }
 
@@ -385,27 +382,17 @@ void bvh_free(Bvh *bvh)
  * number written four times, once per child, so that the loop over the children reads
  * it like the boxes. A direction component of 0 gives 1/d = +-inf (IEEE division):
  * the slab is then all (t = -inf or NaN at both planes) or nothing (t = +inf at the
- * near one); the tests below skip a NaN. (A component so small that 1/d overflows a
- * float counts as 0 in the float test, exact for every origin within 2^25 scene sizes
- * of the scene.) */
+ * near one), and the tests below skip a NaN. (A component so small that 1/d overflows
+ * a float counts as 0 in the float test, exact for every origin within 2^25 scene
+ * sizes of the scene.) */
 typedef struct {
     float origin[2][3][BVH_WIDTH]; /* frame origin, [0] for the near planes, [1] the far */
     float inverse[3][BVH_WIDTH];
-    int near_plane[3], far_plane[3]; /* places in a node's bounds (floats from the start) */
+    int near_plane[3], far_plane[3]; /* places in a node's bounds (floats from its start) */
     double exact_origin[3];          /* for the leaves' boxes, in the scene's coordinates */
     double exact_inverse[3];
     int exact_near[3], exact_far[3]; /* places in a leaf's bounds */
 } BoxRay;
-
-/* Floats no larger and no smaller than x: converting rounds to nearest, by at most
- * 2^-24 |x|, and stepping 2^-22 |f| + 2^-100 further away in float arithmetic (which
- * rounds once more, by at most 2^-24 |f|) clears it. */
-static inline void float_bracket(double x, float *below, float *above)
-{
-    float f = (float)x, step = fabsf(f) * 0x1p-22f + 0x1p-100f;
-    *below = f - step;
-    *above = f + step;
-}
 
 static inline void box_ray_axis(BoxRay *r, int axis, double origin, double dir,
                                 double centre, double scale)
@@ -441,10 +428,10 @@ static inline void box_ray_init(BoxRay *r, const Bvh *bvh, Ray ray)
  * with the margin rounds once more: 1 + 7u is enough, 1 + 16u leaves room. */
 #define BVH_BOX_MARGIN (1.0f + 0x1p-20f)
 
-/* Narrow each child's interval [near, far] to the slab of one axis. Written as a plain
- * loop over the four children, which the compiler turns into four-wide SSE
- * instructions. `a > b ? a : b` (not fmaxf) is what one SSE instruction computes, and
- * it keeps b when a is NaN. */
+/* Narrow each child's interval [near, far] to the slab of one axis. A plain loop over
+ * the four children, which the compiler turns into four-wide SSE instructions.
+ * `a > b ? a : b` (not fmaxf) is what one SSE instruction computes, and it keeps b
+ * when a is NaN. */
 static inline void clip_to_slab(const BvhNode *node, const BoxRay *r, int axis,
                                 float near[BVH_WIDTH], float far[BVH_WIDTH])
 {
@@ -475,8 +462,9 @@ static inline void children_entry(const BvhNode *node, const BoxRay *r, float li
         entry[k] = near[k] <= far[k] * BVH_BOX_MARGIN ? near[k] : INFINITY;
 }
 
-/* The same slab test in double for one leaf's box, with a relative margin that covers
- * rounding (a few 1e-16) many times over. */
+/* The same slab test in double for one leaf's box (rounded outward by 2^-50, far less
+ * than RAY_OFFSET), with a relative margin that covers the three roundings of each t
+ * (2^-53 each) many times over, and the triangle test's own edge slack. */
 #define BVH_LEAF_MARGIN (1.0 + 1e-12)
 
 static inline void clip_to_leaf_slab(const BvhLeaf *leaf, const BoxRay *r, int axis,
@@ -498,13 +486,6 @@ static inline int leaf_hit(const BvhLeaf *leaf, const BoxRay *r, double tmax)
     return near <= far * BVH_LEAF_MARGIN;
 }
 
-static inline double primitive_intersect(BvhPrimitives p, int index, Ray ray, double tmax)
-{
-    if (index < p.triangle_count)
-        return triangle_intersect(&p.triangles[index], ray, 0.0, tmax);
-    return sphere_intersect(&p.spheres[index - p.triangle_count], ray, 0.0, tmax);
-}
-
 /* Subtrees still to visit, with the distance at which the ray enters their box: one
  * entered beyond the nearest hit found since is skipped when popped. Each level of the
  * tree adds at most BVH_WIDTH - 1 entries. */
@@ -513,7 +494,7 @@ typedef struct {
     float entry;
 } StackEntry;
 
-#define BVH_STACK ((BVH_WIDTH - 1) * BVH_MAX_DEPTH + BVH_WIDTH)
+#define BVH_STACK ((BVH_WIDTH - 1) * BVH_MAX_DEPTH + 1)
 
 /* Push child k if the ray meets it, keeping the children pushed since `bottom` sorted
  * farthest first, so that the nearest is popped next. */
@@ -534,12 +515,22 @@ static inline void push_child(const BvhNode *node, int k, float entry, StackEntr
 static inline int push_children(const BvhNode *node, const float entry[BVH_WIDTH],
                                 StackEntry *stack, int depth)
 {
+    _Static_assert(BVH_WIDTH == 4, "push_children pushes four children");
     int bottom = depth;
     push_child(node, 0, entry[0], stack, bottom, &depth);
     push_child(node, 1, entry[1], stack, bottom, &depth);
     push_child(node, 2, entry[2], stack, bottom, &depth);
     push_child(node, 3, entry[3], stack, bottom, &depth);
     return depth;
+}
+
+static inline double primitive_intersect(const Bvh *bvh, BvhPrimitives p, int entry, Ray ray,
+                                         double tmax)
+{
+    int index = bvh->primitives[entry];
+    if (index < p.triangle_count)
+        return triangle_intersect(&bvh->triangles[entry], ray, 0.0, tmax);
+    return sphere_intersect(&p.spheres[index - p.triangle_count], ray, 0.0, tmax);
 }
 
 /* The traversal shared by both queries: any_hit stops at the first hit found. */
@@ -549,7 +540,8 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
         return -1;
     BoxRay box_ray;
     box_ray_init(&box_ray, bvh, ray);
-    float limit = float_above(*tmax * bvh->scale);
+    float below, limit; /* limit: *tmax in the frame, rounded up */
+    float_bracket(*tmax * bvh->scale, &below, &limit);
     StackEntry stack[BVH_STACK];
     int depth = 0, nearest = -1;
     StackEntry root = {0, 0, 0.0f};
@@ -569,13 +561,13 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
         if (!leaf_hit(leaf, &box_ray, *tmax))
             continue;
         for (int i = leaf->first; i < leaf->first + leaf->count; i++) {
-            double t = primitive_intersect(p, bvh->primitives[i], ray, *tmax);
+            double t = primitive_intersect(bvh, p, i, ray, *tmax);
             if (t < *tmax) {
                 *tmax = t;
                 nearest = bvh->primitives[i];
                 if (any_hit)
                     return nearest;
-                limit = float_above(t * bvh->scale);
+                float_bracket(t * bvh->scale, &below, &limit);
             }
         }
     }
