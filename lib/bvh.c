@@ -225,8 +225,7 @@ static int build(Builder *builder, Item *items, int count, int first, int level)
 
 /* Rounding outward. A float no larger (no smaller) than x: converting rounds to
  * nearest, by at most 2^-24 |x|, and stepping 2^-22 |f| + 2^-100 further away in float
- * arithmetic (which rounds once more, by at most 2^-24 |f|) clears it. The same in
- * double for the leaves' boxes, 2^-50 |x| being several roundings of 2^-53 |x|. */
+ * arithmetic (which rounds once more, by at most 2^-24 |f|) clears it. */
 static inline void float_bracket(double x, float *below, float *above)
 {
     float f = (float)x, step = fabsf(f) * 0x1p-22f + 0x1p-100f;
@@ -234,8 +233,24 @@ static inline void float_bracket(double x, float *below, float *above)
     *above = f + step;
 }
 
-static double double_below(double x) { return x - (fabs(x) * 0x1p-50 + 0x1p-1000); }
-static double double_above(double x) { return x + (fabs(x) * 0x1p-50 + 0x1p-1000); }
+/* A leaf's box in double, widened by what the triangle test may accept beyond a
+ * triangle's edges: its slack (triangle.h) is up to 16 DBL_EPSILON (|s| + |e|) / cos
+ * in distance, and BVH_LEAF_SIZE_MARGIN of the box's size covers the |e| part for rays
+ * down to 1/300 of grazing, the slab test's margin (below, relative to t) the |s| part.
+ * Both stay far below RAY_OFFSET, so a ray leaving a surface can still be turned away
+ * from the surface's own leaf. (2^-50 |x| covers the rounding of x itself.) */
+#define BVH_LEAF_SIZE_MARGIN 1e-12
+
+static void widen_leaf_box(Box box, double bounds[2][3])
+{
+    Vec3 size = vec3_sub(box.upper, box.lower);
+    double widen = BVH_LEAF_SIZE_MARGIN * vec3_max_component(size) + 0x1p-1000;
+    for (int axis = 0; axis < 3; axis++) {
+        double lower = axis_value(box.lower, axis), upper = axis_value(box.upper, axis);
+        bounds[0][axis] = lower - (fabs(lower) * 0x1p-50 + widen);
+        bounds[1][axis] = upper + (fabs(upper) * 0x1p-50 + widen);
+    }
+}
 
 /* The frame: the box of all primitives centred on the origin and scaled by a power of
  * two (so exactly) into [-1, 1]^3. */
@@ -278,10 +293,7 @@ static int gather_children(const BinaryNode *nodes, int index, int children[BVH_
 static int make_leaf(Bvh *bvh, const BinaryNode *node)
 {
     BvhLeaf *leaf = &bvh->leaves[bvh->leaf_count];
-    for (int axis = 0; axis < 3; axis++) {
-        leaf->bounds[0][axis] = double_below(axis_value(node->box.lower, axis));
-        leaf->bounds[1][axis] = double_above(axis_value(node->box.upper, axis));
-    }
+    widen_leaf_box(node->box, leaf->bounds);
     leaf->first = node->first;
     leaf->count = node->count;
     return bvh->leaf_count++;
@@ -462,9 +474,9 @@ static inline void children_entry(const BvhNode *node, const BoxRay *r, float li
         entry[k] = near[k] <= far[k] * BVH_BOX_MARGIN ? near[k] : INFINITY;
 }
 
-/* The same slab test in double for one leaf's box (rounded outward by 2^-50, far less
- * than RAY_OFFSET), with a relative margin that covers the three roundings of each t
- * (2^-53 each) many times over, and the triangle test's own edge slack. */
+/* The same slab test in double for one leaf's (widened) box, with a relative margin
+ * that covers the three roundings of each t (2^-53 each) many times over, and the
+ * triangle test's slack for rays from up to 1/300 of grazing (widen_leaf_box). */
 #define BVH_LEAF_MARGIN (1.0 + 1e-12)
 
 static inline void clip_to_leaf_slab(const BvhLeaf *leaf, const BoxRay *r, int axis,

@@ -1,5 +1,5 @@
 /* scene.c: the scene's arrays and the ray queries against them (chapter 1).
- * See scene.h. The queries go through the bounding volume hierarchy (bvh.h, chapter 7),
+ * See scene.h. The queries go through the bounding volume hierarchy (bvh.h),
  * which finds the same hit as testing every primitive, only sooner. */
 #include "scene.h"
 

@@ -1,4 +1,5 @@
-/* triangle.c: Möller-Trumbore ray-triangle intersection (chapter 1). See triangle.h. */
+/* triangle.c: a triangle's edges, normal and area, and its points (chapter 1). The
+ * Möller-Trumbore intersection test is in triangle.h, inline. */
 #include "triangle.h"
 
 Triangle triangle_make(Vec3 v0, Vec3 v1, Vec3 v2, int material)
