@@ -14,7 +14,7 @@
  * The float boxes must enclose what they bound (rounded outward), and degenerate input
  * must stay cheap, counted in what a ray can test rather than timed: 20,000 copies of
  * one triangle leave one primitive, 2,000 triangles with one common box centre one leaf,
- * and a nest of 200 triangles, each twice the last (which the heuristic peels one at
+ * and a nest of 500 triangles, each twice the last (which the heuristic peels one at
  * a time), a tree no deeper than BVH_MAX_DEPTH.
  */
 #include <stdarg.h>
@@ -417,7 +417,7 @@ static Triangle nested_triangle(int i, int material)
 static void test_nest_has_bounded_depth(void **state)
 {
     (void)state;
-    Scene scene = scene_of_triangles(200, nested_triangle);
+    Scene scene = scene_of_triangles(500, nested_triangle);
     int depth = depth_of(&scene.bvh, 0);
     print_message("    depth %d of at most %d\n", depth, BVH_MAX_DEPTH);
     assert_true(depth > BVH_SAH_LEVELS && depth <= BVH_MAX_DEPTH);
