@@ -223,12 +223,18 @@ static int build(Builder *builder, Item *items, int count, int first, int level)
     return index;
 }
 
-/* Rounding outward. A float no larger (no smaller) than x: converting rounds to
- * nearest, by at most 2^-24 |x|, and stepping 2^-22 |f| + 2^-100 further away in float
- * arithmetic (which rounds once more, by at most 2^-24 |f|) clears it. */
+/* Rounding outward, so that a float box is tested as if it were the exact one, with no
+ * margin afterwards. Converting x to a float f rounds by at most u |x| (u = 2^-24);
+ * then stepping 8u |f| + 2^-100 away, in float arithmetic that rounds once more, gives
+ * a float `below` at least 6u |x| below x, and `above` as far above it. The slab test
+ * computes each t = (plane - origin) * (1/d) with three roundings, at most 3u of
+ * |plane| + |origin| (over |d|), and the planes and the origin are each moved 6u of
+ * their size the widening way: so a computed near t is never larger than the exact
+ * one, nor a far t smaller. (And plane - origin is never 0, so 0 * inf, for d = 0,
+ * never arises.) */
 static inline void float_bracket(double x, float *below, float *above)
 {
-    float f = (float)x, step = fabsf(f) * 0x1p-22f + 0x1p-100f;
+    float f = (float)x, step = fabsf(f) * 0x1p-21f + 0x1p-100f;
     *below = f - step;
     *above = f + step;
 }
@@ -390,13 +396,12 @@ void bvh_free(Bvh *bvh)
  * axis; which plane of each slab the ray meets first (the lower one when d >= 0), as
  * the place of that plane among a box's numbers; and the origin. For the float boxes,
  * all of it in the hierarchy's frame, the origin rounded to floats two ways so that
- * the near plane's t can only come out smaller and the far plane's larger, and each
- * number written four times, once per child, so that the loop over the children reads
- * it like the boxes. A direction component of 0 gives 1/d = +-inf (IEEE division):
- * the slab is then all (t = -inf or NaN at both planes) or nothing (t = +inf at the
- * near one), and the tests below skip a NaN. (A component so small that 1/d overflows
- * a float counts as 0 in the float test, exact for every origin within 2^25 scene
- * sizes of the scene.) */
+ * the near plane's t can only come out smaller and the far plane's larger
+ * (float_bracket), and each number written four times, once per child, so that the
+ * loop over the children reads it like the boxes. A direction component of 0 gives
+ * 1/d = +-inf (IEEE division), and the slab is then all (t = -inf at both planes) or
+ * nothing (+inf at the near one). (A component so small that 1/d overflows a float
+ * counts as 0 in the float test: exact but for hits more than 2^28 scene sizes away.) */
 typedef struct {
     float origin[2][3][BVH_WIDTH]; /* frame origin, [0] for the near planes, [1] the far */
     float inverse[3][BVH_WIDTH];
@@ -434,16 +439,9 @@ static inline void box_ray_init(BoxRay *r, const Bvh *bvh, Ray ray)
     box_ray_axis(r, 2, ray.origin.z, ray.dir.z, bvh->centre.z, bvh->scale);
 }
 
-/* The float slab test's margin. With exact planes and origin, each computed t carries
- * three roundings (the subtraction, 1/d, the product: relative error 3u, u = 2^-24),
- * so a ray that meets the box has near <= far * (1 + 3u) / (1 - 3u), and the product
- * with the margin rounds once more: 1 + 7u is enough, 1 + 16u leaves room. */
-#define BVH_BOX_MARGIN (1.0f + 0x1p-20f)
-
 /* Narrow each child's interval [near, far] to the slab of one axis. A plain loop over
  * the four children, which the compiler turns into four-wide SSE instructions.
- * `a > b ? a : b` (not fmaxf) is what one SSE instruction computes, and it keeps b
- * when a is NaN. */
+ * `a > b ? a : b`, not fmaxf (which must handle NaN), is one SSE instruction. */
 static inline void clip_to_slab(const BvhNode *node, const BoxRay *r, int axis,
                                 float near[BVH_WIDTH], float far[BVH_WIDTH])
 {
@@ -471,7 +469,7 @@ static inline void children_entry(const BvhNode *node, const BoxRay *r, float li
     clip_to_slab(node, r, 1, near, far);
     clip_to_slab(node, r, 2, near, far);
     for (int k = 0; k < BVH_WIDTH; k++)
-        entry[k] = near[k] <= far[k] * BVH_BOX_MARGIN ? near[k] : INFINITY;
+        entry[k] = near[k] <= far[k] ? near[k] : INFINITY;
 }
 
 /* The same slab test in double for one leaf's (widened) box, with a relative margin
@@ -560,7 +558,7 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
     stack[depth++] = root;
     while (depth > 0) {
         StackEntry e = stack[--depth];
-        if (e.entry > limit * BVH_BOX_MARGIN)
+        if (e.entry > limit)
             continue;
         if (!e.is_leaf) {
             const BvhNode *node = &bvh->nodes[e.child];

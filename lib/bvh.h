@@ -34,9 +34,9 @@
  * Float boxes must not lose a hit that the exact box has. They live in the hierarchy's
  * own frame, X = (x - centre) * scale with scale a power of two that maps the scene
  * into [-1, 1]^3, so that floats suit a scene of any size. Their planes are rounded
- * outward, the ray's origin towards the side that widens each slab, and an overlap is
- * accepted with a relative margin that covers the float arithmetic's rounding (bvh.c).
- * So a float box may say "hit" to a ray that just misses. A float, though, resolves
+ * outward, and the ray's origin towards the side that widens each slab, by enough to
+ * cover the rounding of the slab test's own arithmetic too (bvh.c). So a float box may
+ * say "hit" to a ray that just misses, never the other way round. A float, though, resolves
  * only 1e-7 of the scene, and every bounce and shadow ray starts RAY_OFFSET (1e-10,
  * ray.h) off the surface it leaves; a shadow ray also ends that close to the light.
  * The float boxes of those surfaces cannot turn such rays away, so each leaf keeps its

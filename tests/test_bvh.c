@@ -150,10 +150,11 @@ static void test_room_bounce_and_shadow_rays(void **state)
     scene_free(&scene);
 }
 
-/* Rays arriving at a random point of a random triangle, a quarter of them on an edge,
- * within `angle_min` .. `angle_max` radians of its plane, from up to 10 units away,
- * and rays leaving it as grazingly. */
-static void grazing_rays(const Scene *scene, double angle_min, double angle_max, double tolerance)
+/* Rays arriving at a random point of a random triangle, half of them on an edge and
+ * some at a vertex, within `angle_min` .. `angle_max` radians of its plane, from up to
+ * `distance` away, and rays leaving it as grazingly. */
+static void grazing_rays(const Scene *scene, double angle_min, double angle_max, double distance,
+                         double tolerance)
 {
     for (int i = 0; i < 40000; i++) {
         Rng rng = rng_for_sample(44, 0, (uint64_t)i);
@@ -164,9 +165,11 @@ static void grazing_rays(const Scene *scene, double angle_min, double angle_max,
             v = 1.0 - v;
         }
         if (i % 4 == 2)
-            v = 0.0;
+            v = 0.0; /* on an edge */
         if (i % 4 == 3)
             v = 1.0 - u;
+        if (i % 12 == 3)
+            u = (double)(i / 12 % 2); /* at a vertex, a corner of the box */
         Vec3 point = triangle_point(tri, u, v);
         Vec3 t, b;
         vec3_basis(tri->normal, &t, &b);
@@ -174,7 +177,7 @@ static void grazing_rays(const Scene *scene, double angle_min, double angle_max,
         double angle = angle_min * pow(angle_max / angle_min, rng_uniform(&rng));
         Vec3 along = vec3_add(vec3_scale(t, cos(phi)), vec3_scale(b, sin(phi)));
         Vec3 dir = vec3_normalize(vec3_add_scaled(along, tri->normal, (i % 2 ? 1 : -1) * tan(angle)));
-        Ray arriving = {vec3_add_scaled(point, dir, -10.0 * rng_uniform(&rng)), dir};
+        Ray arriving = {vec3_add_scaled(point, dir, -distance * rng_uniform(&rng)), dir};
         check_ray_within(scene, arriving, INFINITY, tolerance, "grazing", i);
         Ray leaving = ray_spawn(point, tri->normal, vec3_dot(dir, tri->normal) < 0 ? vec3_neg(dir) : dir);
         check_ray_within(scene, leaving, INFINITY, tolerance, "grazing, leaving", i);
@@ -190,8 +193,37 @@ static void test_room_grazing_rays(void **state)
 {
     (void)state;
     Scene scene = load_room();
-    grazing_rays(&scene, 1.0 / 300, 0.1, 0.0);
-    grazing_rays(&scene, 1e-7, 1.0 / 300, 1e-15);
+    grazing_rays(&scene, 1.0 / 300, 0.1, 10.0, 0.0);
+    grazing_rays(&scene, 1e-7, 1.0 / 300, 10.0, 1e-15);
+    scene_free(&scene);
+}
+
+/* Triangles 0.01 in size seen from up to 1000 away, by rays through their vertices
+ * (the corners of their boxes) and rays grazing them: the double slab test's rounding
+ * grows with the distance, which the leaves' margin relative to t must cover (without
+ * it, 1 in 25 of the rays through a vertex misses a leaf it hits). */
+static void test_small_triangles_from_afar(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    Material grey = {"grey", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
+    int m = scene_add_material(&scene, grey);
+    Rng rng = rng_for_sample(9, 9, 9);
+    for (int i = 0; i < 200; i++) {
+        Vec3 corner = random_point(&rng, 1.0);
+        scene_add_triangle(&scene, triangle_make(corner, vec3_add_scaled(corner, random_unit_vector(&rng), 0.01),
+                                                 vec3_add_scaled(corner, random_unit_vector(&rng), 0.01), m));
+    }
+    assert_int_equal(scene_prepare(&scene), 0);
+    for (int i = 0; i < 20000; i++) {
+        const Triangle *tri = &scene.triangles[i % scene.triangle_count];
+        Vec3 vertex = i % 3 == 0 ? tri->v0 : vec3_add(tri->v0, i % 3 == 1 ? tri->e1 : tri->e2);
+        Vec3 dir = random_unit_vector(&rng);
+        Ray ray = {vec3_add_scaled(vertex, dir, -1000.0 * rng_uniform(&rng)), dir};
+        check_ray(&scene, ray, INFINITY, "through a vertex", i);
+    }
+    grazing_rays(&scene, 1.0 / 300, 0.1, 1000.0, 0.0);
     scene_free(&scene);
 }
 
@@ -452,6 +484,7 @@ int main(void)
         cmocka_unit_test(test_room_random_rays),
         cmocka_unit_test(test_room_bounce_and_shadow_rays),
         cmocka_unit_test(test_room_grazing_rays),
+        cmocka_unit_test(test_small_triangles_from_afar),
         cmocka_unit_test(test_room_rays_along_axes),
         cmocka_unit_test(test_random_soups_of_every_size),
         cmocka_unit_test(test_boxes_enclose_their_primitives),
