@@ -474,7 +474,9 @@ static inline void children_entry(const BvhNode *node, const BoxRay *r, float li
 
 /* The same slab test in double for one leaf's (widened) box, with a relative margin
  * that covers the three roundings of each t (2^-53 each) many times over, and the
- * triangle test's slack for rays from up to 1/300 of grazing (widen_leaf_box). */
+ * triangle test's slack for rays from up to 1/300 of grazing (widen_leaf_box). Where
+ * d = 0 and the origin lies on a plane, t = 0 * inf is NaN, which the comparisons
+ * skip: the slab counts as met. */
 #define BVH_LEAF_MARGIN (1.0 + 1e-12)
 
 static inline void clip_to_leaf_slab(const BvhLeaf *leaf, const BoxRay *r, int axis,

@@ -15,7 +15,8 @@
  *     to the child's surface area). Splitting goes on down to single primitives.
  *  2. Every node adopts grandchildren, the largest child's first, until it has four
  *     children: a ray then tests four boxes at once where it tested two.
- * The room's 38 primitives make 10 nodes and 40 leaves.
+ * The room's 40 primitives (38 triangles, 2 spheres) make 10 nodes and 25 leaves
+ * (a quad's two triangles share a box, and so a leaf).
  *
  * Degenerate input (issue 9 asked for 200,000 copies of one triangle to stay fast):
  * exact copies of a primitive answer every ray the same way, so only the first is
