@@ -67,7 +67,7 @@ static inline double triangle_intersect(const Triangle *tri, Ray ray, double tmi
      * triangles on u, and a branch that goes either way at random costs more than
      * finishing the arithmetic. */
     int inside = (u >= -slack) & (u <= 1.0 + slack) & (v >= -slack) & (u + v <= 1.0 + slack);
-    return inside & (t > tmin) & (t < tmax) ? t : INFINITY;
+    return (inside & (t > tmin) & (t < tmax)) ? t : INFINITY;
 }
 
 /* The point T(u, v) of eq. 16. */
