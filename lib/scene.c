@@ -1,5 +1,5 @@
 /* scene.c (chapter 1): the scene's arrays and the ray queries against them.
- * See scene.h. The queries go through the bounding volume hierarchy (bvh.h, chapter 7),
+ * See scene.h. The queries go through the bounding volume hierarchy (bvh.h),
  * which finds the same hit as testing every primitive, only sooner. */
 #include "scene.h"
 

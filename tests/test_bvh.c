@@ -1,13 +1,21 @@
-/* test_bvh.c (chapter 1): Tests of the bounding volume hierarchy (lib/bvh.c, chapter 7).
+/* test_bvh.c (chapter 1): Tests of the bounding volume hierarchy (lib/bvh.c).
  *
  * The hierarchy may change only how fast the nearest hit is found, never which hit:
- * for many random rays, in the report's room and in random triangle soups, the BVH's
- * nearest t must equal exactly what testing every primitive gives (the primitive too,
- * unless two primitives tie at that t: the room's tetrahedron stands with its base on
- * the floor, coplanar with it), and
- * its shadow query must agree with "is any primitive hit". Degenerate input (many
- * identical triangles, where the surface area heuristic cannot separate anything)
- * must build a tree of bounded depth and still answer correctly.
+ * for every ray, the BVH's nearest t must equal exactly what testing every primitive
+ * gives (the primitive too, unless two primitives tie at that t: the room's
+ * tetrahedron stands with its base on the floor, coplanar with it), and its shadow
+ * query must agree with "is any primitive hit". The rays: random ones through the
+ * room; the renderer's own (bounce rays spawned off surfaces and shadow rays to the
+ * lamp, which start and end RAY_OFFSET from a surface, far closer than a float box can
+ * resolve); rays grazing the room's surfaces; rays along the axes, starting on a box's
+ * planes; and random soups of triangles and spheres from 1e-30 to 1e30 in size, where
+ * the float boxes' frame must follow the scene.
+ *
+ * The float boxes must enclose what they bound (rounded outward), and degenerate input
+ * must stay cheap, counted in what a ray can test rather than timed: 20,000 copies of
+ * one triangle leave one primitive, 2,000 triangles with one common box centre one leaf,
+ * and a nest of 500 triangles, each twice the last (which the heuristic peels one at
+ * a time), a tree no deeper than BVH_MAX_DEPTH.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -17,6 +25,12 @@
 
 #include "check.h"
 #include "scene_file.h"
+
+static BvhPrimitives primitives_of(const Scene *scene)
+{
+    BvhPrimitives p = {scene->triangles, scene->triangle_count, scene->spheres, scene->sphere_count};
+    return p;
+}
 
 static double primitive_t(BvhPrimitives p, int i, Ray ray)
 {
@@ -38,54 +52,226 @@ static int brute_force(BvhPrimitives p, Ray ray, double *tmax)
     return nearest;
 }
 
-/* Rays from random points in the box [-extent, extent]^3 in random directions. */
-static void compare_with_brute_force(const Scene *scene, double extent, int rays)
+/* Both queries against the reference for one ray (nearest below tmax; shadow query up
+ * to tmax and to half the nearest hit), the nearest t equal to within `tolerance`
+ * relative (0: exactly). Returns whether the ray hits anything. */
+static int check_ray_within(const Scene *scene, Ray ray, double tmax, double tolerance,
+                            const char *what, int i)
 {
-    BvhPrimitives p = {scene->triangles, scene->triangle_count, scene->spheres, scene->sphere_count};
+    BvhPrimitives p = primitives_of(scene);
+    double t_bvh = tmax, t_all = tmax;
+    int bvh = bvh_intersect(&scene->bvh, p, ray, &t_bvh);
+    int all = brute_force(p, ray, &t_all);
+    if (!(t_bvh == t_all || fabs(t_bvh - t_all) <= tolerance * t_all))
+        fail_msg("%s ray %d from (%.17g %.17g %.17g) dir (%.17g %.17g %.17g): bvh %d t=%.17g, all %d t=%.17g",
+                 what, i, ray.origin.x, ray.origin.y, ray.origin.z, ray.dir.x, ray.dir.y, ray.dir.z, bvh,
+                 t_bvh, all, t_all);
+    /* Different primitives only where both are hit at this t (a tie). */
+    if (bvh != all)
+        assert_true(primitive_t(p, bvh, ray) == t_bvh && primitive_t(p, all, ray) == t_all);
+    double limits[2] = {tmax, 0.5 * t_all};
+    for (int k = 0; k < 2; k++) {
+        double limit = limits[k];
+        int occluded = bvh_occluded(&scene->bvh, p, ray, limits[k]);
+        if (occluded != (brute_force(p, ray, &limit) >= 0))
+            fail_msg("%s ray %d: shadow query up to %.17g says %d", what, i, limits[k], occluded);
+    }
+    return all >= 0;
+}
+
+static int check_ray(const Scene *scene, Ray ray, double tmax, const char *what, int i)
+{
+    return check_ray_within(scene, ray, tmax, 0.0, what, i);
+}
+
+static Vec3 random_point(Rng *rng, double extent)
+{
+    return vec3(extent * (2 * rng_uniform(rng) - 1), extent * (2 * rng_uniform(rng) - 1),
+                extent * (2 * rng_uniform(rng) - 1));
+}
+
+/* Rays from random points of [-extent, extent]^3 (about `centre`) in random directions. */
+static void random_rays(const Scene *scene, Vec3 centre, double extent, int rays)
+{
     int hits = 0;
     for (int i = 0; i < rays; i++) {
         Rng rng = rng_for_sample(42, 0, (uint64_t)i);
-        Vec3 origin = vec3(extent * (2 * rng_uniform(&rng) - 1), extent * (2 * rng_uniform(&rng) - 1),
-                           extent * (2 * rng_uniform(&rng) - 1));
-        Ray ray = {origin, random_unit_vector(&rng)};
-        double t_bvh = INFINITY, t_all = INFINITY;
-        int bvh = bvh_intersect(&scene->bvh, p, ray, &t_bvh);
-        int all = brute_force(p, ray, &t_all);
-        if (t_bvh != t_all)
-            fail_msg("ray %d from (%g %g %g) dir (%g %g %g): bvh %d t=%.17g, all %d t=%.17g", i,
-                     origin.x, origin.y, origin.z, ray.dir.x, ray.dir.y, ray.dir.z, bvh, t_bvh, all, t_all);
-        /* Different primitives only where both are hit at exactly this t (a tie). */
-        if (bvh != all)
-            assert_true(primitive_t(p, bvh, ray) == t_all && primitive_t(p, all, ray) == t_all);
-        hits += all >= 0;
-        double limit = 0.5 * t_all;
-        assert_int_equal(bvh_occluded(&scene->bvh, p, ray, limit), brute_force(p, ray, &limit) >= 0);
+        Ray ray = {vec3_add(centre, random_point(&rng, extent)), random_unit_vector(&rng)};
+        hits += check_ray(scene, ray, INFINITY, "random", i);
     }
-    print_message("    %d of %d rays hit something\n", hits, rays);
+    print_message("    %d of %d random rays hit something\n", hits, rays);
 }
 
-static void test_room_matches_brute_force(void **state)
+static Scene load_room(void)
 {
-    (void)state;
     Scene scene;
     char error[256];
     assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
-    compare_with_brute_force(&scene, 6.0, 200000);
+    return scene;
+}
+
+static void test_room_random_rays(void **state)
+{
+    (void)state;
+    Scene scene = load_room();
+    random_rays(&scene, vec3(5, 0, 0), 9.0, 100000);
     scene_free(&scene);
 }
 
-/* Random triangles and spheres of all sizes, overlapping. */
-static void test_random_soup_matches_brute_force(void **state)
+/* The renderer's rays: from a hit, a bounce ray spawned off the surface in a random
+ * direction of its side, and the shadow ray scene_occluded traces to a random lamp
+ * point (both ends RAY_OFFSET off their surfaces). */
+static void test_room_bounce_and_shadow_rays(void **state)
+{
+    (void)state;
+    Scene scene = load_room();
+    int shadowed = 0;
+    for (int i = 0; i < 30000; i++) {
+        Rng rng = rng_for_sample(43, 0, (uint64_t)i);
+        Ray ray = {vec3_add(vec3(5, 0, 0), random_point(&rng, 4.0)), random_unit_vector(&rng)};
+        for (int bounce = 0; bounce < 3; bounce++) {
+            Hit hit;
+            check_ray(&scene, ray, INFINITY, "bounce", i);
+            if (!scene_intersect(&scene, ray, INFINITY, &hit))
+                break;
+            Vec3 n = vec3_dot(hit.normal, ray.dir) > 0.0 ? vec3_neg(hit.normal) : hit.normal;
+            Vec3 lamp = triangle_point(&scene.triangles[scene.light_triangles[i % scene.light_count]],
+                                       0.5 * rng_uniform(&rng), 0.5 * rng_uniform(&rng));
+            Vec3 start = ray_offset_origin(hit.point, n, vec3_sub(lamp, hit.point), scene.scale);
+            Vec3 end = ray_offset_origin(lamp, vec3(0, 0, -1), vec3_sub(hit.point, lamp), scene.scale);
+            Vec3 span = vec3_sub(end, start);
+            Ray shadow = {start, vec3_normalize(span)};
+            shadowed += check_ray(&scene, shadow, vec3_length(span), "shadow", i);
+            Vec3 d = random_unit_vector(&rng);
+            ray = ray_spawn(hit.point, n, vec3_dot(d, n) < 0.0 ? vec3_neg(d) : d, scene.scale);
+        }
+    }
+    print_message("    %d shadow rays blocked\n", shadowed);
+    scene_free(&scene);
+}
+
+/* Rays arriving at a random point of a random triangle, half of them on an edge and
+ * some at a vertex, within `angle_min` .. `angle_max` radians of its plane, from up to
+ * `distance` away, and rays leaving it as grazingly. */
+static void grazing_rays(const Scene *scene, double angle_min, double angle_max, double distance,
+                         double tolerance)
+{
+    for (int i = 0; i < 40000; i++) {
+        Rng rng = rng_for_sample(44, 0, (uint64_t)i);
+        const Triangle *tri = &scene->triangles[(int)(rng_uniform(&rng) * scene->triangle_count)];
+        double u = rng_uniform(&rng), v = rng_uniform(&rng);
+        if (u + v > 1.0) {
+            u = 1.0 - u;
+            v = 1.0 - v;
+        }
+        if (i % 4 == 2)
+            v = 0.0; /* on an edge */
+        if (i % 4 == 3)
+            v = 1.0 - u;
+        if (i % 12 == 3)
+            u = (double)(i / 12 % 2); /* at a vertex, a corner of the box */
+        Vec3 point = triangle_point(tri, u, v);
+        Vec3 t, b;
+        vec3_basis(tri->normal, &t, &b);
+        double phi = 2 * PI * rng_uniform(&rng);
+        double angle = angle_min * pow(angle_max / angle_min, rng_uniform(&rng));
+        Vec3 along = vec3_add(vec3_scale(t, cos(phi)), vec3_scale(b, sin(phi)));
+        Vec3 dir = vec3_normalize(vec3_add_scaled(along, tri->normal, (i % 2 ? 1 : -1) * tan(angle)));
+        Ray arriving = {vec3_add_scaled(point, dir, -distance * rng_uniform(&rng)), dir};
+        check_ray_within(scene, arriving, INFINITY, tolerance, "grazing", i);
+        Ray leaving = ray_spawn(point, tri->normal, vec3_dot(dir, tri->normal) < 0 ? vec3_neg(dir) : dir,
+                                scene->scale);
+        check_ray_within(scene, leaving, INFINITY, tolerance, "grazing, leaving", i);
+    }
+}
+
+/* Exactly equal down to 1/300 radian of grazing. Closer to grazing, the triangle
+ * test's slack (triangle.h) reaches beyond the leaves' margins (bvh.c), and at a
+ * shared edge the neighbour may answer instead, at a t differing in the last bits;
+ * no hit is lost. (The hierarchy before this one, with double boxes and no margin for
+ * the slack, lost 1 in 7,000 of these rays at 0.2 to 6 degrees.) */
+static void test_room_grazing_rays(void **state)
+{
+    (void)state;
+    Scene scene = load_room();
+    grazing_rays(&scene, 1.0 / 300, 0.1, 10.0, 0.0);
+    grazing_rays(&scene, 1e-7, 1.0 / 300, 10.0, 1e-15);
+    scene_free(&scene);
+}
+
+/* Triangles 0.01 in size seen from up to 1000 away, by rays through their vertices
+ * (the corners of their boxes) and rays grazing them: the double slab test's rounding
+ * grows with the distance, which the leaves' margin relative to t must cover (without
+ * it, 1 in 25 of the rays through a vertex misses a leaf it hits). */
+static void test_small_triangles_from_afar(void **state)
 {
     (void)state;
     Scene scene;
     scene_init(&scene);
     Material grey = {"grey", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
     int m = scene_add_material(&scene, grey);
+    Rng rng = rng_for_sample(9, 9, 9);
+    for (int i = 0; i < 200; i++) {
+        Vec3 corner = random_point(&rng, 1.0);
+        scene_add_triangle(&scene, triangle_make(corner, vec3_add_scaled(corner, random_unit_vector(&rng), 0.01),
+                                                 vec3_add_scaled(corner, random_unit_vector(&rng), 0.01), m));
+    }
+    assert_int_equal(scene_prepare(&scene), 0);
+    for (int i = 0; i < 20000; i++) {
+        const Triangle *tri = &scene.triangles[i % scene.triangle_count];
+        Vec3 vertex = i % 3 == 0 ? tri->v0 : vec3_add(tri->v0, i % 3 == 1 ? tri->e1 : tri->e2);
+        Vec3 dir = random_unit_vector(&rng);
+        Ray ray = {vec3_add_scaled(vertex, dir, -1000.0 * rng_uniform(&rng)), dir};
+        check_ray(&scene, ray, INFINITY, "through a vertex", i);
+    }
+    grazing_rays(&scene, 1.0 / 300, 0.1, 1000.0, 0.0);
+    scene_free(&scene);
+}
+
+/* Directions with zero components (1/d infinite), from origins on the planes of the
+ * room's boxes (the planes x, y, z = a vertex coordinate), where a slab's t is 0 * inf. */
+static void test_room_rays_along_axes(void **state)
+{
+    (void)state;
+    Scene scene = load_room();
+    static const Vec3 dirs[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1},
+                                {0.6, 0.8, 0}, {0, -0.6, 0.8}, {-0.8, 0, -0.6}};
+    int n = 0;
+    for (int i = 0; i < scene.triangle_count; i++) {
+        const Triangle *tri = &scene.triangles[i];
+        Vec3 corner = vec3_add(tri->v0, tri->e1);
+        for (int j = 0; j < 30; j++) {
+            Rng rng = rng_for_sample(45, (uint64_t)i, (uint64_t)j);
+            Vec3 origin = vec3(5 + 8 * (2 * rng_uniform(&rng) - 1), 7 * (2 * rng_uniform(&rng) - 1),
+                               6 * (2 * rng_uniform(&rng) - 1));
+            if (j % 3 == 0)
+                origin.x = corner.x;
+            if (j % 3 == 1)
+                origin.y = corner.y;
+            if (j % 3 == 2)
+                origin.z = corner.z;
+            for (size_t k = 0; k < sizeof dirs / sizeof dirs[0]; k++) {
+                Ray ray = {origin, dirs[k]};
+                check_ray(&scene, ray, INFINITY, "along an axis", n++);
+            }
+        }
+    }
+    scene_free(&scene);
+}
+
+/* Random triangles and spheres of all sizes, overlapping, the whole scene `scale` in
+ * size: the float boxes' frame must follow the scene from 1e-30 to 1e30. */
+static void random_soup(double scale)
+{
+    Scene scene;
+    scene_init(&scene);
+    Material grey = {"grey", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
+    int m = scene_add_material(&scene, grey);
     Rng rng = rng_for_sample(7, 7, 7);
+    Vec3 centre = vec3(3 * scale, -2 * scale, scale);
     for (int i = 0; i < 300; i++) {
-        Vec3 corner = vec3(8 * rng_uniform(&rng) - 4, 8 * rng_uniform(&rng) - 4, 8 * rng_uniform(&rng) - 4);
-        double size = pow(10.0, 2 * rng_uniform(&rng) - 1.5);
+        Vec3 corner = vec3_add(centre, vec3_scale(random_point(&rng, 4.0), scale));
+        double size = scale * pow(10.0, 2 * rng_uniform(&rng) - 1.5);
         Vec3 a = vec3_add_scaled(corner, random_unit_vector(&rng), size);
         Vec3 b = vec3_add_scaled(corner, random_unit_vector(&rng), size);
         scene_add_triangle(&scene, triangle_make(corner, a, b, m));
@@ -93,29 +279,188 @@ static void test_random_soup_matches_brute_force(void **state)
             scene_add_sphere(&scene, (Sphere){corner, 0.5 * size, m});
     }
     assert_int_equal(scene_prepare(&scene), 0);
-    compare_with_brute_force(&scene, 5.0, 100000);
+    random_rays(&scene, centre, 5.0 * scale, 20000);
     scene_free(&scene);
 }
 
-/* 2000 copies of one triangle: no split helps, the builder falls back to median splits
- * below BVH_SAH_LEVELS and the traversal stack is enough. */
-static void test_identical_triangles(void **state)
+static void test_random_soups_of_every_size(void **state)
 {
     (void)state;
+    random_soup(1.0);
+    random_soup(1e-30);
+    random_soup(1e30);
+}
+
+/* The depth of the subtree under node `index` (a leaf's parent has depth 1). */
+static int depth_of(const Bvh *bvh, int index)
+{
+    int deepest = 0;
+    for (int k = 0; k < BVH_WIDTH; k++)
+        if (bvh->nodes[index].child[k] >= 0 && !bvh->nodes[index].is_leaf[k]) {
+            int d = depth_of(bvh, bvh->nodes[index].child[k]);
+            deepest = d > deepest ? d : deepest;
+        }
+    return 1 + deepest;
+}
+
+/* Whether a float plane lies on the outer side of x, in the hierarchy's frame. */
+static int encloses(const Bvh *bvh, const float bounds[2][3][BVH_WIDTH], int k, Vec3 lower, Vec3 upper)
+{
+    const double lo[3] = {lower.x, lower.y, lower.z}, hi[3] = {upper.x, upper.y, upper.z};
+    const double c[3] = {bvh->centre.x, bvh->centre.y, bvh->centre.z};
+    for (int axis = 0; axis < 3; axis++)
+        if (!(bounds[0][axis][k] <= (lo[axis] - c[axis]) * bvh->scale &&
+              bounds[1][axis][k] >= (hi[axis] - c[axis]) * bvh->scale))
+            return 0;
+    return 1;
+}
+
+/* Every primitive lies inside its leaf's double box and its leaf's float box; every
+ * node's children inside the node's own box in its parent. Returns the number of
+ * primitives found under the node. */
+static int check_enclosed(const Scene *scene, int index)
+{
+    const Bvh *bvh = &scene->bvh;
+    const BvhNode *node = &bvh->nodes[index];
+    int found = 0;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        if (node->child[k] < 0)
+            continue;
+        if (!node->is_leaf[k]) {
+            const BvhNode *child = &bvh->nodes[node->child[k]];
+            for (int j = 0; j < BVH_WIDTH; j++)
+                for (int axis = 0; axis < 3 && child->child[j] >= 0; axis++)
+                    assert_true(child->bounds[0][axis][j] >= node->bounds[0][axis][k] &&
+                                child->bounds[1][axis][j] <= node->bounds[1][axis][k]);
+            found += check_enclosed(scene, node->child[k]);
+            continue;
+        }
+        const BvhLeaf *leaf = &bvh->leaves[node->child[k]];
+        for (int i = leaf->first; i < leaf->first + leaf->count; i++, found++) {
+            int prim = bvh->primitives[i];
+            Vec3 lower, upper;
+            if (prim < scene->triangle_count) {
+                const Triangle *t = &scene->triangles[prim];
+                Vec3 a = t->v0, b = vec3_add(t->v0, t->e1), c = vec3_add(t->v0, t->e2);
+                lower = vec3(fmin(a.x, fmin(b.x, c.x)), fmin(a.y, fmin(b.y, c.y)), fmin(a.z, fmin(b.z, c.z)));
+                upper = vec3(fmax(a.x, fmax(b.x, c.x)), fmax(a.y, fmax(b.y, c.y)), fmax(a.z, fmax(b.z, c.z)));
+            } else {
+                const Sphere *s = &scene->spheres[prim - scene->triangle_count];
+                Vec3 r = vec3(s->radius, s->radius, s->radius);
+                lower = vec3_sub(s->center, r);
+                upper = vec3_add(s->center, r);
+            }
+            assert_true(encloses(bvh, node->bounds, k, lower, upper));
+            assert_true(leaf->bounds[0][0] < lower.x && leaf->bounds[0][1] < lower.y &&
+                        leaf->bounds[0][2] < lower.z && leaf->bounds[1][0] > upper.x &&
+                        leaf->bounds[1][1] > upper.y && leaf->bounds[1][2] > upper.z);
+        }
+    }
+    return found;
+}
+
+/* The room's and a soup's float boxes enclose what they bound, rounded outward (a box
+ * rounded to nearest instead encloses its primitive only about half the time), and
+ * every primitive is in exactly one leaf. */
+static void test_boxes_enclose_their_primitives(void **state)
+{
+    (void)state;
+    Scene room = load_room();
+    assert_int_equal(check_enclosed(&room, 0), room.triangle_count + room.sphere_count);
+    assert_int_equal(room.bvh.primitive_count, room.triangle_count + room.sphere_count);
+    scene_free(&room);
+    Scene soup;
+    scene_init(&soup);
+    Material grey = {"grey", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
+    int m = scene_add_material(&soup, grey);
+    Rng rng = rng_for_sample(8, 8, 8);
+    for (int i = 0; i < 2000; i++) {
+        Vec3 corner = random_point(&rng, 1e3);
+        scene_add_triangle(&soup, triangle_make(corner, vec3_add(corner, random_point(&rng, 1.0)),
+                                                vec3_add(corner, random_point(&rng, 1.0)), m));
+    }
+    assert_int_equal(scene_prepare(&soup), 0);
+    assert_int_equal(check_enclosed(&soup, 0), 2000);
+    scene_free(&soup);
+}
+
+static Scene scene_of_triangles(int count, Triangle (*make)(int i, int material))
+{
     Scene scene;
     scene_init(&scene);
     Material grey = {"grey", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
     int m = scene_add_material(&scene, grey);
-    for (int i = 0; i < 2000; i++)
-        scene_add_triangle(&scene, triangle_make(vec3(-1, -1, 0), vec3(1, -1, 0), vec3(0, 1, 0), m));
+    for (int i = 0; i < count; i++)
+        assert_true(scene_add_triangle(&scene, make(i, m)) >= 0);
     assert_int_equal(scene_prepare(&scene), 0);
-    assert_true(scene.bvh.node_count < 2 * 2000);
-    compare_with_brute_force(&scene, 2.0, 20000);
+    return scene;
+}
+
+static Triangle same_triangle(int i, int material)
+{
+    (void)i;
+    return triangle_make(vec3(-1, -1, 0), vec3(1, -1, 0), vec3(0, 1, 0), material);
+}
+
+/* A scene of `count` triangles that builds into one node holding one leaf of `kept`
+ * primitives, and answers as testing all of them does. */
+static void check_one_leaf(int count, Triangle (*make)(int i, int material), int kept)
+{
+    Scene scene = scene_of_triangles(count, make);
+    assert_int_equal(scene.bvh.primitive_count, kept);
+    assert_int_equal(scene.bvh.node_count, 1);
+    assert_int_equal(scene.bvh.leaf_count, 1);
+    random_rays(&scene, vec3(0, 0, 0), 2.0, 2000);
     scene_free(&scene);
 }
 
-/* An empty scene has an empty tree, and every ray misses. */
-static void test_empty_scene(void **state)
+/* 20,000 copies of one triangle (issue 9's 200,000 took 62.6 s at 0.01 Mrays/s): one
+ * primitive is kept, so a ray tests at most one triangle, and that answers as testing
+ * all of them does (the first copy). */
+static void test_copies_leave_one_primitive(void **state)
+{
+    (void)state;
+    check_one_leaf(20000, same_triangle, 1);
+}
+
+/* Triangles of different shapes whose boxes share one centre: no split by box centre
+ * separates them, so they are one leaf, built without splitting at all. */
+static Triangle centred_triangle(int i, int material)
+{
+    double w = 1.0 + 0.001 * i, h = 2.0 - 0.0005 * i;
+    return triangle_make(vec3(-w, -h, 0), vec3(w, -h, 0.001 * i), vec3(0, h, -0.001 * i), material);
+}
+
+static void test_common_centre_is_one_leaf(void **state)
+{
+    (void)state;
+    check_one_leaf(2000, centred_triangle, 2000);
+}
+
+/* Triangles sharing a corner, each twice the size of the last: the heuristic peels off
+ * the largest, one at a time (its area outweighs all the others'), and the median
+ * splits below BVH_SAH_LEVELS keep the tree within BVH_MAX_DEPTH (the traversal
+ * stack's bound). */
+static Triangle nested_triangle(int i, int material)
+{
+    double s = ldexp(1.0, i);
+    return triangle_make(vec3(0, 0, 0), vec3(s, 0, 0.001 * i), vec3(0, s, 0), material);
+}
+
+static void test_nest_has_bounded_depth(void **state)
+{
+    (void)state;
+    Scene scene = scene_of_triangles(500, nested_triangle);
+    int depth = depth_of(&scene.bvh, 0);
+    print_message("    depth %d of at most %d\n", depth, BVH_MAX_DEPTH);
+    assert_true(depth > BVH_SAH_LEVELS && depth <= BVH_MAX_DEPTH);
+    random_rays(&scene, vec3(10, 10, 1), 12.0, 5000);
+    scene_free(&scene);
+}
+
+/* An empty scene has an empty tree, and every ray misses; one primitive makes one
+ * node with one leaf. */
+static void test_empty_and_single(void **state)
 {
     (void)state;
     Scene scene;
@@ -125,15 +470,29 @@ static void test_empty_scene(void **state)
     Ray ray = {vec3(0, 0, 0), vec3(0, 0, 1)};
     assert_int_equal(scene_intersect(&scene, ray, INFINITY, &hit), 0);
     scene_free(&scene);
+    Scene one = scene_of_triangles(1, same_triangle);
+    assert_int_equal(one.bvh.node_count, 1);
+    assert_int_equal(one.bvh.leaf_count, 1);
+    Ray down = {vec3(0, 0, 2), vec3(0, 0, -1)};
+    assert_int_equal(scene_intersect(&one, down, INFINITY, &hit), 1);
+    assert_close(hit.t, 2, 0);
+    scene_free(&one);
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_room_matches_brute_force),
-        cmocka_unit_test(test_random_soup_matches_brute_force),
-        cmocka_unit_test(test_identical_triangles),
-        cmocka_unit_test(test_empty_scene),
+        cmocka_unit_test(test_room_random_rays),
+        cmocka_unit_test(test_room_bounce_and_shadow_rays),
+        cmocka_unit_test(test_room_grazing_rays),
+        cmocka_unit_test(test_small_triangles_from_afar),
+        cmocka_unit_test(test_room_rays_along_axes),
+        cmocka_unit_test(test_random_soups_of_every_size),
+        cmocka_unit_test(test_boxes_enclose_their_primitives),
+        cmocka_unit_test(test_copies_leave_one_primitive),
+        cmocka_unit_test(test_common_centre_is_one_leaf),
+        cmocka_unit_test(test_nest_has_bounded_depth),
+        cmocka_unit_test(test_empty_and_single),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
