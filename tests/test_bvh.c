@@ -8,8 +8,8 @@
  * room; the renderer's own (bounce rays spawned off surfaces and shadow rays to the
  * lamp, which start and end RAY_OFFSET from a surface, far closer than a float box can
  * resolve); rays grazing the room's surfaces; rays along the axes, starting on a box's
- * planes; and random soups of triangles and spheres from 1e-30 to 1e30 in size, where
- * the float boxes' frame must follow the scene.
+ * planes; and random soups of triangles and spheres from 1e-45 to 1e45 in size, beyond the
+ * range of floats, where the float boxes' frame must follow the scene.
  *
  * The float boxes must enclose what they bound (rounded outward), and degenerate input
  * must stay cheap, counted in what a ray can test rather than timed: 20,000 copies of
@@ -273,7 +273,8 @@ static void test_room_rays_along_axes(void **state)
 }
 
 /* Random triangles and spheres of all sizes, overlapping, the whole scene `scale` in
- * size: the float boxes' frame must follow the scene from 1e-30 to 1e30. */
+ * size: the float boxes' frame must follow the scene from 1e-45 to 1e45, beyond the
+ * range of floats (1e-38 to 3e38). */
 static void random_soup(double scale)
 {
     int m;
@@ -296,8 +297,8 @@ static void test_random_soups_of_every_size(void **state)
 {
     (void)state;
     random_soup(1.0);
-    random_soup(1e-30);
-    random_soup(1e30);
+    random_soup(1e-45);
+    random_soup(1e45);
 }
 
 /* The depth of the subtree under node `index` (a leaf's parent has depth 1). */
