@@ -7,15 +7,17 @@
  * query must agree with "is any primitive hit". The rays: random ones through the
  * room; the renderer's own (bounce rays spawned off surfaces and shadow rays to the
  * lamp, which start and end RAY_OFFSET from a surface, far closer than a float box can
- * resolve); rays grazing the room's surfaces; rays along the axes, starting on a box's
- * planes; and random soups of triangles and spheres from 1e-45 to 1e45 in size, beyond the
- * range of floats, where the float boxes' frame must follow the scene.
+ * resolve); rays grazing the room's surfaces, at their edges and vertices too; rays
+ * through the vertices of small triangles from far away; rays along the axes,
+ * starting on a box's planes; and random soups of triangles and spheres from 1e-45 to
+ * 1e45 in size, beyond the range of floats, where the float boxes' frame must follow
+ * the scene.
  *
  * The float boxes must enclose what they bound (rounded outward), and degenerate input
  * must stay cheap, counted in what a ray can test rather than timed: 20,000 copies of
- * one triangle leave one primitive, 2,000 triangles with one common box centre one leaf,
- * and a nest of 500 triangles, each twice the last (which the heuristic peels one at
- * a time), a tree no deeper than BVH_MAX_DEPTH.
+ * one triangle leave one primitive, 2,000 triangles with one common box centre one
+ * leaf, and a nest of 500 triangles, each twice the last (which the heuristic peels
+ * one at a time), a tree no deeper than BVH_MAX_DEPTH.
  */
 #include <stdarg.h>
 #include <stddef.h>
