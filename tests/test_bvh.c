@@ -7,15 +7,17 @@
  * query must agree with "is any primitive hit". The rays: random ones through the
  * room; the renderer's own (bounce rays spawned off surfaces and shadow rays to the
  * lamp, which start and end RAY_OFFSET from a surface, far closer than a float box can
- * resolve); rays grazing the room's surfaces; rays along the axes, starting on a box's
- * planes; and random soups of triangles and spheres from 1e-30 to 1e30 in size, where
- * the float boxes' frame must follow the scene.
+ * resolve); rays grazing the room's surfaces, at their edges and vertices too; rays
+ * through the vertices of small triangles from far away; rays along the axes,
+ * starting on a box's planes; and random soups of triangles and spheres from 1e-45 to
+ * 1e45 in size, beyond the range of floats, where the float boxes' frame must follow
+ * the scene.
  *
  * The float boxes must enclose what they bound (rounded outward), and degenerate input
  * must stay cheap, counted in what a ray can test rather than timed: 20,000 copies of
- * one triangle leave one primitive, 2,000 triangles with one common box centre one leaf,
- * and a nest of 500 triangles, each twice the last (which the heuristic peels one at
- * a time), a tree no deeper than BVH_MAX_DEPTH.
+ * one triangle leave one primitive, 2,000 triangles with one common box centre one
+ * leaf, and a nest of 500 triangles, each twice the last (which the heuristic peels
+ * one at a time), a tree no deeper than BVH_MAX_DEPTH.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -88,6 +90,25 @@ static Vec3 random_point(Rng *rng, double extent)
 {
     return vec3(extent * (2 * rng_uniform(rng) - 1), extent * (2 * rng_uniform(rng) - 1),
                 extent * (2 * rng_uniform(rng) - 1));
+}
+
+/* An empty scene with one grey material, whose number goes to *material. */
+static Scene grey_scene(int *material)
+{
+    Scene scene;
+    scene_init(&scene);
+    Material grey = {"grey", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
+    *material = scene_add_material(&scene, grey);
+    return scene;
+}
+
+/* A triangle with a corner at `corner` and the other two `size` away from it in random
+ * directions. */
+static void add_random_triangle(Scene *scene, Rng *rng, Vec3 corner, double size, int material)
+{
+    Vec3 a = vec3_add_scaled(corner, random_unit_vector(rng), size);
+    Vec3 b = vec3_add_scaled(corner, random_unit_vector(rng), size);
+    assert_true(scene_add_triangle(scene, triangle_make(corner, a, b, material)) >= 0);
 }
 
 /* Rays from random points of [-extent, extent]^3 (about `centre`) in random directions. */
@@ -206,16 +227,11 @@ static void test_room_grazing_rays(void **state)
 static void test_small_triangles_from_afar(void **state)
 {
     (void)state;
-    Scene scene;
-    scene_init(&scene);
-    Material grey = {"grey", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
-    int m = scene_add_material(&scene, grey);
+    int m;
+    Scene scene = grey_scene(&m);
     Rng rng = rng_for_sample(9, 9, 9);
-    for (int i = 0; i < 200; i++) {
-        Vec3 corner = random_point(&rng, 1.0);
-        scene_add_triangle(&scene, triangle_make(corner, vec3_add_scaled(corner, random_unit_vector(&rng), 0.01),
-                                                 vec3_add_scaled(corner, random_unit_vector(&rng), 0.01), m));
-    }
+    for (int i = 0; i < 200; i++)
+        add_random_triangle(&scene, &rng, random_point(&rng, 1.0), 0.01, m);
     assert_int_equal(scene_prepare(&scene), 0);
     for (int i = 0; i < 20000; i++) {
         const Triangle *tri = &scene.triangles[i % scene.triangle_count];
@@ -260,21 +276,18 @@ static void test_room_rays_along_axes(void **state)
 }
 
 /* Random triangles and spheres of all sizes, overlapping, the whole scene `scale` in
- * size: the float boxes' frame must follow the scene from 1e-30 to 1e30. */
+ * size: the float boxes' frame must follow the scene from 1e-45 to 1e45, beyond the
+ * range of floats (1e-38 to 3e38). */
 static void random_soup(double scale)
 {
-    Scene scene;
-    scene_init(&scene);
-    Material grey = {"grey", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
-    int m = scene_add_material(&scene, grey);
+    int m;
+    Scene scene = grey_scene(&m);
     Rng rng = rng_for_sample(7, 7, 7);
     Vec3 centre = vec3(3 * scale, -2 * scale, scale);
     for (int i = 0; i < 300; i++) {
         Vec3 corner = vec3_add(centre, vec3_scale(random_point(&rng, 4.0), scale));
         double size = scale * pow(10.0, 2 * rng_uniform(&rng) - 1.5);
-        Vec3 a = vec3_add_scaled(corner, random_unit_vector(&rng), size);
-        Vec3 b = vec3_add_scaled(corner, random_unit_vector(&rng), size);
-        scene_add_triangle(&scene, triangle_make(corner, a, b, m));
+        add_random_triangle(&scene, &rng, corner, size, m);
         if (i % 10 == 0)
             scene_add_sphere(&scene, (Sphere){corner, 0.5 * size, m});
     }
@@ -287,8 +300,8 @@ static void test_random_soups_of_every_size(void **state)
 {
     (void)state;
     random_soup(1.0);
-    random_soup(1e-30);
-    random_soup(1e30);
+    random_soup(1e-45);
+    random_soup(1e45);
 }
 
 /* The depth of the subtree under node `index` (a leaf's parent has depth 1). */
@@ -369,16 +382,11 @@ static void test_boxes_enclose_their_primitives(void **state)
     assert_int_equal(check_enclosed(&room, 0), room.triangle_count + room.sphere_count);
     assert_int_equal(room.bvh.primitive_count, room.triangle_count + room.sphere_count);
     scene_free(&room);
-    Scene soup;
-    scene_init(&soup);
-    Material grey = {"grey", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
-    int m = scene_add_material(&soup, grey);
+    int m;
+    Scene soup = grey_scene(&m);
     Rng rng = rng_for_sample(8, 8, 8);
-    for (int i = 0; i < 2000; i++) {
-        Vec3 corner = random_point(&rng, 1e3);
-        scene_add_triangle(&soup, triangle_make(corner, vec3_add(corner, random_point(&rng, 1.0)),
-                                                vec3_add(corner, random_point(&rng, 1.0)), m));
-    }
+    for (int i = 0; i < 2000; i++)
+        add_random_triangle(&soup, &rng, random_point(&rng, 1e3), 1.0, m);
     assert_int_equal(scene_prepare(&soup), 0);
     assert_int_equal(check_enclosed(&soup, 0), 2000);
     scene_free(&soup);
@@ -386,10 +394,8 @@ static void test_boxes_enclose_their_primitives(void **state)
 
 static Scene scene_of_triangles(int count, Triangle (*make)(int i, int material))
 {
-    Scene scene;
-    scene_init(&scene);
-    Material grey = {"grey", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
-    int m = scene_add_material(&scene, grey);
+    int m;
+    Scene scene = grey_scene(&m);
     for (int i = 0; i < count; i++)
         assert_true(scene_add_triangle(&scene, make(i, m)) >= 0);
     assert_int_equal(scene_prepare(&scene), 0);
