@@ -65,10 +65,14 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
             add_emission = 1;
 #endif
 #if CHAPTER >= 6
-            if (s->rr_survival > 0.0 && s->rr_survival < 1.0) {
-                if (!roulette_survives(s->rr_survival, rng))
+            double survival = s->rr_survival;
+            if (s->rr_throughput > 0)
+                survival = segment >= s->rr_throughput ? roulette_survival_from_throughput(throughput)
+                                                       : 1.0;
+            if (survival > 0.0 && survival < 1.0) {
+                if (!roulette_survives(survival, rng))
                     break;
-                throughput = vec3_scale(throughput, 1.0 / s->rr_survival);
+                throughput = vec3_scale(throughput, 1.0 / survival);
             }
 #endif
             double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
@@ -98,8 +102,11 @@ void path_describe(const PathSettings *s, char *text, int size)
                      s->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
 #endif
 #if CHAPTER >= 6
-    used += snprintf(text + used, (size_t)(size - used), " rr=%g",
-                     s->rr_survival > 0.0 ? s->rr_survival : 1.0);
+    if (s->rr_throughput > 0)
+        used += snprintf(text + used, (size_t)(size - used), " rr=throughput@%d", s->rr_throughput);
+    else
+        used += snprintf(text + used, (size_t)(size - used), " rr=%g",
+                         s->rr_survival > 0.0 ? s->rr_survival : 1.0);
 #endif
     (void)used;
 }

@@ -8,6 +8,9 @@
  *                the shadow rays); emission seen from the camera or after a mirror or
  *                glass bounce is added, since no shadow ray accounts for it.
  *   rr_survival  Russian roulette's alpha (chapter 6; roulette.h); 0 or 1: no roulette.
+ *   rr_throughput  roulette with bounded weights instead (chapter 6; roulette.h): at a
+ *                diffuse hit on segment k or later, the path survives with probability
+ *                min(1, max component of its throughput). 0: off (rr_survival applies).
  *   max_depth    a path has at most this many segments, the camera ray being the first.
  *                The same count bounds both ways of finding light (a shadow ray is the
  *                segment after its hit), so every M estimates the same quantity.
@@ -47,6 +50,7 @@ typedef struct {
 #endif
 #if CHAPTER >= 6
     double rr_survival; /* 0 (not set) or 1: no roulette */
+    int rr_throughput;  /* k >= 1: bounded-weight roulette from segment k on; 0: alpha */
 #endif
 } PathSettings;
 

@@ -1,5 +1,5 @@
 /* test_path.c (chapter 2): Tests of the path tracer (lib/path.c, chapters 2, 3 and 6): the estimators are
- * unbiased, checked against closed forms.
+ * unbiased, checked against closed forms and against each other on the room.
  *
  * White furnace (SPEC §7; the boxes are in furnace.h): in a closed box whose every
  * surface is Lambertian with reflectance rho and emits Le, the radiance everywhere is
@@ -129,6 +129,29 @@ static void test_furnace_chapter6_roulette(void **state)
 }
 #endif
 
+#if CHAPTER >= 6
+/* Roulette with bounded weights (roulette.h) from the first segment and from the third,
+ * with and without shadow rays, in the bordered box. */
+static void test_furnace_chapter6_bounded_roulette(void **state)
+{
+    (void)state;
+    PathSettings hitting = {.max_depth = 200, .rr_throughput = 1};
+    bordered_furnace(&hitting);
+    PathSettings shadow = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3};
+    bordered_furnace(&shadow);
+}
+
+/* A bright uniform box, rho = 0.9, no shadow rays: the survival probability is then 0.9
+ * at every bounce after the first (the throughput is 1 after each survival), paths are
+ * long (mean 10 segments), and the mean must match (1 - 0.9^200) / 0.1. */
+static void test_bounded_roulette_on_a_bright_furnace(void **state)
+{
+    (void)state;
+    PathSettings bounded = {.max_depth = 200, .rr_throughput = 1};
+    uniform_furnace(&bounded, 0.9, (1.0 - pow(0.9, 200)) / 0.1);
+}
+#endif
+
 /* Reflectance 0 and 1 (SPEC §7): rho = 0 sees only the emission (with shadow rays too:
  * they meet rho = 0); rho = 1 with depth D sees exactly D times it (every term of the
  * series is Le). Both have zero variance. */
@@ -201,18 +224,20 @@ static void block_means(const RenderResult *r, int bx, int by, int c, double *me
     *se = sqrt(variance) / (BLOCK * BLOCK);
 }
 
-static void test_shadow_rays_agree_with_hitting_on_the_room(void **state)
+/* Estimators a (spp_a samples) and b (spp_b) agree on the room at SIDE x SIDE pixels:
+ * the block chi-square above at significance level 0.1%, and the image means within 4
+ * standard errors. */
+static void assert_agree_on_the_room(const PathSettings *a_settings, int spp_a,
+                                     const PathSettings *b_settings, int spp_b)
 {
-    (void)state;
     Scene scene;
     char error[256];
     assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
-    PathSettings hitting = {.max_depth = 6}, shadow = {.max_depth = 6, .shadow_rays = 1};
-    RenderSettings many = {SIDE, SIDE, 2000, PIXEL_RANDOM, 0, 1, 0, "test"};
-    RenderSettings fewer = {SIDE, SIDE, 400, PIXEL_RANDOM, 0, 2, 0, "test"};
+    RenderSettings first = {SIDE, SIDE, spp_a, PIXEL_RANDOM, 0, 1, 0, "test"};
+    RenderSettings second = {SIDE, SIDE, spp_b, PIXEL_RANDOM, 0, 2, 0, "test"};
     RenderResult a, b;
-    assert_int_equal(render(&scene, &many, path_radiance, &hitting, &a), 0);
-    assert_int_equal(render(&scene, &fewer, path_radiance, &shadow, &b), 0);
+    assert_int_equal(render(&scene, &first, path_radiance, a_settings, &a), 0);
+    assert_int_equal(render(&scene, &second, path_radiance, b_settings, &b), 0);
     double sum_z2 = 0.0, largest = 0.0;
     int n = 0;
     for (int by = 0; by < SIDE / BLOCK; by++)
@@ -230,8 +255,11 @@ static void test_shadow_rays_agree_with_hitting_on_the_room(void **state)
     double mean_a, error_a, mean_b, error_b;
     measure_image_mean(&a.image, &a.std_error, &mean_a, &error_a);
     measure_image_mean(&b.image, &b.std_error, &mean_b, &error_b);
-    print_message("    image means: hitting %.5f +- %.5f, shadow rays %.5f +- %.5f\n", mean_a,
-                  error_a, mean_b, error_b);
+    char text_a[96], text_b[96];
+    path_describe(a_settings, text_a, sizeof text_a);
+    path_describe(b_settings, text_b, sizeof text_b);
+    print_message("    image means: %s %.5f +- %.5f, %s %.5f +- %.5f\n", text_a, mean_a,
+                  error_a, text_b, mean_b, error_b);
     print_message("    sum of z^2 = %.1f over %d block channels (p = %.3f), largest |z| %.2f\n",
                   sum_z2, n, p, largest);
     assert_true(p > 0.001);
@@ -240,6 +268,25 @@ static void test_shadow_rays_agree_with_hitting_on_the_room(void **state)
     render_result_free(&b);
     scene_free(&scene);
 }
+
+static void test_shadow_rays_agree_with_hitting_on_the_room(void **state)
+{
+    (void)state;
+    PathSettings hitting = {.max_depth = 6}, shadow = {.max_depth = 6, .shadow_rays = 1};
+    assert_agree_on_the_room(&hitting, 2000, &shadow, 400);
+}
+
+#if CHAPTER >= 6
+/* On the room: bounded roulette (from segment 2) agrees with no roulette at the same
+ * depth limit, shadow rays in both. */
+static void test_bounded_roulette_agrees_on_the_room(void **state)
+{
+    (void)state;
+    PathSettings plain = {.max_depth = 8, .shadow_rays = 1};
+    PathSettings bounded = {.max_depth = 8, .shadow_rays = 1, .rr_throughput = 2};
+    assert_agree_on_the_room(&plain, 400, &bounded, 400);
+}
+#endif
 #endif
 
 int main(void)
@@ -253,6 +300,9 @@ int main(void)
 #if CHAPTER >= 6
         cmocka_unit_test(test_furnace_chapter6_roulette),
         cmocka_unit_test(test_roulette_unbiased),
+        cmocka_unit_test(test_furnace_chapter6_bounded_roulette),
+        cmocka_unit_test(test_bounded_roulette_on_a_bright_furnace),
+        cmocka_unit_test(test_bounded_roulette_agrees_on_the_room),
 #endif
         cmocka_unit_test(test_furnace_reflectance_extremes),
     };
