@@ -15,6 +15,15 @@
  *                The same count bounds both ways of finding light (a shadow ray is the
  *                segment after its hit), so every M estimates the same quantity.
  *   fresnel      glass reflectance: Schlick (chapter 1) or exact Fresnel (chapter 4).
+ *   mis          multiple importance sampling of the lamps (chapter 7; mis.h), with
+ *                M >= 1: each shadow ray's light is weighted by the power heuristic, and
+ *                emission that a path hits right after a diffuse bounce is added too,
+ *                weighted by the complementary share, instead of dropped.
+ *   mirror_light the lamps seen in planar mirrors (chapter 7; mirror_light.h), with
+ *                M >= 1: at every diffuse hit, M shadow rays more per mirror plane go to
+ *                the lamps' mirror images, and a path that goes from a diffuse hit
+ *                straight to a planar mirror and then hits a lamp does not add that
+ *                emission again (with mis: adds its weighted share).
  *
  * One sample of eq. 1 along a path x_1, x_2, ...: the throughput T (product of
  * f cos / pdf over the bounces so far, divided by alpha at each roulette survival)
@@ -51,6 +60,10 @@ typedef struct {
 #if CHAPTER >= 6
     double rr_survival; /* 0 (not set) or 1: no roulette */
     int rr_throughput;  /* k >= 1: bounded-weight roulette from segment k on; 0: alpha */
+#endif
+#if CHAPTER >= 7
+    int mis;          /* 1: light and BRDF sampling combined by the power heuristic */
+    int mirror_light; /* 1: shadow rays also to the lamps' images in planar mirrors */
 #endif
 } PathSettings;
 

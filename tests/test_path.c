@@ -1,4 +1,4 @@
-/* test_path.c (chapter 2): Tests of the path tracer (lib/path.c, chapters 2, 3 and 6): the estimators are
+/* test_path.c (chapter 2): Tests of the path tracer (lib/path.c, chapters 2, 3, 6 and 7): the estimators are
  * unbiased, checked against closed forms and against each other on the room.
  *
  * White furnace (SPEC §7; the boxes are in furnace.h): in a closed box whose every
@@ -23,6 +23,10 @@
  *     alpha > rho^2. The roulette tests choose rho and alpha on that side; below it, the
  *     measured standard error itself cannot be trusted (the room's alpha = 0.01 of
  *     Figure 12 is far below it, which is why that image is so noisy).
+ * Chapter 7's estimators (mis, mirror_light) each get a furnace (the mirrored box of
+ * furnace.h for the mirror's images) and a room agreement test. In the room, mis moves
+ * little light (the lamp is seen from afar, where light sampling's density dwarfs the
+ * BRDF's), so its furnace, whose lights are close, is the test with power for it.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -81,16 +85,21 @@ static void uniform_furnace(const PathSettings *settings, double rho, double exp
 }
 
 #if CHAPTER >= 3
-/* The bordered box of furnace.h: radiance 2 everywhere (for an unlimited depth). */
-static void bordered_furnace(const PathSettings *settings)
+/* A box of furnace.h whose radiance is 2 everywhere (for an unlimited depth). */
+static void radiance_two_furnace(void (*make_box)(Scene *), const PathSettings *settings)
 {
     Scene scene;
-    furnace_box_bordered(&scene);
+    make_box(&scene);
     assert_int_equal(scene_prepare(&scene), 0);
     double mean, std_error;
     estimate(&scene, settings, vec3(0.1, -0.2, 0.3), 7, &mean, &std_error);
     assert_close(mean, std_error, FURNACE_BORDERED_RADIANCE, 0.01);
     scene_free(&scene);
+}
+
+static void bordered_furnace(const PathSettings *settings)
+{
+    radiance_two_furnace(furnace_box_bordered, settings);
 }
 #endif
 
@@ -149,6 +158,37 @@ static void test_bounded_roulette_on_a_bright_furnace(void **state)
     (void)state;
     PathSettings bounded = {.max_depth = 200, .rr_throughput = 1};
     uniform_furnace(&bounded, 0.9, (1.0 - pow(0.9, 200)) / 0.1);
+}
+#endif
+
+#if CHAPTER >= 7
+/* Multiple importance sampling (mis.h), one and four shadow rays: the power heuristic's
+ * weights of the two ways of finding each light sum to 1, so the mean stays 2. */
+static void test_furnace_chapter7_mis(void **state)
+{
+    (void)state;
+    PathSettings one = {.max_depth = 40, .shadow_rays = 1, .mis = 1};
+    bordered_furnace(&one);
+    PathSettings four = {.max_depth = 40, .shadow_rays = 4, .mis = 1, .rr_throughput = 3};
+    bordered_furnace(&four);
+}
+
+/* The lights seen in a mirror wall (mirror_light.h), in the box with one mirror wall:
+ * without shadow rays (the reference: light found only by hitting it), with shadow rays
+ * alone, with the mirror's images, and with both and mis. Each must give 2. Bounded
+ * roulette keeps the long paths that the mirror allows cheap (depth 200). */
+static void test_furnace_chapter7_mirror_light(void **state)
+{
+    (void)state;
+    PathSettings hitting = {.max_depth = 200, .rr_throughput = 3};
+    radiance_two_furnace(furnace_box_mirrored, &hitting);
+    PathSettings shadow = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3};
+    radiance_two_furnace(furnace_box_mirrored, &shadow);
+    PathSettings mirror = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3, .mirror_light = 1};
+    radiance_two_furnace(furnace_box_mirrored, &mirror);
+    PathSettings both = {.max_depth = 200, .shadow_rays = 2, .rr_throughput = 3, .mis = 1,
+                         .mirror_light = 1};
+    radiance_two_furnace(furnace_box_mirrored, &both);
 }
 #endif
 
@@ -224,20 +264,17 @@ static void block_means(const RenderResult *r, int bx, int by, int c, double *me
     *se = sqrt(variance) / (BLOCK * BLOCK);
 }
 
-/* Estimators a (spp_a samples) and b (spp_b) agree on the room at SIDE x SIDE pixels:
+/* Estimators a (spp_a samples) and b (spp_b) agree on a scene at SIDE x SIDE pixels:
  * the block chi-square above at significance level 0.1%, and the image means within 4
  * standard errors. */
-static void assert_agree_on_the_room(const PathSettings *a_settings, int spp_a,
-                                     const PathSettings *b_settings, int spp_b)
+static void assert_agree_on(const Scene *scene, const PathSettings *a_settings, int spp_a,
+                            const PathSettings *b_settings, int spp_b)
 {
-    Scene scene;
-    char error[256];
-    assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
     RenderSettings first = {SIDE, SIDE, spp_a, PIXEL_RANDOM, 0, 1, 0, "test"};
     RenderSettings second = {SIDE, SIDE, spp_b, PIXEL_RANDOM, 0, 2, 0, "test"};
     RenderResult a, b;
-    assert_int_equal(render(&scene, &first, path_radiance, a_settings, &a), 0);
-    assert_int_equal(render(&scene, &second, path_radiance, b_settings, &b), 0);
+    assert_int_equal(render(scene, &first, path_radiance, a_settings, &a), 0);
+    assert_int_equal(render(scene, &second, path_radiance, b_settings, &b), 0);
     double sum_z2 = 0.0, largest = 0.0;
     int n = 0;
     for (int by = 0; by < SIDE / BLOCK; by++)
@@ -266,6 +303,15 @@ static void assert_agree_on_the_room(const PathSettings *a_settings, int spp_a,
     assert_true(fabs(mean_a - mean_b) < 4.0 * sqrt(error_a * error_a + error_b * error_b));
     render_result_free(&a);
     render_result_free(&b);
+}
+
+static void assert_agree_on_the_room(const PathSettings *a_settings, int spp_a,
+                                     const PathSettings *b_settings, int spp_b)
+{
+    Scene scene;
+    char error[256];
+    assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
+    assert_agree_on(&scene, a_settings, spp_a, b_settings, spp_b);
     scene_free(&scene);
 }
 
@@ -287,6 +333,38 @@ static void test_bounded_roulette_agrees_on_the_room(void **state)
     assert_agree_on_the_room(&plain, 400, &bounded, 400);
 }
 #endif
+
+#if CHAPTER >= 7
+/* On the room: multiple importance sampling agrees with shadow rays alone. */
+static void test_mis_agrees_on_the_room(void **state)
+{
+    (void)state;
+    PathSettings plain = {.max_depth = 6, .shadow_rays = 1};
+    PathSettings mis = {.max_depth = 6, .shadow_rays = 2, .mis = 1};
+    assert_agree_on_the_room(&plain, 400, &mis, 300);
+}
+
+/* On the room, with and without mis, the mirror wall's image of the lamp agrees with
+ * shadow rays alone. The mirror is tinted (reflectance 0.5, 0.7, 0.9 instead of 1) so
+ * that its reflectance must be applied to the image's light. The depth limit 6 makes
+ * the mirror light's own limit matter (a diffuse hit on segment 5 may not use it). */
+static void test_mirror_light_agrees_on_the_room(void **state)
+{
+    (void)state;
+    Scene scene;
+    char error[256];
+    assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
+    int mirror = scene_find_material(&scene, "mirror");
+    assert_true(mirror >= 0);
+    scene.materials[mirror].reflectance = vec3(0.5, 0.7, 0.9);
+    PathSettings plain = {.max_depth = 6, .shadow_rays = 1};
+    PathSettings image = {.max_depth = 6, .shadow_rays = 1, .mirror_light = 1};
+    assert_agree_on(&scene, &plain, 400, &image, 400);
+    PathSettings both = {.max_depth = 6, .shadow_rays = 2, .mis = 1, .mirror_light = 1};
+    assert_agree_on(&scene, &plain, 400, &both, 200);
+    scene_free(&scene);
+}
+#endif
 #endif
 
 int main(void)
@@ -303,6 +381,12 @@ int main(void)
         cmocka_unit_test(test_furnace_chapter6_bounded_roulette),
         cmocka_unit_test(test_bounded_roulette_on_a_bright_furnace),
         cmocka_unit_test(test_bounded_roulette_agrees_on_the_room),
+#endif
+#if CHAPTER >= 7
+        cmocka_unit_test(test_furnace_chapter7_mis),
+        cmocka_unit_test(test_furnace_chapter7_mirror_light),
+        cmocka_unit_test(test_mis_agrees_on_the_room),
+        cmocka_unit_test(test_mirror_light_agrees_on_the_room),
 #endif
         cmocka_unit_test(test_furnace_reflectance_extremes),
     };
