@@ -49,17 +49,16 @@ static Vec3 weighted(ShadowRay sample, Vec3 n, const PathSettings *s)
     return vec3_scale(sample.value, weight);
 }
 
-/* The direct light at a diffuse vertex x on segment `segment` (chapter 7's eq. 21): M
- * shadow rays to the lamps and, with mirror_light, M to each planar mirror's image of
- * them (mirror_light.h), if the two segments of such a path fit in max_depth; each
- * weighted (above). With mis and mirror_light off it is area_light_direct. */
+/* The direct light at a diffuse vertex x (chapter 7's eq. 21): M shadow rays to the
+ * lamps and, if `images`, M to each planar mirror's image of them (mirror_light.h);
+ * each weighted (above). With mis off and no images it is area_light_direct. */
 static Vec3 direct_light(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Material *m,
-                         int segment, const PathSettings *s, Rng *rng, RayCounts *counts)
+                         int images, const PathSettings *s, Rng *rng, RayCounts *counts)
 {
     Vec3 sum = vec3(0, 0, 0);
     for (int k = 0; k < s->shadow_rays; k++)
         sum = vec3_add(sum, weighted(area_light_shadow_ray(scene, x, n, wo, m, rng, counts), n, s));
-    if (s->mirror_light && segment + 2 <= s->max_depth)
+    if (images)
         for (int p = 0; p < scene->mirror_plane_count; p++)
             for (int k = 0; k < s->shadow_rays; k++) {
                 ShadowRay sample = mirror_light_shadow_ray(scene, &scene->mirror_planes[p], x, n,
@@ -77,9 +76,10 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
     Vec3 radiance = vec3(0, 0, 0), throughput = vec3(1, 1, 1);
     int add_emission = 1; /* camera ray, or after a specular bounce, or M = 0 */
 #if CHAPTER >= 7
-    /* Since the last diffuse vertex: its segment (-1: none yet), the density of the
-     * direction sampled there, and the distance travelled since (up to the last mirror). */
-    int diffuse_segment = -1;
+    /* The diffuse vertices so far; since the last one: its segment (-1: none yet),
+     * whether it sampled the mirror images, the density of the direction sampled there,
+     * and the distance travelled since (up to the last mirror). */
+    int diffuse_vertices = 0, diffuse_segment = -1, images = 0;
     double bsdf_pdf = 0.0, travelled = 0.0;
 #endif
     for (int segment = 1;; segment++) {
@@ -109,7 +109,9 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
 #if CHAPTER >= 3
             if (s->shadow_rays > 0) {
 #if CHAPTER >= 7
-                Vec3 direct = direct_light(scene, hit.point, n, wo, m, segment, s, rng, counts);
+                /* The images' paths have two segments, which must fit in max_depth. */
+                images = diffuse_vertices < s->mirror_light && segment + 2 <= s->max_depth;
+                Vec3 direct = direct_light(scene, hit.point, n, wo, m, images, s, rng, counts);
 #else
                 Vec3 direct = area_light_direct(scene, hit.point, n, wo, m, s->shadow_rays, rng, counts);
 #endif
@@ -133,6 +135,7 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
             double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
             throughput = vec3_mul(throughput, diffuse_sample(m, n, wo, u1, u2, &direction));
 #if CHAPTER >= 7
+            diffuse_vertices++;
             diffuse_segment = segment;
             bsdf_pdf = diffuse_pdf(n, direction);
             travelled = 0.0;
@@ -144,8 +147,7 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
             /* Straight from a diffuse vertex to a planar mirror: that vertex sampled the
              * mirror's image of the lamps (mirror_light.h), so hitting a lamp next is light
              * already counted there (with mis: weighted, above). */
-            add_emission = !(s->mirror_light && s->shadow_rays > 0 && hit.triangle >= 0 &&
-                             diffuse_segment == segment - 1);
+            add_emission = !(images && hit.triangle >= 0 && diffuse_segment == segment - 1);
             travelled += hit.t;
 #else
             add_emission = 1;
@@ -180,8 +182,8 @@ void path_describe(const PathSettings *s, char *text, int size)
 #if CHAPTER >= 7
     if (s->mis)
         used += snprintf(text + used, (size_t)(size - used), " mis");
-    if (s->mirror_light)
-        used += snprintf(text + used, (size_t)(size - used), " mirror-light");
+    if (s->mirror_light > 0)
+        used += snprintf(text + used, (size_t)(size - used), " mirror-light@%d", s->mirror_light);
 #endif
     (void)used;
 }

@@ -20,10 +20,11 @@
  *                emission that a path hits right after a diffuse bounce is added too,
  *                weighted by the complementary share, instead of dropped.
  *   mirror_light the lamps seen in planar mirrors (chapter 7; mirror_light.h), with
- *                M >= 1: at every diffuse hit, M shadow rays more per mirror plane go to
- *                the lamps' mirror images, and a path that goes from a diffuse hit
- *                straight to a planar mirror and then hits a lamp does not add that
- *                emission again (with mis: adds its weighted share).
+ *                M >= 1: at the first mirror_light diffuse hits of a path, M shadow rays
+ *                more per mirror plane go to the lamps' mirror images, and a path that
+ *                goes from such a hit straight to a planar mirror and then hits a lamp
+ *                does not add that emission again (with mis: adds its weighted share).
+ *                0: off.
  *
  * One sample of eq. 1 along a path x_1, x_2, ...: the throughput T (product of
  * f cos / pdf over the bounces so far, divided by alpha at each roulette survival)
@@ -63,7 +64,7 @@ typedef struct {
 #endif
 #if CHAPTER >= 7
     int mis;          /* 1: light and BRDF sampling combined by the power heuristic */
-    int mirror_light; /* 1: shadow rays also to the lamps' images in planar mirrors */
+    int mirror_light; /* K: at the first K diffuse hits, shadow rays to the lamps' images */
 #endif
 } PathSettings;
 

@@ -4,10 +4,11 @@
  * 1. Finding the planes: the room has one (the mirror wall's two triangles); coplanar
  *    mirror triangles, facing either way, share one plane; a parallel plane elsewhere
  *    is another; mirror spheres and other materials make none.
- * 2. The image is the lamp moved: a lamp above a point, beside a mirror plane x = 1 of
- *    reflectance R, lights the point through the mirror exactly as much (times R) as
- *    the lamp reflected to the far side of x = 1, with no mirror, lights it directly.
- *    Means of many shadow rays of each, within 4 standard errors, per channel.
+ * 2. The image is the lamp moved: a tilted lamp above a point, beside a mirror plane
+ *    x = 1 of reflectance R, lights the point through the mirror exactly as much (times
+ *    R) as the lamp reflected to the far side of x = 1, with no mirror, lights it
+ *    directly. Means of many shadow rays of each, within 4 standard errors, per channel.
+ *    (Tilted, so that a lamp normal left unreflected shows.)
  * 3. The same light, found the other way: at points of the room (mirror tinted
  *    0.5, 0.7, 0.9), the mean of the mirror light's shadow rays equals that of the
  *    paths that BRDF sampling finds: a cosine-sampled direction that hits the mirror
@@ -80,9 +81,12 @@ static void test_planes_are_shared_and_distinct(void **state)
     scene_free(&scene);
 }
 
-/* A 0.4 x 0.6 lamp (Le = 2) facing down at height 1, centred at x = centre, and, unless
- * `without_mirror`, the mirror x = 1 (reflectance R) as a big quad facing -x. */
-static void lamp_beside_mirror(Scene *scene, double centre, int with_mirror, Vec3 reflectance)
+/* A 0.4 x 0.6 lamp (Le = 2) at height 1 around x = 0.5, tilted to face down and
+ * along x (so that its image's normal differs from its own), and the mirror x = 1
+ * (reflectance R) as a big quad; or, `moved`, no mirror and the lamp reflected across
+ * x = 1: (x, y, z) -> (2 - x, y, z), its corners in reverse order so that it faces
+ * the reflected way. */
+static void lamp_beside_mirror(Scene *scene, int moved, Vec3 reflectance)
 {
     scene_init(scene);
     Material white = {"white", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
@@ -90,12 +94,19 @@ static void lamp_beside_mirror(Scene *scene, double centre, int with_mirror, Vec
     Material mirror = {"mirror", MATERIAL_MIRROR, reflectance, vec3(0, 0, 0), 0.0, 1.0};
     assert_int_equal(scene_add_material(scene, white), 0);
     int l = scene_add_material(scene, lamp), m = scene_add_material(scene, mirror);
-    add_quad(scene, vec3(centre - 0.2, -0.3, 1), vec3(centre - 0.2, 0.3, 1),
-             vec3(centre + 0.2, 0.3, 1), vec3(centre + 0.2, -0.3, 1), l);
-    if (with_mirror)
+    Vec3 corners[4] = {{0.3, -0.3, 0.9}, {0.3, 0.3, 0.9}, {0.7, 0.3, 1.1}, {0.7, -0.3, 1.1}};
+    if (moved) {
+        Vec3 reflected[4];
+        for (int k = 0; k < 4; k++)
+            reflected[k] = vec3(2.0 - corners[3 - k].x, corners[3 - k].y, corners[3 - k].z);
+        add_quad(scene, reflected[0], reflected[1], reflected[2], reflected[3], l);
+    } else {
+        add_quad(scene, corners[0], corners[1], corners[2], corners[3], l);
         add_quad(scene, vec3(1, -5, -5), vec3(1, -5, 5), vec3(1, 5, 5), vec3(1, 5, -5), m);
+    }
     assert_int_equal(scene_prepare(scene), 0);
-    assert_true(scene->triangles[0].normal.z < -0.99); /* the lamp faces down */
+    const Vec3 normal = scene->triangles[0].normal;
+    assert_true(normal.z < -0.85 && fabs(normal.x) > 0.4); /* down, and tilted */
 }
 
 typedef struct {
@@ -151,8 +162,8 @@ static void test_image_is_the_lamp_moved(void **state)
     (void)state;
     const Vec3 tint = vec3(0.5, 0.7, 0.9);
     Scene with_mirror, moved;
-    lamp_beside_mirror(&with_mirror, 0.5, 1, tint);
-    lamp_beside_mirror(&moved, 1.5, 0, tint); /* 0.5 reflected across x = 1 */
+    lamp_beside_mirror(&with_mirror, 0, tint);
+    lamp_beside_mirror(&moved, 1, tint);
     const Vec3 points[2] = {{0, 0, 0}, {0.6, 0.4, -0.5}};
     for (int p = 0; p < 2; p++) {
         Estimate image = mirror_light_mean(&with_mirror, points[p], vec3(0, 0, 1), 200000, 3);
@@ -218,13 +229,14 @@ static void test_where_the_image_gives_nothing(void **state)
 {
     (void)state;
     Scene scene;
-    lamp_beside_mirror(&scene, 0.5, 1, vec3(1, 1, 1));
+    lamp_beside_mirror(&scene, 0, vec3(1, 1, 1));
     Estimate behind = mirror_light_mean(&scene, vec3(1.5, 0, 0), vec3(0, 0, 1), 10000, 7);
     assert_true(behind.mean[0] == 0.0);
     scene_free(&scene);
 
-    /* A small mirror (y in [-0.1, 0.1], z in [-0.1, 0.1] at x = 1): from (0, 3, 0) the
-     * lamp's image at y in [-0.3, 0.3] is seen beside it. */
+    /* A small mirror (y in [-0.1, 0.1], z in [-0.1, 0.1] at x = 1) before a white wall
+     * at x = 1.4: from (0, 3, 0) the lamp's image at y in [-0.3, 0.3] is seen beside
+     * the mirror, where the wall is. */
     scene_init(&scene);
     Material white = {"white", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
     Material lamp = {"lamp", MATERIAL_LIGHT, vec3(0, 0, 0), vec3(2, 2, 2), 0.0, 1.0};
@@ -233,6 +245,7 @@ static void test_where_the_image_gives_nothing(void **state)
     int l = scene_add_material(&scene, lamp), m = scene_add_material(&scene, mirror);
     add_quad(&scene, vec3(0.3, -0.3, 1), vec3(0.3, 0.3, 1), vec3(0.7, 0.3, 1), vec3(0.7, -0.3, 1), l);
     add_quad(&scene, vec3(1, -0.1, -0.1), vec3(1, -0.1, 0.1), vec3(1, 0.1, 0.1), vec3(1, 0.1, -0.1), m);
+    add_quad(&scene, vec3(1.4, -5, -5), vec3(1.4, -5, 5), vec3(1.4, 5, 5), vec3(1.4, 5, -5), 0);
     assert_int_equal(scene_prepare(&scene), 0);
     Estimate beside = mirror_light_mean(&scene, vec3(0, 3, 0), vec3(0, 0, 1), 10000, 8);
     assert_true(beside.mean[0] == 0.0);

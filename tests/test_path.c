@@ -175,8 +175,9 @@ static void test_furnace_chapter7_mis(void **state)
 
 /* The lights seen in a mirror wall (mirror_light.h), in the box with one mirror wall:
  * without shadow rays (the reference: light found only by hitting it), with shadow rays
- * alone, with the mirror's images, and with both and mis. Each must give 2. Bounded
- * roulette keeps the long paths that the mirror allows cheap (depth 200). */
+ * alone, with the mirror's images at every diffuse hit, and at the first two only with
+ * mis (later hits find that light by hitting it). Each must give 2. Bounded roulette
+ * keeps the long paths that the mirror allows cheap (depth 200). */
 static void test_furnace_chapter7_mirror_light(void **state)
 {
     (void)state;
@@ -184,10 +185,10 @@ static void test_furnace_chapter7_mirror_light(void **state)
     radiance_two_furnace(furnace_box_mirrored, &hitting);
     PathSettings shadow = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3};
     radiance_two_furnace(furnace_box_mirrored, &shadow);
-    PathSettings mirror = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3, .mirror_light = 1};
+    PathSettings mirror = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3, .mirror_light = 200};
     radiance_two_furnace(furnace_box_mirrored, &mirror);
     PathSettings both = {.max_depth = 200, .shadow_rays = 2, .rr_throughput = 3, .mis = 1,
-                         .mirror_light = 1};
+                         .mirror_light = 2};
     radiance_two_furnace(furnace_box_mirrored, &both);
 }
 #endif
@@ -344,10 +345,11 @@ static void test_mis_agrees_on_the_room(void **state)
     assert_agree_on_the_room(&plain, 400, &mis, 300);
 }
 
-/* On the room, with and without mis, the mirror wall's image of the lamp agrees with
- * shadow rays alone. The mirror is tinted (reflectance 0.5, 0.7, 0.9 instead of 1) so
- * that its reflectance must be applied to the image's light. The depth limit 6 makes
- * the mirror light's own limit matter (a diffuse hit on segment 5 may not use it). */
+/* On the room, the mirror wall's image of the lamp agrees with shadow rays alone: at
+ * every diffuse hit, and with mis at the first one only. The mirror is tinted
+ * (reflectance 0.5, 0.7, 0.9 instead of 1) so that its reflectance must be applied to
+ * the image's light. The depth limit 6 makes the mirror light's own limit matter (a
+ * diffuse hit on segment 5 may not use it). */
 static void test_mirror_light_agrees_on_the_room(void **state)
 {
     (void)state;
@@ -358,10 +360,10 @@ static void test_mirror_light_agrees_on_the_room(void **state)
     assert_true(mirror >= 0);
     scene.materials[mirror].reflectance = vec3(0.5, 0.7, 0.9);
     PathSettings plain = {.max_depth = 6, .shadow_rays = 1};
-    PathSettings image = {.max_depth = 6, .shadow_rays = 1, .mirror_light = 1};
-    assert_agree_on(&scene, &plain, 400, &image, 400);
+    PathSettings image = {.max_depth = 6, .shadow_rays = 1, .mirror_light = 6};
+    assert_agree_on(&scene, &plain, 1500, &image, 400);
     PathSettings both = {.max_depth = 6, .shadow_rays = 2, .mis = 1, .mirror_light = 1};
-    assert_agree_on(&scene, &plain, 400, &both, 200);
+    assert_agree_on(&scene, &plain, 1500, &both, 200);
     scene_free(&scene);
 }
 #endif
