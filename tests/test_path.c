@@ -361,9 +361,9 @@ static void test_mirror_light_agrees_on_the_room(void **state)
     scene.materials[mirror].reflectance = vec3(0.5, 0.7, 0.9);
     PathSettings plain = {.max_depth = 6, .shadow_rays = 1};
     PathSettings image = {.max_depth = 6, .shadow_rays = 1, .mirror_light = 6};
-    assert_agree_on(&scene, &plain, 1500, &image, 400);
+    assert_agree_on(&scene, &plain, 2000, &image, 2000);
     PathSettings both = {.max_depth = 6, .shadow_rays = 2, .mis = 1, .mirror_light = 1};
-    assert_agree_on(&scene, &plain, 1500, &both, 200);
+    assert_agree_on(&scene, &plain, 2000, &both, 1000);
     scene_free(&scene);
 }
 #endif
