@@ -11,19 +11,26 @@
  * With roulette, paths may be long: the depth limit is set high (64) so that it almost
  * never acts and the estimate is of the full rendering equation.
  *
+ * The sweep's last row is roulette with bounded weights (roulette.h), the survival
+ * probability taken from the path's throughput, q = min(1, max T), as pbrt and smallpt
+ * do: no constant to choose, and the weights never grow, so its variance is finite for
+ * any reflectance. The program prints its efficiency against the best constant alpha.
+ *
  * A catch the sweep shows: a surviving path's weight grows by rho / alpha per diffuse
  * bounce, so the variance is finite only for alpha > rho^2 (tests/test_path.c). Below
  * that (here: rho^2 of the brightest diffuse surface), the mean is still right in
  * expectation, but a run of finite length usually falls short of it (it has not met
  * the rare, huge samples that make up the difference) and its standard error is not
- * to be trusted: such rows are marked. The reference uses alpha = 0.75, above it.
+ * to be trusted: such rows are marked. The reference (chapters/reference.c) uses
+ * bounded weights, whose variance is finite.
  */
 #include <stdio.h>
 
 #include "experiment.h"
 #include "path.h"
 
-static const double SWEEP[] = {0.01, 0.05, 0.1, 0.25, 0.5, 0.75, 0.9, 1.0};
+/* The last point, 0, is not a constant alpha but roulette with bounded weights. */
+static const double SWEEP[] = {0.01, 0.05, 0.1, 0.25, 0.5, 0.75, 0.9, 1.0, 0.0};
 enum { SWEEP_COUNT = sizeof SWEEP / sizeof SWEEP[0], SWEEP_SPP = 16 };
 
 static void settings_text_for(const Options *options, double alpha, char *text, size_t size)
@@ -31,15 +38,23 @@ static void settings_text_for(const Options *options, double alpha, char *text, 
     snprintf(text, size, "%d spp, M=%d alpha=%g", options->spp, options->shadow_rays, alpha);
 }
 
-/* A sweep point: measured at random positions; its image and standard error stay in
- * *result for the image's mean. */
+/* A sweep point: alpha, or with alpha = 0 bounded weights (roulette.h: survival
+ * min(1, max throughput) from the first segment on). Measured at random positions; its
+ * image and standard error stay in *result for the image's mean. */
 static TableRow measure_alpha(const Options *options, const Scene *scene,
                               const Reference *reference, double alpha, RenderResult *result)
 {
     PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays, .rr_survival = alpha};
     char name[64], settings_text[96];
-    snprintf(name, sizeof name, "sweep, alpha=%g", alpha);
-    settings_text_for(options, alpha, settings_text, sizeof settings_text);
+    if (alpha > 0.0) {
+        snprintf(name, sizeof name, "sweep, alpha=%g", alpha);
+        settings_text_for(options, alpha, settings_text, sizeof settings_text);
+    } else {
+        path.rr_throughput = 1;
+        snprintf(name, sizeof name, "sweep, bounded weights");
+        snprintf(settings_text, sizeof settings_text, "%d spp, M=%d q=min(1, max T)",
+                 options->spp, options->shadow_rays);
+    }
     RenderSettings settings =
         experiment_render_settings(options, scene, options->spp, PIXEL_RANDOM, name);
     TableRow row = experiment_runs(options, scene, &settings, path_radiance, &path, name,
@@ -48,7 +63,8 @@ static TableRow measure_alpha(const Options *options, const Scene *scene,
     return row;
 }
 
-/* Every alpha estimates the same image; the reference uses alpha = 0.75. */
+/* Every alpha estimates the same image; the reference program renders it with its own
+ * estimator (chapters/reference.c): only the depth is taken from here. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
 {
     PathSettings estimator = {.max_depth = options->depth, .shadow_rays = 1, .rr_survival = 0.75};
@@ -106,8 +122,11 @@ int main(int argc, char **argv)
         double mean, error;
         measure_image_mean(&result.image, &result.average_std_error, &mean, &error);
         double z = (mean - reference_mean) / sqrt(error * error + reference_error * reference_error);
-        printf("  alpha = %-5g    %.5f +- %.5f   (%+.1f standard errors from the reference)%s\n",
-               SWEEP[i], mean, error, z, sweep[i].infinite_variance ? "  inf-var" : "");
+        char label[32] = "bounded weights";
+        if (SWEEP[i] > 0.0)
+            snprintf(label, sizeof label, "alpha = %g", SWEEP[i]);
+        printf("  %-16s %.5f +- %.5f   (%+.1f standard errors from the reference)%s\n", label,
+               mean, error, z, sweep[i].infinite_variance ? "  inf-var" : "");
         if (sweep[i].infinite_variance) {
             infinite++;
             infinite_short += z < -2.0;
@@ -129,9 +148,20 @@ int main(int argc, char **argv)
         if (!sweep[i].infinite_variance && !isnan(sweep[i].efficiency) &&
             (best < 0 || sweep[i].efficiency > sweep[best].efficiency))
             best = i;
-    if (best >= 0)
+    if (best == SWEEP_COUNT - 1)
+        printf("most efficient of the settings of finite variance (the others cannot be "
+               "ranked): bounded weights\n");
+    else if (best >= 0)
         printf("most efficient of the settings of finite variance (the others cannot be "
                "ranked): alpha = %g\n", SWEEP[best]);
+    /* Against the best constant alpha of finite variance (alpha = 1 always is). */
+    int best_alpha = SWEEP_COUNT - 2;
+    for (int i = 0; i < SWEEP_COUNT - 1; i++)
+        if (!sweep[i].infinite_variance && sweep[i].efficiency > sweep[best_alpha].efficiency)
+            best_alpha = i;
+    printf("bounded weights (q = min(1, max throughput)): %.2f times the efficiency of the best"
+           " constant alpha of finite variance (%g)\n",
+           sweep[SWEEP_COUNT - 1].efficiency / sweep[best_alpha].efficiency, SWEEP[best_alpha]);
 
     measure_reference_free(&reference);
     scene_free(&scene);

@@ -10,9 +10,11 @@
  * It reads the scene from --scene (the chapter programs pipe the bytes they read into
  * /dev/stdin), applies the one change a chapter may make to it (--sigma NAME=S: the
  * roughness of one material, chapter 5's sweep), renders what the path tracer with the
- * given depth and Fresnel mode estimates, with one shadow ray and Russian roulette at
- * alpha = 0.75 (unbiased, and above every diffuse rho^2 of the scenes, so its variance
- * is finite), and stores it as --out/KEY.pfm, KEY-stderr.pfm and KEY.txt. An interrupted
+ * given depth and Fresnel mode estimates, with the most efficient unbiased estimator
+ * measured (chapter 7's levers table): one shadow ray, Russian roulette with bounded
+ * weights (finite variance for any reflectance) and the planar mirrors' images of the
+ * lamps at every diffuse hit (mirror_light.h; nothing where a scene has no planar
+ * mirror), and stores it as --out/KEY.pfm, KEY-stderr.pfm and KEY.txt. An interrupted
  * render stores nothing and exits with status 130.
  */
 #include <errno.h>
@@ -112,7 +114,7 @@ int main(int argc, char **argv)
     PathSettings path = {.max_depth = (int)request.depth, .shadow_rays = 1,
                          .fresnel = strcmp(request.fresnel, "exact") == 0 ? FRESNEL_EXACT
                                                                          : FRESNEL_SCHLICK,
-                         .rr_survival = 0.75};
+                         .rr_throughput = 1, .mirror_light = (int)request.depth};
     RenderSettings settings = {0};
     settings.width = (int)request.size;
     settings.height = (int)lround(request.size / camera_aspect(&scene.camera));

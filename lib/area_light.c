@@ -24,25 +24,44 @@ LightSample area_light_sample(const Scene *scene, double u_select, double u1, do
     return sample;
 }
 
+ShadowRay area_light_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Material *m,
+                                Rng *rng, RayCounts *counts)
+{
+    ShadowRay ray = {.value = vec3(0, 0, 0)};
+    double u_select = rng_uniform(rng), u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+    LightSample light = area_light_sample(scene, u_select, u1, u2);
+    Vec3 to_light = vec3_sub(light.point, x);
+    double distance2 = vec3_dot(to_light, to_light);
+    Vec3 wi = vec3_scale(to_light, 1.0 / sqrt(distance2));
+    double cos_alpha = vec3_dot(n, wi);
+    double cos_beta = -vec3_dot(light.normal, wi);
+    if (cos_alpha <= 0.0 || cos_beta <= 0.0)
+        return ray;
+    counts->shadow++;
+    if (scene_occluded(scene, x, n, light.point, light.normal))
+        return ray;
+    Vec3 f = diffuse_brdf(m, n, wi, wo);
+    ray.value = vec3_scale(vec3_mul(light.emission, f),
+                           scene->light_area * cos_alpha * cos_beta / distance2);
+#if CHAPTER >= 7
+    ray.wi = wi;
+    ray.pdf = area_light_pdf(scene, sqrt(distance2), cos_beta);
+#endif
+    return ray;
+}
+
 Vec3 area_light_direct(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Material *m,
                        int shadow_rays, Rng *rng, RayCounts *counts)
 {
     Vec3 sum = vec3(0, 0, 0);
-    for (int k = 0; k < shadow_rays; k++) {
-        double u_select = rng_uniform(rng), u1 = rng_uniform(rng), u2 = rng_uniform(rng);
-        LightSample light = area_light_sample(scene, u_select, u1, u2);
-        Vec3 to_light = vec3_sub(light.point, x);
-        double distance2 = vec3_dot(to_light, to_light);
-        Vec3 wi = vec3_scale(to_light, 1.0 / sqrt(distance2));
-        double cos_alpha = vec3_dot(n, wi);
-        double cos_beta = -vec3_dot(light.normal, wi);
-        if (cos_alpha <= 0.0 || cos_beta <= 0.0)
-            continue;
-        counts->shadow++;
-        if (scene_occluded(scene, x, n, light.point, light.normal))
-            continue;
-        Vec3 f = diffuse_brdf(m, n, wi, wo);
-        sum = vec3_add(sum, vec3_scale(vec3_mul(light.emission, f), cos_alpha * cos_beta / distance2));
-    }
-    return vec3_scale(sum, scene->light_area / shadow_rays);
+    for (int k = 0; k < shadow_rays; k++)
+        sum = vec3_add(sum, area_light_shadow_ray(scene, x, n, wo, m, rng, counts).value);
+    return vec3_scale(sum, 1.0 / shadow_rays);
 }
+#if CHAPTER >= 7
+
+double area_light_pdf(const Scene *scene, double distance, double cos_beta)
+{
+    return distance * distance / (scene->light_area * cos_beta);
+}
+#endif

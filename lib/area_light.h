@@ -33,9 +33,33 @@ typedef struct {
  * The scene must have at least one light. */
 LightSample area_light_sample(const Scene *scene, double u_select, double u1, double u2);
 
+/* One term of eq. 21 (M = 1): the estimate A Le f cos(alpha) cos(beta) / d^2 V of the
+ * direct light from one light point; zero when the light or the surface faces away or
+ * the shadow ray is blocked. */
+typedef struct {
+    Vec3 value;
+#if CHAPTER >= 7
+    Vec3 wi;    /* the direction towards the light point */
+    double pdf; /* its density in solid angle (area_light_pdf); 0 when value is zero */
+#endif
+} ShadowRay;
+
+ShadowRay area_light_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Material *m,
+                                Rng *rng, RayCounts *counts);
+
 /* Eq. 21 at surface point x with normal n facing the viewer (direction wo), for the
  * diffuse material m, with M = shadow_rays >= 1. */
 Vec3 area_light_direct(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Material *m,
                        int shadow_rays, Rng *rng, RayCounts *counts);
+
+#if CHAPTER >= 7
+/* The density in solid angle, at a point a distance d away, of the direction towards a
+ * light point sampled uniformly by area, where the light's front normal makes the angle
+ * beta with the direction back (cos_beta > 0): converting the area density 1/A by
+ * dA = d^2 dw / cos(beta),
+ *     p(w) = d^2 / (A cos beta).
+ * Multiple importance sampling (mis.h) weighs each way of finding the light by it. */
+double area_light_pdf(const Scene *scene, double distance, double cos_beta);
+#endif
 
 #endif

@@ -49,3 +49,10 @@ Vec3 diffuse_sample(const Material *m, Vec3 n, Vec3 wo, double u1, double u2, Ve
 #endif
     return m->reflectance;
 }
+#if CHAPTER >= 7
+
+double diffuse_pdf(Vec3 n, Vec3 wi)
+{
+    return fmax(0.0, vec3_dot(n, wi)) / PI;
+}
+#endif

@@ -21,4 +21,10 @@ Vec3 diffuse_brdf(const Material *m, Vec3 n, Vec3 wi, Vec3 wo);
  * f cos / pdf and the direction in *wi. */
 Vec3 diffuse_sample(const Material *m, Vec3 n, Vec3 wo, double u1, double u2, Vec3 *wi);
 
+#if CHAPTER >= 7
+/* The density in solid angle with which diffuse_sample draws wi: cos / pi (hemisphere.h),
+ * 0 below the surface. Multiple importance sampling (mis.h) needs it. */
+double diffuse_pdf(Vec3 n, Vec3 wi);
+#endif
+
 #endif

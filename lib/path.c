@@ -13,6 +13,10 @@
 #if CHAPTER >= 6
 #include "roulette.h"
 #endif
+#if CHAPTER >= 7
+#include "mirror_light.h"
+#include "mis.h"
+#endif
 
 /* Glass: pick reflection (probability R) or refraction for ray direction d hitting a
  * surface with normal n facing d's origin. Returns the new direction. */
@@ -34,12 +38,50 @@ static Vec3 glass_scatter(Vec3 d, Vec3 n, int entering, double ior, const PathSe
     return mirror_reflect(d, n);
 }
 
+#if CHAPTER >= 7
+/* A light sample's share: all of it, or with mis its power-heuristic weight against the
+ * BRDF sampling of the same direction (mis.h). */
+static Vec3 weighted(ShadowRay sample, Vec3 n, const PathSettings *s)
+{
+    if (!s->mis)
+        return sample.value;
+    double weight = mis_power_heuristic(s->shadow_rays, sample.pdf, 1, diffuse_pdf(n, sample.wi));
+    return vec3_scale(sample.value, weight);
+}
+
+/* The direct light at a diffuse vertex x (chapter 7's eq. 21): M shadow rays to the
+ * lamps and, if `images`, M to each planar mirror's image of them (mirror_light.h);
+ * each weighted (above). With mis off and no images it is area_light_direct. */
+static Vec3 direct_light(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Material *m,
+                         int images, const PathSettings *s, Rng *rng, RayCounts *counts)
+{
+    Vec3 sum = vec3(0, 0, 0);
+    for (int k = 0; k < s->shadow_rays; k++)
+        sum = vec3_add(sum, weighted(area_light_shadow_ray(scene, x, n, wo, m, rng, counts), n, s));
+    if (images)
+        for (int p = 0; p < scene->mirror_plane_count; p++)
+            for (int k = 0; k < s->shadow_rays; k++) {
+                ShadowRay sample = mirror_light_shadow_ray(scene, &scene->mirror_planes[p], x, n,
+                                                           wo, m, rng, counts);
+                sum = vec3_add(sum, weighted(sample, n, s));
+            }
+    return vec3_scale(sum, 1.0 / s->shadow_rays);
+}
+#endif
+
 Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_pointer,
                    RayCounts *counts)
 {
     const PathSettings *s = settings_pointer;
     Vec3 radiance = vec3(0, 0, 0), throughput = vec3(1, 1, 1);
     int add_emission = 1; /* camera ray, or after a specular bounce, or M = 0 */
+#if CHAPTER >= 7
+    /* The diffuse vertices so far; since the last one: its segment (-1: none yet),
+     * whether it sampled the mirror images, the density of the direction sampled there,
+     * and the distance travelled since (up to the last mirror). */
+    int diffuse_vertices = 0, diffuse_segment = -1, images = 0;
+    double bsdf_pdf = 0.0, travelled = 0.0;
+#endif
     for (int segment = 1;; segment++) {
         Hit hit;
         if (!scene_intersect(scene, ray, INFINITY, &hit))
@@ -50,6 +92,15 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
         Vec3 wo = vec3_neg(ray.dir);
         if (front && add_emission)
             radiance = vec3_add(radiance, vec3_mul(throughput, m->emission));
+#if CHAPTER >= 7
+        else if (front && s->mis && material_emits(m)) {
+            /* Light that the last diffuse vertex also sampled (mis.h): its density there in
+             * solid angle is area_light_pdf over the whole (unfolded) distance. */
+            double light_pdf = area_light_pdf(scene, travelled + hit.t, -vec3_dot(ray.dir, hit.normal));
+            double weight = mis_power_heuristic(1, bsdf_pdf, s->shadow_rays, light_pdf);
+            radiance = vec3_add(radiance, vec3_mul(throughput, vec3_scale(m->emission, weight)));
+        }
+#endif
         if (m->kind == MATERIAL_LIGHT || segment >= s->max_depth)
             break; /* an emitter reflects nothing; or no segment may follow this one */
 
@@ -57,7 +108,13 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
         if (material_is_diffuse(m)) {
 #if CHAPTER >= 3
             if (s->shadow_rays > 0) {
+#if CHAPTER >= 7
+                /* The images' paths have two segments, which must fit in max_depth. */
+                images = diffuse_vertices < s->mirror_light && segment + 2 <= s->max_depth;
+                Vec3 direct = direct_light(scene, hit.point, n, wo, m, images, s, rng, counts);
+#else
                 Vec3 direct = area_light_direct(scene, hit.point, n, wo, m, s->shadow_rays, rng, counts);
+#endif
                 radiance = vec3_add(radiance, vec3_mul(throughput, direct));
             }
             add_emission = s->shadow_rays == 0;
@@ -65,18 +122,36 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
             add_emission = 1;
 #endif
 #if CHAPTER >= 6
-            if (s->rr_survival > 0.0 && s->rr_survival < 1.0) {
-                if (!roulette_survives(s->rr_survival, rng))
+            double survival = s->rr_survival;
+            if (s->rr_throughput > 0)
+                survival = segment >= s->rr_throughput ? roulette_survival_from_throughput(throughput)
+                                                       : 1.0;
+            if (survival > 0.0 && survival < 1.0) {
+                if (!roulette_survives(survival, rng))
                     break;
-                throughput = vec3_scale(throughput, 1.0 / s->rr_survival);
+                throughput = vec3_scale(throughput, 1.0 / survival);
             }
 #endif
             double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
             throughput = vec3_mul(throughput, diffuse_sample(m, n, wo, u1, u2, &direction));
+#if CHAPTER >= 7
+            diffuse_vertices++;
+            diffuse_segment = segment;
+            bsdf_pdf = diffuse_pdf(n, direction);
+            travelled = 0.0;
+#endif
         } else if (m->kind == MATERIAL_MIRROR) {
             direction = mirror_reflect(ray.dir, n);
             throughput = vec3_mul(throughput, m->reflectance);
+#if CHAPTER >= 7
+            /* Straight from a diffuse vertex to a planar mirror: that vertex sampled the
+             * mirror's image of the lamps (mirror_light.h), so hitting a lamp next is light
+             * already counted there (with mis: weighted, above). */
+            add_emission = !(images && hit.triangle >= 0 && diffuse_segment == segment - 1);
+            travelled += hit.t;
+#else
             add_emission = 1;
+#endif
         } else {
             direction = glass_scatter(ray.dir, n, front, m->ior, s, rng);
             add_emission = 1;
@@ -98,8 +173,17 @@ void path_describe(const PathSettings *s, char *text, int size)
                      s->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
 #endif
 #if CHAPTER >= 6
-    used += snprintf(text + used, (size_t)(size - used), " rr=%g",
-                     s->rr_survival > 0.0 ? s->rr_survival : 1.0);
+    if (s->rr_throughput > 0)
+        used += snprintf(text + used, (size_t)(size - used), " rr=throughput@%d", s->rr_throughput);
+    else
+        used += snprintf(text + used, (size_t)(size - used), " rr=%g",
+                         s->rr_survival > 0.0 ? s->rr_survival : 1.0);
+#endif
+#if CHAPTER >= 7
+    if (s->mis)
+        used += snprintf(text + used, (size_t)(size - used), " mis");
+    if (s->mirror_light > 0)
+        used += snprintf(text + used, (size_t)(size - used), " mirror-light@%d", s->mirror_light);
 #endif
     (void)used;
 }

@@ -8,10 +8,23 @@
  *                the shadow rays); emission seen from the camera or after a mirror or
  *                glass bounce is added, since no shadow ray accounts for it.
  *   rr_survival  Russian roulette's alpha (chapter 6; roulette.h); 0 or 1: no roulette.
+ *   rr_throughput  roulette with bounded weights instead (chapter 6; roulette.h): at a
+ *                diffuse hit on segment k or later, the path survives with probability
+ *                min(1, max component of its throughput). 0: off (rr_survival applies).
  *   max_depth    a path has at most this many segments, the camera ray being the first.
  *                The same count bounds both ways of finding light (a shadow ray is the
  *                segment after its hit), so every M estimates the same quantity.
  *   fresnel      glass reflectance: Schlick (chapter 1) or exact Fresnel (chapter 4).
+ *   mis          multiple importance sampling of the lamps (chapter 7; mis.h), with
+ *                M >= 1: each shadow ray's light is weighted by the power heuristic, and
+ *                emission that a path hits right after a diffuse bounce is added too,
+ *                weighted by the complementary share, instead of dropped.
+ *   mirror_light the lamps seen in planar mirrors (chapter 7; mirror_light.h), with
+ *                M >= 1: at the first mirror_light diffuse hits of a path, M shadow rays
+ *                more per mirror plane go to the lamps' mirror images, and a path that
+ *                goes from such a hit straight to a planar mirror and then hits a lamp
+ *                does not add that emission again (with mis: adds its weighted share).
+ *                0: off.
  *
  * One sample of eq. 1 along a path x_1, x_2, ...: the throughput T (product of
  * f cos / pdf over the bounces so far, divided by alpha at each roulette survival)
@@ -47,6 +60,11 @@ typedef struct {
 #endif
 #if CHAPTER >= 6
     double rr_survival; /* 0 (not set) or 1: no roulette */
+    int rr_throughput;  /* k >= 1: bounded-weight roulette from segment k on; 0: alpha */
+#endif
+#if CHAPTER >= 7
+    int mis;          /* 1: light and BRDF sampling combined by the power heuristic */
+    int mirror_light; /* K: at the first K diffuse hits, shadow rays to the lamps' images */
 #endif
 } PathSettings;
 

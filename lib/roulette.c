@@ -6,3 +6,8 @@ int roulette_survives(double alpha, Rng *rng)
 {
     return alpha >= 1.0 || rng_uniform(rng) < alpha;
 }
+
+double roulette_survival_from_throughput(Vec3 throughput)
+{
+    return fmin(1.0, vec3_max_component(throughput));
+}

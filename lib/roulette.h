@@ -13,9 +13,13 @@
 #define ROULETTE_H
 
 #include "rng.h"
+#include "vec.h"
 
 /* Whether the path survives (probability alpha); alpha >= 1 always survives without
  * drawing a random number. */
 int roulette_survives(double alpha, Rng *rng);
+
+/* The bounded-weight survival probability min(1, max component of throughput). */
+double roulette_survival_from_throughput(Vec3 throughput);
 
 #endif

@@ -7,6 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#if CHAPTER >= 7
+#include "mirror_light.h"
+#endif
+
 void scene_init(Scene *scene)
 {
     memset(scene, 0, sizeof *scene);
@@ -23,6 +27,9 @@ void scene_free(Scene *scene)
     free(scene->light_triangles);
     free(scene->light_cumulative);
     bvh_free(&scene->bvh);
+#if CHAPTER >= 7
+    free(scene->mirror_planes);
+#endif
     scene_init(scene);
 }
 
@@ -188,6 +195,10 @@ int scene_prepare(Scene *scene)
     bvh_free(&scene->bvh);
     if (bvh_build(&scene->bvh, primitives_of(scene)) != 0)
         return -1;
+#if CHAPTER >= 7
+    if (mirror_light_find_planes(scene) != 0)
+        return -1;
+#endif
     free(scene->light_triangles);
     free(scene->light_cumulative);
     scene->light_triangles = NULL;

@@ -9,7 +9,8 @@
  * Building a scene: scene_file.c reads one from text; tests may also call the
  * scene_add_* functions directly. Either way, call scene_prepare() once before the
  * first query: it builds the light list and the bounding volume hierarchy (bvh.h)
- * through which every ray query goes.
+ * through which every ray query goes (and, from chapter 7, the list of planar mirrors,
+ * mirror_light.h).
  */
 #ifndef SCENE_H
 #define SCENE_H
@@ -27,6 +28,14 @@ typedef struct {
     Vec3 position;
     Vec3 intensity; /* radiant intensity, W/sr */
 } PointLight;
+
+#if CHAPTER >= 7
+/* A plane n . p = offset holding mirror triangles (mirror_light.h). */
+typedef struct {
+    Vec3 normal;
+    double offset;
+} MirrorPlane;
+#endif
 
 typedef struct {
     char *source;         /* file name the scene came from, for error messages (owned) */
@@ -54,6 +63,10 @@ typedef struct {
     double light_area;        /* total emitting area */
     double scale;             /* the largest coordinate magnitude: the ray offset's (ray.h) */
     Bvh bvh;                  /* over all triangles and spheres */
+#if CHAPTER >= 7
+    MirrorPlane *mirror_planes; /* the distinct planes of the mirror triangles */
+    int mirror_plane_count;
+#endif
 } Scene;
 
 /* What a ray hit. */

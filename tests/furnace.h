@@ -17,7 +17,8 @@
  *     for alpha >= 0.75: a bounce multiplies it on average by (0.36 * 1 + 0.64 * 0.25) /
  *     0.75 < 1 (border, middle). The transport's decay per bounce is about
  *     0.36 * 1 + 0.64 * 0.5 = 0.68, so a depth of 40 truncates only ~1e-7 of the series.
- * Neither calls scene_prepare: add anything else first.
+ * furnace_box_mirrored (chapter 7) is the bordered box with one wall a mirror.
+ * None calls scene_prepare: add anything else first.
  */
 #ifndef FURNACE_H
 #define FURNACE_H
@@ -77,5 +78,21 @@ static inline void furnace_box_bordered(Scene *scene)
                     furnace_wall_piece(scene, axis, side, cuts[i], cuts[i + 1], cuts[j],
                                        cuts[j + 1], i == 1 && j == 1 ? light_index : border_index);
 }
+
+#if CHAPTER >= 7
+/* The bordered box with its wall at x = +1 a perfect mirror (reflectance 1): a mirror
+ * sends out the radiance that arrives, so the radiance is still 2 everywhere, and the
+ * lights of the other walls are also seen in the mirror (mirror_light.h). */
+static inline void furnace_box_mirrored(Scene *scene)
+{
+    furnace_box_bordered(scene);
+    Material mirror = {"mirror", MATERIAL_MIRROR, vec3(1, 1, 1), vec3(0, 0, 0), 0.0, 1.0};
+    int mirror_index = scene_add_material(scene, mirror);
+    assert_true(mirror_index >= 0);
+    for (int i = 0; i < scene->triangle_count; i++)
+        if (scene->triangles[i].normal.x < -0.5)
+            scene->triangles[i].material = mirror_index;
+}
+#endif
 
 #endif

@@ -1,6 +1,6 @@
-/* test_path.c (chapter 2): Tests of the path tracer (lib/path.c; chapters 2, 3, 4 and 6):
- * the estimators are unbiased, checked against closed forms; a coloured mirror and glass
- * seen from outside have exact or closed-form answers too.
+/* test_path.c (chapter 2): Tests of the path tracer (lib/path.c; chapters 2, 3, 4, 6 and 7):
+ * the estimators are unbiased, checked against closed forms and against each other on the
+ * room; a coloured mirror and glass seen from outside have exact or closed-form answers too.
  *
  * White furnace (SPEC §7; the boxes are in furnace.h): in a closed box whose every
  * surface is Lambertian with reflectance rho and emits Le, the radiance everywhere is
@@ -24,6 +24,10 @@
  *     alpha > rho^2. The roulette tests choose rho and alpha on that side; below it, the
  *     measured standard error itself cannot be trusted (the room's alpha = 0.01 of
  *     Figure 12 is far below it, which is why that image is so noisy).
+ * Chapter 7's estimators (mis, mirror_light) each get a furnace (the mirrored box of
+ * furnace.h for the mirror's images) and a room agreement test. In the room, mis moves
+ * little light (the lamp is seen from afar, where light sampling's density dwarfs the
+ * BRDF's), so its furnace, whose lights are close, is the test with power for it.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -82,16 +86,21 @@ static void uniform_furnace(const PathSettings *settings, double rho, double exp
 }
 
 #if CHAPTER >= 3
-/* The bordered box of furnace.h: radiance 2 everywhere (for an unlimited depth). */
-static void bordered_furnace(const PathSettings *settings)
+/* A box of furnace.h whose radiance is 2 everywhere (for an unlimited depth). */
+static void radiance_two_furnace(void (*make_box)(Scene *), const PathSettings *settings)
 {
     Scene scene;
-    furnace_box_bordered(&scene);
+    make_box(&scene);
     assert_int_equal(scene_prepare(&scene), 0);
     double mean, std_error;
     estimate(&scene, settings, vec3(0.1, -0.2, 0.3), 7, &mean, &std_error);
     assert_close(mean, std_error, FURNACE_BORDERED_RADIANCE, 0.01);
     scene_free(&scene);
+}
+
+static void bordered_furnace(const PathSettings *settings)
+{
+    radiance_two_furnace(furnace_box_bordered, settings);
 }
 #endif
 
@@ -127,6 +136,61 @@ static void test_furnace_chapter6_roulette(void **state)
     bordered_furnace(&hitting);
     PathSettings shadow = {.max_depth = 200, .shadow_rays = 1, .rr_survival = 0.75};
     bordered_furnace(&shadow);
+}
+#endif
+
+#if CHAPTER >= 6
+/* Roulette with bounded weights (roulette.h) from the first segment and from the third,
+ * with and without shadow rays, in the bordered box. */
+static void test_furnace_chapter6_bounded_roulette(void **state)
+{
+    (void)state;
+    PathSettings hitting = {.max_depth = 200, .rr_throughput = 1};
+    bordered_furnace(&hitting);
+    PathSettings shadow = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3};
+    bordered_furnace(&shadow);
+}
+
+/* A bright uniform box, rho = 0.9, no shadow rays: the survival probability is then 0.9
+ * at every bounce after the first (the throughput is 1 after each survival), paths are
+ * long (mean 10 segments), and the mean must match (1 - 0.9^200) / 0.1. */
+static void test_bounded_roulette_on_a_bright_furnace(void **state)
+{
+    (void)state;
+    PathSettings bounded = {.max_depth = 200, .rr_throughput = 1};
+    uniform_furnace(&bounded, 0.9, (1.0 - pow(0.9, 200)) / 0.1);
+}
+#endif
+
+#if CHAPTER >= 7
+/* Multiple importance sampling (mis.h), one and four shadow rays: the power heuristic's
+ * weights of the two ways of finding each light sum to 1, so the mean stays 2. */
+static void test_furnace_chapter7_mis(void **state)
+{
+    (void)state;
+    PathSettings one = {.max_depth = 40, .shadow_rays = 1, .mis = 1};
+    bordered_furnace(&one);
+    PathSettings four = {.max_depth = 40, .shadow_rays = 4, .mis = 1, .rr_throughput = 3};
+    bordered_furnace(&four);
+}
+
+/* The lights seen in a mirror wall (mirror_light.h), in the box with one mirror wall:
+ * without shadow rays (the reference: light found only by hitting it), with shadow rays
+ * alone, with the mirror's images at every diffuse hit, and at the first two only with
+ * mis (later hits find that light by hitting it). Each must give 2. Bounded roulette
+ * keeps the long paths that the mirror allows cheap (depth 200). */
+static void test_furnace_chapter7_mirror_light(void **state)
+{
+    (void)state;
+    PathSettings hitting = {.max_depth = 200, .rr_throughput = 3};
+    radiance_two_furnace(furnace_box_mirrored, &hitting);
+    PathSettings shadow = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3};
+    radiance_two_furnace(furnace_box_mirrored, &shadow);
+    PathSettings mirror = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3, .mirror_light = 200};
+    radiance_two_furnace(furnace_box_mirrored, &mirror);
+    PathSettings both = {.max_depth = 200, .shadow_rays = 2, .rr_throughput = 3, .mis = 1,
+                         .mirror_light = 2};
+    radiance_two_furnace(furnace_box_mirrored, &both);
 }
 #endif
 
@@ -310,18 +374,17 @@ static void block_means(const RenderResult *r, int bx, int by, int c, double *me
     *se = sqrt(variance) / (BLOCK * BLOCK);
 }
 
-static void test_shadow_rays_agree_with_hitting_on_the_room(void **state)
+/* Estimators a (spp_a samples) and b (spp_b) agree on a scene at SIDE x SIDE pixels:
+ * the block chi-square above at significance level 0.1%, and the image means within 4
+ * standard errors. */
+static void assert_agree_on(const Scene *scene, const PathSettings *a_settings, int spp_a,
+                            const PathSettings *b_settings, int spp_b)
 {
-    (void)state;
-    Scene scene;
-    char error[256];
-    assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
-    PathSettings hitting = {.max_depth = 6}, shadow = {.max_depth = 6, .shadow_rays = 1};
-    RenderSettings many = {SIDE, SIDE, 2000, PIXEL_RANDOM, 0, 1, 0, "test"};
-    RenderSettings fewer = {SIDE, SIDE, 400, PIXEL_RANDOM, 0, 2, 0, "test"};
+    RenderSettings first = {SIDE, SIDE, spp_a, PIXEL_RANDOM, 0, 1, 0, "test"};
+    RenderSettings second = {SIDE, SIDE, spp_b, PIXEL_RANDOM, 0, 2, 0, "test"};
     RenderResult a, b;
-    assert_int_equal(render(&scene, &many, path_radiance, &hitting, &a), 0);
-    assert_int_equal(render(&scene, &fewer, path_radiance, &shadow, &b), 0);
+    assert_int_equal(render(scene, &first, path_radiance, a_settings, &a), 0);
+    assert_int_equal(render(scene, &second, path_radiance, b_settings, &b), 0);
     double sum_z2 = 0.0, largest = 0.0;
     int n = 0;
     for (int by = 0; by < SIDE / BLOCK; by++)
@@ -339,16 +402,80 @@ static void test_shadow_rays_agree_with_hitting_on_the_room(void **state)
     double mean_a, error_a, mean_b, error_b;
     measure_image_mean(&a.image, &a.average_std_error, &mean_a, &error_a);
     measure_image_mean(&b.image, &b.average_std_error, &mean_b, &error_b);
-    print_message("    image means: hitting %.5f +- %.5f, shadow rays %.5f +- %.5f\n", mean_a,
-                  error_a, mean_b, error_b);
+    char text_a[96], text_b[96];
+    path_describe(a_settings, text_a, sizeof text_a);
+    path_describe(b_settings, text_b, sizeof text_b);
+    print_message("    image means: %s %.5f +- %.5f, %s %.5f +- %.5f\n", text_a, mean_a,
+                  error_a, text_b, mean_b, error_b);
     print_message("    sum of z^2 = %.1f over %d block channels (p = %.3f), largest |z| %.2f\n",
                   sum_z2, n, p, largest);
     assert_true(p > 0.001);
     assert_true(fabs(mean_a - mean_b) < 4.0 * sqrt(error_a * error_a + error_b * error_b));
     render_result_free(&a);
     render_result_free(&b);
+}
+
+static void assert_agree_on_the_room(const PathSettings *a_settings, int spp_a,
+                                     const PathSettings *b_settings, int spp_b)
+{
+    Scene scene;
+    char error[256];
+    assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
+    assert_agree_on(&scene, a_settings, spp_a, b_settings, spp_b);
     scene_free(&scene);
 }
+
+static void test_shadow_rays_agree_with_hitting_on_the_room(void **state)
+{
+    (void)state;
+    PathSettings hitting = {.max_depth = 6}, shadow = {.max_depth = 6, .shadow_rays = 1};
+    assert_agree_on_the_room(&hitting, 2000, &shadow, 400);
+}
+
+#if CHAPTER >= 6
+/* On the room: bounded roulette (from segment 2) agrees with no roulette at the same
+ * depth limit, shadow rays in both. */
+static void test_bounded_roulette_agrees_on_the_room(void **state)
+{
+    (void)state;
+    PathSettings plain = {.max_depth = 8, .shadow_rays = 1};
+    PathSettings bounded = {.max_depth = 8, .shadow_rays = 1, .rr_throughput = 2};
+    assert_agree_on_the_room(&plain, 400, &bounded, 400);
+}
+#endif
+
+#if CHAPTER >= 7
+/* On the room: multiple importance sampling agrees with shadow rays alone. */
+static void test_mis_agrees_on_the_room(void **state)
+{
+    (void)state;
+    PathSettings plain = {.max_depth = 6, .shadow_rays = 1};
+    PathSettings mis = {.max_depth = 6, .shadow_rays = 2, .mis = 1};
+    assert_agree_on_the_room(&plain, 400, &mis, 300);
+}
+
+/* On the room, the mirror wall's image of the lamp agrees with shadow rays alone: at
+ * every diffuse hit, and with mis at the first one only. The mirror is tinted
+ * (reflectance 0.5, 0.7, 0.9 instead of 1) so that its reflectance must be applied to
+ * the image's light. The depth limit 6 makes the mirror light's own limit matter (a
+ * diffuse hit on segment 5 may not use it). */
+static void test_mirror_light_agrees_on_the_room(void **state)
+{
+    (void)state;
+    Scene scene;
+    char error[256];
+    assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
+    int mirror = scene_find_material(&scene, "mirror");
+    assert_true(mirror >= 0);
+    scene.materials[mirror].reflectance = vec3(0.5, 0.7, 0.9);
+    PathSettings plain = {.max_depth = 6, .shadow_rays = 1};
+    PathSettings image = {.max_depth = 6, .shadow_rays = 1, .mirror_light = 6};
+    assert_agree_on(&scene, &plain, 2000, &image, 2000);
+    PathSettings both = {.max_depth = 6, .shadow_rays = 2, .mis = 1, .mirror_light = 1};
+    assert_agree_on(&scene, &plain, 2000, &both, 1000);
+    scene_free(&scene);
+}
+#endif
 #endif
 
 int main(void)
@@ -364,6 +491,15 @@ int main(void)
 #if CHAPTER >= 6
         cmocka_unit_test(test_furnace_chapter6_roulette),
         cmocka_unit_test(test_roulette_unbiased),
+        cmocka_unit_test(test_furnace_chapter6_bounded_roulette),
+        cmocka_unit_test(test_bounded_roulette_on_a_bright_furnace),
+        cmocka_unit_test(test_bounded_roulette_agrees_on_the_room),
+#endif
+#if CHAPTER >= 7
+        cmocka_unit_test(test_furnace_chapter7_mis),
+        cmocka_unit_test(test_furnace_chapter7_mirror_light),
+        cmocka_unit_test(test_mis_agrees_on_the_room),
+        cmocka_unit_test(test_mirror_light_agrees_on_the_room),
 #endif
         cmocka_unit_test(test_furnace_reflectance_extremes),
     };

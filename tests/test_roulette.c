@@ -162,6 +162,22 @@ static void test_random_estimate_mean_and_variance(void **state)
     }
 }
 
+/* Bounded weights: the survival probability is the throughput's largest channel, capped
+ * at 1, so a survivor's weight T / q never exceeds 1 in that channel. */
+static void test_survival_from_throughput_bounds_the_weight(void **state)
+{
+    (void)state;
+    assert_true(roulette_survival_from_throughput(vec3(0.2, 0.6, 0.1)) == 0.6);
+    assert_true(roulette_survival_from_throughput(vec3(0.05, 0.01, 0.02)) == 0.05);
+    assert_true(roulette_survival_from_throughput(vec3(0.3, 2.5, 1.0)) == 1.0);
+    assert_true(roulette_survival_from_throughput(vec3(0, 0, 0)) == 0.0);
+    const Vec3 throughputs[] = {{0.75, 0.15, 0.15}, {1e-3, 2e-3, 5e-4}, {0.9, 0.9, 0.9}};
+    for (int k = 0; k < 3; k++) {
+        double q = roulette_survival_from_throughput(throughputs[k]);
+        assert_true(fabs(vec3_max_component(vec3_scale(throughputs[k], 1.0 / q)) - 1.0) < 1e-15);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -171,6 +187,7 @@ int main(void)
         cmocka_unit_test(test_survival_frequency_is_alpha),
         cmocka_unit_test(test_constant_estimate_mean_and_variance),
         cmocka_unit_test(test_random_estimate_mean_and_variance),
+        cmocka_unit_test(test_survival_from_throughput_bounds_the_weight),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,88 @@
+/* mirror_light.c (chapter 7): the lamps' images in planar mirrors. See mirror_light.h. */
+#include "mirror_light.h"
+
+#include <stdlib.h>
+
+#include "diffuse.h"
+#include "mirror.h"
+
+/* Two triangles share a plane when their normals are parallel (either orientation) and
+ * the offsets agree, to a tolerance relative to the scene's coordinates. */
+#define PLANE_TOLERANCE 1e-9
+
+static int in_plane(const MirrorPlane *plane, const Triangle *triangle)
+{
+    double offset = vec3_dot(plane->normal, triangle->v0);
+    return fabs(fabs(vec3_dot(plane->normal, triangle->normal)) - 1.0) < PLANE_TOLERANCE &&
+           fabs(offset - plane->offset) < PLANE_TOLERANCE * (1.0 + fabs(plane->offset));
+}
+
+static int is_mirror_triangle(const Scene *scene, int triangle)
+{
+    return scene->materials[scene->triangles[triangle].material].kind == MATERIAL_MIRROR;
+}
+
+int mirror_light_find_planes(Scene *scene)
+{
+    free(scene->mirror_planes);
+    scene->mirror_planes = NULL;
+    scene->mirror_plane_count = 0;
+    int mirrors = 0;
+    for (int i = 0; i < scene->triangle_count; i++)
+        mirrors += is_mirror_triangle(scene, i);
+    if (mirrors == 0)
+        return 0;
+    scene->mirror_planes = malloc((size_t)mirrors * sizeof *scene->mirror_planes);
+    if (!scene->mirror_planes)
+        return -1;
+    for (int i = 0; i < scene->triangle_count; i++) {
+        const Triangle *triangle = &scene->triangles[i];
+        if (!is_mirror_triangle(scene, i))
+            continue;
+        int known = 0;
+        for (int p = 0; p < scene->mirror_plane_count && !known; p++)
+            known = in_plane(&scene->mirror_planes[p], triangle);
+        if (!known) {
+            MirrorPlane plane = {triangle->normal, vec3_dot(triangle->normal, triangle->v0)};
+            scene->mirror_planes[scene->mirror_plane_count++] = plane;
+        }
+    }
+    return 0;
+}
+
+ShadowRay mirror_light_shadow_ray(const Scene *scene, const MirrorPlane *plane, Vec3 x, Vec3 n,
+                                  Vec3 wo, const Material *m, Rng *rng, RayCounts *counts)
+{
+    ShadowRay ray = {vec3(0, 0, 0), vec3(0, 0, 0), 0.0};
+    double u_select = rng_uniform(rng), u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+    LightSample light = area_light_sample(scene, u_select, u1, u2);
+    double height_x = vec3_dot(plane->normal, x) - plane->offset;
+    double height_y = vec3_dot(plane->normal, light.point) - plane->offset;
+    if (height_x * height_y <= 0.0)
+        return ray; /* not on the same side: no way from one to the other by this plane */
+    Vec3 image = vec3_add_scaled(light.point, plane->normal, -2.0 * height_y);
+    Vec3 image_normal = mirror_reflect(light.normal, plane->normal);
+    Vec3 to_image = vec3_sub(image, x);
+    double distance = vec3_length(to_image);
+    Vec3 wi = vec3_scale(to_image, 1.0 / distance);
+    double cos_alpha = vec3_dot(n, wi), cos_beta = -vec3_dot(image_normal, wi);
+    if (cos_alpha <= 0.0 || cos_beta <= 0.0)
+        return ray;
+    counts->shadow++;
+    Hit hit;
+    if (!scene_intersect(scene, ray_spawn(x, n, wi, scene->scale), distance, &hit) ||
+        hit.triangle < 0)
+        return ray;
+    const Material *mirror = &scene->materials[hit.material];
+    if (mirror->kind != MATERIAL_MIRROR || !in_plane(plane, &scene->triangles[hit.triangle]))
+        return ray; /* blocked before the mirror, or missed its polygon */
+    counts->shadow++;
+    if (scene_occluded(scene, hit.point, hit.normal, light.point, light.normal))
+        return ray;
+    Vec3 f = vec3_mul(diffuse_brdf(m, n, wi, wo), mirror->reflectance);
+    ray.value = vec3_scale(vec3_mul(light.emission, f),
+                           scene->light_area * cos_alpha * cos_beta / (distance * distance));
+    ray.wi = wi;
+    ray.pdf = area_light_pdf(scene, distance, cos_beta);
+    return ray;
+}
