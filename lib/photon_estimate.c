@@ -1,0 +1,31 @@
+/* photon_estimate.c: the photon density estimate of reflected radiance (chapter 8).
+ * See photon_estimate.h. */
+#include "photon_estimate.h"
+
+#include "diffuse.h"
+
+typedef struct {
+    const PhotonMap *map;
+    Vec3 n, wo;
+    const Material *m;
+    Vec3 sum; /* sum of f * Phi over the photons that count */
+} Gather;
+
+static void add_photon(int index, double distance2, void *context)
+{
+    (void)distance2;
+    Gather *g = context;
+    const Photon *p = &g->map->photons[index];
+    if (vec3_dot(p->normal, g->n) < PHOTON_NORMAL_COS || vec3_dot(p->incoming, g->n) <= 0.0)
+        return;
+    Vec3 f = diffuse_brdf(g->m, g->n, p->incoming, g->wo);
+    g->sum = vec3_add(g->sum, vec3_mul(f, p->power));
+}
+
+Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 n, Vec3 wo,
+                              const Material *m)
+{
+    Gather g = {map, n, wo, m, vec3(0, 0, 0)};
+    kdtree_query_radius(&map->tree, x, radius, add_photon, &g);
+    return vec3_scale(g.sum, 1.0 / (PI * radius * radius));
+}
