@@ -58,9 +58,9 @@ static void select_median(KdTree *tree, int lo, int hi, int k, int axis)
 
 static void build_range(KdTree *tree, int lo, int hi)
 {
-    if (hi - lo < 2) {
-        if (hi > lo)
-            tree->axis[lo] = 0;
+    if (hi - lo <= KDTREE_LEAF_SIZE) {
+        for (int i = lo; i < hi; i++)
+            tree->axis[i] = 0; /* unused: a leaf is scanned whole */
         return;
     }
     int mid = lo + (hi - lo) / 2, axis = widest_axis(tree, lo, hi);
@@ -99,6 +99,12 @@ void kdtree_free(KdTree *tree)
     tree->count = 0;
 }
 
+void kdtree_use_tree_order(KdTree *tree)
+{
+    for (int i = 0; i < tree->count; i++)
+        tree->index[i] = i;
+}
+
 typedef struct {
     const KdTree *tree;
     Vec3 center;
@@ -109,7 +115,7 @@ typedef struct {
 
 static void query_range(const Query *q, int lo, int hi)
 {
-    while (lo < hi) {
+    while (hi - lo > KDTREE_LEAF_SIZE) {
         int mid = lo + (hi - lo) / 2;
         Vec3 p = q->tree->points[mid], d = vec3_sub(q->center, p);
         double distance2 = vec3_dot(d, d);
@@ -128,6 +134,12 @@ static void query_range(const Query *q, int lo, int hi)
             hi = mid; /* then the near half, by looping */
         else
             lo = mid + 1;
+    }
+    for (int i = lo; i < hi; i++) { /* a leaf */
+        Vec3 d = vec3_sub(q->center, q->tree->points[i]);
+        double distance2 = vec3_dot(d, d);
+        if (distance2 <= q->radius2)
+            q->visit(q->tree->index[i], distance2, q->context);
     }
 }
 

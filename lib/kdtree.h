@@ -17,15 +17,21 @@
  * O(N log N). No child pointers are stored: a node's children are the halves of its
  * range.
  *
+ * Ranges of at most KDTREE_LEAF_SIZE points are leaves, not split further: a query
+ * tests all their points, which lie side by side in memory, instead of descending
+ * three more levels (each a jump to another cache line).
+ *
  * Fixed-radius query: at a node, report its point if |p - c|^2 <= r^2 (points at
  * exactly r are included), then visit the half on c's side of the split; visit the
  * other half only if the splitting plane is within r of c, since every point there is
- * at least that far away along the axis.
+ * at least that far away along the axis. At a leaf, test every point.
  */
 #ifndef KDTREE_H
 #define KDTREE_H
 
 #include "vec.h"
+
+#define KDTREE_LEAF_SIZE 8
 
 typedef struct {
     Vec3 *points;         /* copies of the points, in tree order */
@@ -39,6 +45,11 @@ typedef struct {
 int kdtree_build(KdTree *tree, const Vec3 *points, int count);
 
 void kdtree_free(KdTree *tree);
+
+/* For a caller that has put its own items in the tree's order (item i of the new order
+ * being the old item tree->index[i]): from now on every index is the position in that
+ * order, index[i] = i. The items one query finds then lie near each other in memory. */
+void kdtree_use_tree_order(KdTree *tree);
 
 /* Called once for each point found: its index in the array given to build and its
  * squared distance from the query's centre. */

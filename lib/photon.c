@@ -96,22 +96,33 @@ static void *trace_share(void *argument)
     return NULL;
 }
 
-/* Concatenate the workers' photons in order and build the tree over them. */
+/* Build the tree over the workers' photons (taken in the order they were shot), and
+ * keep the photons in the tree's order, so that those near each other in space are
+ * near each other in memory too: a query then reads a few cache lines, not one per
+ * photon. */
 static int gather(PhotonMap *map, const Worker *workers, int threads)
 {
     int count = 0;
     for (int i = 0; i < threads; i++)
         count += workers[i].count;
-    map->photons = malloc((size_t)(count > 0 ? count : 1) * sizeof *map->photons);
-    Vec3 *positions = malloc((size_t)(count > 0 ? count : 1) * sizeof *positions);
-    int ok = map->photons && positions;
+    size_t size = (size_t)(count > 0 ? count : 1);
+    Photon *shot = malloc(size * sizeof *shot);
+    Vec3 *positions = malloc(size * sizeof *positions);
+    map->photons = malloc(size * sizeof *map->photons);
+    int ok = shot && positions && map->photons;
     for (int i = 0, at = 0; ok && i < threads; at += workers[i].count, i++)
         if (workers[i].count > 0)
-            memcpy(map->photons + at, workers[i].photons, (size_t)workers[i].count * sizeof *map->photons);
-    map->count = count;
+            memcpy(shot + at, workers[i].photons, (size_t)workers[i].count * sizeof *shot);
     for (int i = 0; ok && i < count; i++)
-        positions[i] = map->photons[i].position;
+        positions[i] = shot[i].position;
     ok = ok && kdtree_build(&map->tree, positions, count) == 0;
+    if (ok) {
+        map->count = count;
+        for (int i = 0; i < count; i++)
+            map->photons[i] = shot[map->tree.index[i]];
+        kdtree_use_tree_order(&map->tree);
+    }
+    free(shot);
     free(positions);
     return ok ? 0 : -1;
 }

@@ -75,7 +75,7 @@ typedef struct {
 } PhotonMapSettings;
 
 typedef struct PhotonMap {
-    Photon *photons; /* in the order they were shot */
+    Photon *photons; /* in the kd-tree's order (photon.c) */
     int count;       /* stored */
     int emitted;
     KdTree tree;     /* over the photons' positions */

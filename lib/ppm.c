@@ -58,11 +58,11 @@ static void finish(const double *sum, const double *sum_squares, int passes, Ren
     }
 }
 
-static int budget_allows(const PpmSettings *s, int done, double elapsed)
+static int budget_allows(const PpmSettings *s, int done, double cpu_used)
 {
     if (done >= s->passes)
         return 0;
-    return s->seconds <= 0.0 || done == 0 || elapsed + elapsed / done <= s->seconds;
+    return s->cpu_seconds <= 0.0 || done == 0 || cpu_used + cpu_used / done <= s->cpu_seconds;
 }
 
 int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettings *settings,
@@ -76,9 +76,9 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
     double *sum_squares = calloc((size_t)values, sizeof *sum_squares);
     int status = r.render.image.pixels && r.render.std_error.pixels && sum && sum_squares ? 0 : -1;
     int show = render->progress && isatty(STDERR_FILENO);
-    double start = stats_now();
+    double start = stats_now(), cpu_start = stats_cpu_now();
     long stored = 0;
-    while (status == 0 && budget_allows(settings, r.passes, stats_now() - start)) {
+    while (status == 0 && budget_allows(settings, r.passes, stats_cpu_now() - cpu_start)) {
         RenderResult pass;
         int pass_stored;
         if (render_pass(scene, render, settings, r.passes + 1, &pass, &r.render.rays, &pass_stored) != 0) {
@@ -109,6 +109,7 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
     if (show)
         fprintf(stderr, "\r%*s\r", 40, "");
     r.render.seconds = stats_now() - start;
+    r.cpu_seconds = stats_cpu_now() - cpu_start;
     if (status == 0) {
         finish(sum, sum_squares, r.passes, &r.render);
         r.radius = ppm_radius(settings->radius, settings->alpha, r.passes > 0 ? r.passes : 1);

@@ -34,13 +34,15 @@ typedef struct {
     double alpha;         /* of the radius schedule */
     int spp;              /* camera samples per pixel per pass */
     int passes;           /* passes to render */
-    double seconds;       /* > 0: stop starting passes once the next would end past this
-                           * budget (the mean pass time so far tells); at least one pass */
+    double cpu_seconds;   /* > 0: a budget of processor time (stats_cpu_now): no pass is
+                           * started that would end past it, judged by the mean pass so
+                           * far; at least one pass */
 } PpmSettings;
 
 typedef struct {
     RenderResult render; /* the mean of the passes and its standard error; time, rays */
     int passes;          /* passes rendered */
+    double cpu_seconds;  /* processor time used, all threads together */
     double radius;       /* the last pass's radius */
     double stored;       /* photons stored per pass, on average */
 } PpmResult;
