@@ -82,7 +82,7 @@ define CHAPTER_RULE
 chapter$(1): $(call chapter_bin,$(1))
 	$(call chapter_bin,$(1)) --out $(FIGURES) $(QUICK_ARGS) $(ARGS)
 endef
-CHAPTERS := $(foreach n,1 2 3 4 5 6 7,$(if $(wildcard chapters/ch0$(n)_*.c),$(n)))
+CHAPTERS := $(foreach n,1 2 3 4 5 6 7 8,$(if $(wildcard chapters/ch0$(n)_*.c),$(n)))
 $(foreach n,$(CHAPTERS),$(eval $(call CHAPTER_RULE,$(n))))
 
 figures:

@@ -58,11 +58,13 @@ static void finish(const double *sum, const double *sum_squares, int passes, Ren
     }
 }
 
+/* Another pass, if one is left and the budget allows it: the total time with it (judged
+ * by the mean pass so far) ends nearer the budget than without it. */
 static int budget_allows(const PpmSettings *s, int done, double cpu_used)
 {
     if (done >= s->passes)
         return 0;
-    return s->cpu_seconds <= 0.0 || done == 0 || cpu_used + cpu_used / done <= s->cpu_seconds;
+    return s->cpu_seconds <= 0.0 || done == 0 || cpu_used + 0.5 * cpu_used / done <= s->cpu_seconds;
 }
 
 int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettings *settings,

@@ -34,9 +34,9 @@ typedef struct {
     double alpha;         /* of the radius schedule */
     int spp;              /* camera samples per pixel per pass */
     int passes;           /* passes to render */
-    double cpu_seconds;   /* > 0: a budget of processor time (stats_cpu_now): no pass is
-                           * started that would end past it, judged by the mean pass so
-                           * far; at least one pass */
+    double cpu_seconds;   /* > 0: a budget of processor time (stats_cpu_now): passes are
+                           * rendered while one more would end nearer the budget than
+                           * stopping (judged by the mean pass so far); at least one */
 } PpmSettings;
 
 typedef struct {
