@@ -95,8 +95,13 @@ static PpmSettings photon_settings(const Options *options, int width, int height
 
 static void describe_ppm(const PpmSettings *ppm, const PpmResult *result, char *text, size_t size)
 {
-    snprintf(text, size, "%d x %d spp, M=%d, %dk photons, r %.3g to %.3g", result->passes, ppm->spp,
-             ppm->path.shadow_rays, (ppm->photons + 500) / 1000, ppm->radius, result->radius);
+    char photons[32];
+    if (ppm->photons >= 10000)
+        snprintf(photons, sizeof photons, "%dk", (ppm->photons + 500) / 1000);
+    else
+        snprintf(photons, sizeof photons, "%d", ppm->photons);
+    snprintf(text, size, "%d x %d spp, M=%d, %s photons, r %.3g to %.3g", result->passes, ppm->spp,
+             ppm->path.shadow_rays, photons, ppm->radius, result->radius);
 }
 
 /* Render the photon version, or exit as experiment_render does. */
@@ -237,8 +242,8 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
 
     double path_error = rmse_without_reference_noise(rows[0].rmse, reference);
     double photon_error = rmse_without_reference_noise(rows[1].rmse, reference);
-    printf("\nequal time: processor time %.1f s (path tracer) and %.1f s (photon map, %d "
-           "passes of %d photons, %.0f stored each); wall clock %.1f s and %.1f s\n",
+    printf("\nequal time: processor time %.1f s (path tracer) and %.1f s (photon map: passes %d, "
+           "photons per pass %d, stored per pass %.0f); wall clock %.1f s and %.1f s\n",
            path_cpu, photons.cpu_seconds, photons.passes, ppm.photons, photons.stored,
            rows[0].seconds, rows[1].seconds);
     printf("RMSE against the reference: %.4f and %.4f, ratio %.3f; without the reference's "

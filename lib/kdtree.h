@@ -1,5 +1,5 @@
-/* kdtree.h: a kd-tree over points in 3-D, for finding every point near a place
- * (chapter 8; Jensen, "Global illumination using photon maps", §4: the photon map).
+/* kdtree.h: a kd-tree over 3-D points, to find every point near a place (chapter 8).
+ * Jensen, "Global illumination using photon maps" (1996): the photon map.
  *
  * Introduced in chapter 8, where the points are where photons landed and the question
  * asked at every diffuse hit is "which photons lie within r of x?". Testing all N

@@ -1,6 +1,6 @@
-/* photon.h: shooting photons from the area lights and storing where they land: the
- * caustic photon map (chapter 8; the report's §5 and its reference [9], Jensen,
- * "Global illumination using photon maps", 1996, §3-4).
+/* photon.h: photons shot from the area lights, and the caustic photon map (chapter 8).
+ * The report's §5 and its reference [9]: Jensen, "Global illumination using photon
+ * maps" (1996).
  *
  * Introduced in chapter 8. The path tracer finds light that reached a diffuse surface
  * through mirrors or glass (paths L S+ D, in Heckbert's notation: light, one or more

@@ -1,5 +1,6 @@
-/* photon_estimate.h: the radiance a diffuse surface reflects, estimated from the
- * density of the photons near it (chapter 8; Jensen 1996, §4.2, eq. 6).
+/* photon_estimate.h: reflected radiance from the density of photons (chapter 8).
+ * Jensen, "Global illumination using photon maps" (1996): the radiance a diffuse
+ * surface reflects, estimated from the photons near it.
  *
  * Introduced in chapter 8. The photons within distance r of x carry the flux that fell
  * on the disk of area pi r^2 around x (the surface is locally flat), each from its own

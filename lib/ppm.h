@@ -1,17 +1,18 @@
-/* ppm.h: progressive photon mapping, the probabilistic kind (chapter 8; Knaus and
- * Zwicker, "Progressive photon mapping: a probabilistic approach", 2011).
+/* ppm.h: probabilistic progressive photon mapping (chapter 8).
+ * Knaus and Zwicker, "Progressive photon mapping: a probabilistic approach", 2011.
  *
  * Introduced in chapter 8. One caustic map with a fixed radius r is biased (the blur
  * of photon_estimate.h) however many passes are averaged: more photons lower the
  * variance, not the bias. Knaus and Zwicker make it consistent with independent
  * passes: pass i shoots a fresh photon map, renders the image with it (the path tracer
  * with caustics from the map, path.h, at spp camera samples per pixel) at radius
- *     r_i^2 = r_1^2 i^(alpha - 1),    0 < alpha < 1,
- * and the result is the average of the pass images. The radius shrinks slowly enough
+ *     r_i^2 = r_1^2 i^(alpha - 1),    0 < alpha < 1
+ * (alpha = 1 keeps the radius fixed: the biased method, for comparison), and the result
+ * is the average of the pass images. The radius shrinks slowly enough
  * that each pass's variance grows only as i^(1 - alpha), so the average's variance
  * still falls, as P^(-alpha) after P passes, while the bias falls as P^(alpha - 1).
- * Their analysis gives alpha = 2/3 as a good balance; the mean squared error then goes
- * to zero as P^(-2/3).
+ * The squared bias, P^(2 alpha - 2), and the variance, P^(-alpha), fall alike for
+ * alpha = 2/3, and the mean squared error then goes to zero as P^(-2/3).
  *
  * Each pass's image, photons and camera samples alike, uses its own seeds, derived from
  * the render's seed and the pass number; the image is the same for any thread count.

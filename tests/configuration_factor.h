@@ -1,6 +1,6 @@
-/* configuration_factor.h: the closed form for direct light from a rectangle, shared by
- * the tests of eq. 21 (test_area_light.c) and of the photon density estimate
- * (test_photon_estimate.c).
+/* configuration_factor.h: direct light from a rectangle, in closed form (chapter 3).
+ * Shared by the tests of eq. 21 (test_area_light.c, chapter 3) and of the photon
+ * density estimate (test_photon_estimate.c, chapter 8).
  *
  * The configuration factor from a point on a plane to a parallel a x b rectangle at
  * height h, the point right under one of its corners, is
