@@ -1,4 +1,5 @@
-/* path.c: the Monte Carlo path tracer (chapters 2-7). See path.h. */
+/* path.c: the Monte Carlo path tracer (chapters 2-7; caustics from photons, chapter 8).
+ * See path.h. */
 #include "path.h"
 
 #include <stdio.h>
