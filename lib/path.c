@@ -1,4 +1,5 @@
-/* path.c (chapter 2): the Monte Carlo path tracer. See path.h. */
+/* path.c (chapter 2): the Monte Carlo path tracer (caustics from photons: chapter 8).
+ * See path.h. */
 #include "path.h"
 
 #include <stdio.h>
@@ -17,11 +18,11 @@
 #include "mirror_light.h"
 #include "mis.h"
 #endif
+#if CHAPTER >= 8
+#include "photon_estimate.h"
+#endif
 
-/* Glass: pick reflection (probability R) or refraction for ray direction d hitting a
- * surface with normal n facing d's origin. Returns the new direction. */
-static Vec3 glass_scatter(Vec3 d, Vec3 n, int entering, double ior, const PathSettings *s,
-                          Rng *rng)
+Vec3 glass_scatter(Vec3 d, Vec3 n, int entering, double ior, const PathSettings *s, Rng *rng)
 {
     double n_i = entering ? 1.0 : ior, n_t = entering ? ior : 1.0;
     double cos_i = -vec3_dot(d, n);
@@ -69,10 +70,18 @@ static Vec3 direct_light(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Mate
 }
 #endif
 
+#if CHAPTER >= 8
+/* One path. With `caustics`, light reaching a diffuse hit through mirrors and glass
+ * comes from the photon map instead of from hitting the lamp (path.h). */
+static Vec3 trace_path(const Scene *scene, Ray ray, Rng *rng, const PathSettings *s,
+                       const CausticPathSettings *caustics, RayCounts *counts)
+{
+#else
 Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_pointer,
                    RayCounts *counts)
 {
     const PathSettings *s = settings_pointer;
+#endif
     Vec3 radiance = vec3(0, 0, 0), throughput = vec3(1, 1, 1);
     int add_emission = 1; /* camera ray, or after a specular bounce, or M = 0 */
 #if CHAPTER >= 7
@@ -117,6 +126,13 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
 #endif
                 radiance = vec3_add(radiance, vec3_mul(throughput, direct));
             }
+#if CHAPTER >= 8
+            if (caustics) {
+                Vec3 caustic = photon_estimate_radiance(caustics->caustics, caustics->radius,
+                                                        hit.point, n, wo, m);
+                radiance = vec3_add(radiance, vec3_mul(throughput, caustic));
+            }
+#endif
             add_emission = s->shadow_rays == 0;
 #else
             add_emission = 1;
@@ -152,15 +168,36 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
 #else
             add_emission = 1;
 #endif
+#if CHAPTER >= 8
+            /* After a diffuse bounce, light through mirrors is the caustic map's. */
+            add_emission = add_emission && !(caustics && diffuse_vertices > 0);
+#endif
         } else {
             direction = glass_scatter(ray.dir, n, front, m->ior, s, rng);
             add_emission = 1;
+#if CHAPTER >= 8
+            add_emission = !(caustics && diffuse_vertices > 0); /* and through glass */
+#endif
         }
         counts->bounce++;
         ray = ray_spawn(hit.point, n, direction, scene->scale);
     }
     return radiance;
 }
+
+#if CHAPTER >= 8
+Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings, RayCounts *counts)
+{
+    return trace_path(scene, ray, rng, settings, NULL, counts);
+}
+
+Vec3 path_radiance_caustics(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                            RayCounts *counts)
+{
+    const CausticPathSettings *caustics = settings;
+    return trace_path(scene, ray, rng, &caustics->path, caustics, counts);
+}
+#endif
 
 void path_describe(const PathSettings *s, char *text, int size)
 {

@@ -72,6 +72,42 @@ typedef struct {
 Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                    RayCounts *counts);
 
+/* Glass: pick reflection (probability R) or refraction for ray direction d hitting a
+ * surface with normal n facing d's origin (entering: from outside the glass). Returns
+ * the new direction. The photon tracer (photon.h) scatters at glass the same way. */
+Vec3 glass_scatter(Vec3 d, Vec3 n, int entering, double ior, const PathSettings *settings,
+                   Rng *rng);
+
+#if CHAPTER >= 8
+/* Chapter 8: the path tracer with the caustics from a photon map (photon.h).
+ * Light reaching a diffuse hit x splits by the path it took from the lamp:
+ *   L D         straight from the lamp: the shadow rays (M >= 1), or hitting it (M = 0);
+ *   L S+ D      through one or more mirror or glass bounces: the caustic map, whose
+ *               radiance estimate (photon_estimate.h) is added at every diffuse hit;
+ *   L ... D D   via another diffuse surface: the path continues and the same split is
+ *               made again at the next diffuse hit.
+ * So once a path has made a diffuse bounce, emission it then hits after mirror or glass
+ * bounces is no longer added: it is L S+ D light at that diffuse hit, which the map
+ * already counted. Emission seen from the camera directly or through mirrors and glass
+ * only (L S* E) is still added: the map never sees it. Each light path is thus counted
+ * by exactly one of the estimators (tests/test_caustic_path.c). The photon map knows no
+ * depth limit (photon.h bounds only its specular chains), so this equals the path
+ * tracer's expectation where max_depth is never reached, as with roulette and 64.
+ * The lamp's images in planar mirrors (mirror_light) must then be off: the caustic map
+ * holds that light too. */
+struct PhotonMap;
+
+typedef struct {
+    PathSettings path;
+    const struct PhotonMap *caustics; /* the caustic map (PHOTON_CAUSTIC) */
+    double radius;                    /* of its radiance estimate */
+} CausticPathSettings;
+
+/* An Estimator; settings points to a CausticPathSettings. */
+Vec3 path_radiance_caustics(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                            RayCounts *counts);
+#endif
+
 /* The settings as text for tables and captions, e.g. "M=1 rr=0.25 depth=16 schlick". */
 void path_describe(const PathSettings *settings, char *text, int size);
 

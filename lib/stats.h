@@ -26,4 +26,8 @@ static inline void ray_counts_add(RayCounts *sum, RayCounts c)
 /* Seconds on a monotonic clock since an arbitrary start: subtract two readings. */
 double stats_now(void);
 
+/* Seconds of processor time used by this process so far, all its threads together
+ * (chapter 8: a time budget that other programs sharing the machine do not eat into). */
+double stats_cpu_now(void);
+
 #endif

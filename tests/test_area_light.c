@@ -14,7 +14,8 @@
  * 2. Eq. 21 against a closed form: a point on the floor right under the corner of a
  *    parallel a x b rectangular light at height h. Its configuration factor is
  *        F = 1/(2 pi) [ A/sqrt(1+A^2) atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2) atan(A/sqrt(1+B^2)) ],
- *    A = a/h, B = b/h, so a Lambertian point there reflects L = rho Le F.
+ *    A = a/h, B = b/h, so a Lambertian point there reflects L = rho Le F
+ *    (configuration_factor.h, shared with the photon tests).
  *    The mean of many estimates must be within 4 standard errors of it, for M = 1 and
  *    M = 64 shadow rays; and M = 64 must have about 1/64 of the variance of M = 1.
  *    The same light cut into three triangles of unequal areas must give the same
@@ -30,6 +31,7 @@
 
 #include "area_light.h"
 #include "chi_square.h"
+#include "configuration_factor.h"
 
 #define GRID 8
 #define SAMPLES 400000
@@ -152,12 +154,6 @@ static void rectangle_light(Scene *scene, double a, double b, double h, int occl
     if (occluded)
         scene_add_sphere(scene, (Sphere){vec3(0, 0, 0.5 * h), 0.25 * h, diffuse});
     assert_int_equal(scene_prepare(scene), 0);
-}
-
-static double configuration_factor(double a, double b, double h)
-{
-    double A = a / h, B = b / h, sa = sqrt(1 + A * A), sb = sqrt(1 + B * B);
-    return (A / sa * atan(B / sa) + B / sb * atan(A / sb)) / (2.0 * PI);
 }
 
 /* Mean and variance of eq. 21's estimate at the origin (normal +z), M shadow rays. */

@@ -118,6 +118,9 @@ static void test_chapter6(void **state) { (void)state; smoke("ch06_russian_roule
 #if CHAPTER >= 7
 static void test_chapter7(void **state) { (void)state; smoke("ch07_final", FEW_SAMPLES); }
 #endif
+#if CHAPTER >= 8
+static void test_chapter8(void **state) { (void)state; smoke("ch08_photon_map", FEW_SAMPLES); }
+#endif
 
 int main(void)
 {
@@ -141,6 +144,9 @@ int main(void)
 #endif
 #if CHAPTER >= 7
         cmocka_unit_test(test_chapter7),
+#endif
+#if CHAPTER >= 8
+        cmocka_unit_test(test_chapter8),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,0 +1,204 @@
+/* test_kdtree.c (chapter 8): Tests of the kd-tree (lib/kdtree.c, chapter 8): every fixed-radius query returns
+ * exactly the points that testing every point returns, each once.
+ *
+ * The hard cases are ties, so the point sets are built to have them: points on an
+ * integer grid (many equal coordinates on every axis, and many points at exactly the
+ * query radius, since integer distances are exact in doubles), many copies of the same
+ * point, all points on one plane (as photons on a floor are), a cluster with an empty
+ * hole queried inside the hole, queries far from every point, and the empty tree.
+ * Random clouds with random radii cover the rest.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "kdtree.h"
+#include "rng.h"
+
+#define MAX_POINTS 4000
+
+typedef struct {
+    int found[MAX_POINTS]; /* how many times each point was reported */
+    int count;
+    const Vec3 *points;
+    Vec3 center;
+} Found;
+
+static void record(int index, double distance2, void *context)
+{
+    Found *f = context;
+    Vec3 d = vec3_sub(f->points[index], f->center);
+    assert_true(distance2 == vec3_dot(d, d)); /* the distance reported is the point's */
+    f->found[index]++;
+    f->count++;
+}
+
+/* The tree's answer equals brute force's; returns how many points were found. */
+static int check_query(const KdTree *tree, const Vec3 *points, int count, Vec3 center, double radius)
+{
+    static Found f;
+    memset(f.found, 0, sizeof f.found);
+    f.count = 0;
+    f.points = points;
+    f.center = center;
+    kdtree_query_radius(tree, center, radius, record, &f);
+    int expected = 0;
+    for (int i = 0; i < count; i++) {
+        Vec3 d = vec3_sub(points[i], center);
+        int inside = vec3_dot(d, d) <= radius * radius;
+        expected += inside;
+        if (f.found[i] != inside)
+            fail_msg("point %d (%g %g %g), query (%g %g %g) r=%g: found %d times, expected %d", i,
+                     points[i].x, points[i].y, points[i].z, center.x, center.y, center.z, radius,
+                     f.found[i], inside);
+    }
+    assert_int_equal(f.count, expected);
+    return expected;
+}
+
+static void build(KdTree *tree, const Vec3 *points, int count)
+{
+    assert_int_equal(kdtree_build(tree, points, count), 0);
+    assert_int_equal(tree->count, count);
+}
+
+/* A 10 x 10 x 10 integer grid queried at grid points and half-integers with integer
+ * radii: every query has points at exactly its radius. */
+static void test_grid_ties_at_the_radius(void **state)
+{
+    (void)state;
+    static Vec3 points[1000];
+    int n = 0;
+    for (int x = 0; x < 10; x++)
+        for (int y = 0; y < 10; y++)
+            for (int z = 0; z < 10; z++)
+                points[n++] = vec3(x, y, z);
+    KdTree tree;
+    build(&tree, points, n);
+    int at_radius = 0;
+    for (int i = 0; i < 300; i++) {
+        Rng rng = rng_for_sample(3, 0, (uint64_t)i);
+        Vec3 c = vec3((int)(10 * rng_uniform(&rng)), (int)(10 * rng_uniform(&rng)),
+                      (int)(10 * rng_uniform(&rng)));
+        if (i % 2)
+            c = vec3_add(c, vec3(0.5, 0.5, 0.0));
+        double radius = 1 + (int)(4 * rng_uniform(&rng));
+        check_query(&tree, points, n, c, radius);
+        for (int k = 0; k < n; k++) {
+            Vec3 d = vec3_sub(points[k], c);
+            at_radius += vec3_dot(d, d) == radius * radius;
+        }
+    }
+    print_message("    %d point-query pairs at exactly the radius\n", at_radius);
+    assert_true(at_radius > 1000);
+    kdtree_free(&tree);
+}
+
+/* Many copies of a few points: the median selection must cope with equal keys. */
+static void test_duplicates(void **state)
+{
+    (void)state;
+    static Vec3 points[3000];
+    for (int i = 0; i < 3000; i++)
+        points[i] = i % 3 == 0 ? vec3(1, 2, 3) : i % 3 == 1 ? vec3(1, 2, 4) : vec3(0, 0, 0);
+    KdTree tree;
+    build(&tree, points, 3000);
+    assert_int_equal(check_query(&tree, points, 3000, vec3(1, 2, 3), 0.0), 1000); /* radius 0 */
+    assert_int_equal(check_query(&tree, points, 3000, vec3(1, 2, 3.5), 0.5), 2000);
+    assert_int_equal(check_query(&tree, points, 3000, vec3(1, 2, 3.5), 0.4999), 0);
+    assert_int_equal(check_query(&tree, points, 3000, vec3(0, 0, 0), 10.0), 3000);
+    kdtree_free(&tree);
+    /* All points the same. */
+    for (int i = 0; i < 3000; i++)
+        points[i] = vec3(5, 5, 5);
+    build(&tree, points, 3000);
+    assert_int_equal(check_query(&tree, points, 3000, vec3(5, 5, 6), 1.0), 3000);
+    assert_int_equal(check_query(&tree, points, 3000, vec3(5, 5, 6), 0.5), 0);
+    kdtree_free(&tree);
+}
+
+/* Points on the plane z = -5 (like photons on a floor), queried from the plane, above
+ * it and below it. */
+static void test_points_on_a_plane(void **state)
+{
+    (void)state;
+    static Vec3 points[MAX_POINTS];
+    for (int i = 0; i < MAX_POINTS; i++) {
+        Rng rng = rng_for_sample(5, 0, (uint64_t)i);
+        points[i] = vec3(10 * rng_uniform(&rng), 12 * rng_uniform(&rng) - 6, -5);
+    }
+    KdTree tree;
+    build(&tree, points, MAX_POINTS);
+    for (int i = 0; i < 200; i++) {
+        Rng rng = rng_for_sample(6, 0, (uint64_t)i);
+        Vec3 c = vec3(10 * rng_uniform(&rng), 12 * rng_uniform(&rng) - 6, -5 + (i % 3 - 1) * 0.1);
+        check_query(&tree, points, MAX_POINTS, c, 0.05 + rng_uniform(&rng));
+    }
+    kdtree_free(&tree);
+}
+
+/* A cloud in a shell 2 <= |p| <= 3: queries inside the hole find nothing, queries far
+ * away find nothing, and the empty tree finds nothing. */
+static void test_empty_regions(void **state)
+{
+    (void)state;
+    static Vec3 points[2000];
+    for (int i = 0; i < 2000; i++) {
+        Rng rng = rng_for_sample(7, 0, (uint64_t)i);
+        double z = 2 * rng_uniform(&rng) - 1, phi = 2 * PI * rng_uniform(&rng);
+        double s = sqrt(1 - z * z), r = 2 + rng_uniform(&rng);
+        points[i] = vec3(r * s * cos(phi), r * s * sin(phi), r * z);
+    }
+    KdTree tree;
+    build(&tree, points, 2000);
+    assert_int_equal(check_query(&tree, points, 2000, vec3(0, 0, 0), 1.99), 0);
+    assert_int_equal(check_query(&tree, points, 2000, vec3(0.3, -0.2, 0.1), 1.5), 0);
+    assert_int_equal(check_query(&tree, points, 2000, vec3(100, 0, 0), 50), 0);
+    assert_true(check_query(&tree, points, 2000, vec3(2.5, 0, 0), 0.5) > 0);
+    kdtree_free(&tree);
+
+    build(&tree, points, 0);
+    assert_int_equal(check_query(&tree, points, 0, vec3(0, 0, 0), 1e9), 0);
+    kdtree_free(&tree);
+    build(&tree, points, 1);
+    assert_int_equal(check_query(&tree, points, 1, points[0], 0.0), 1);
+    kdtree_free(&tree);
+}
+
+/* Random clouds of every size up to MAX_POINTS, random centres and radii. */
+static void test_random_clouds(void **state)
+{
+    (void)state;
+    static Vec3 points[MAX_POINTS];
+    for (int cloud = 0; cloud < 20; cloud++) {
+        Rng rng = rng_for_sample(8, 1, (uint64_t)cloud);
+        int n = 1 + (int)(MAX_POINTS * rng_uniform(&rng));
+        for (int i = 0; i < n; i++)
+            points[i] = vec3(rng_uniform(&rng), 3 * rng_uniform(&rng), 0.2 * rng_uniform(&rng));
+        KdTree tree;
+        build(&tree, points, n);
+        for (int i = 0; i < 50; i++) {
+            Vec3 c = vec3(1.2 * rng_uniform(&rng) - 0.1, 3.2 * rng_uniform(&rng) - 0.1,
+                          0.4 * rng_uniform(&rng) - 0.1);
+            check_query(&tree, points, n, c, 0.3 * rng_uniform(&rng));
+        }
+        kdtree_free(&tree);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_grid_ties_at_the_radius),
+        cmocka_unit_test(test_duplicates),
+        cmocka_unit_test(test_points_on_a_plane),
+        cmocka_unit_test(test_empty_regions),
+        cmocka_unit_test(test_random_clouds),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

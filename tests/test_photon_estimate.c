@@ -1,0 +1,174 @@
+/* test_photon_estimate.c (chapter 8): Tests of the photon density estimate (lib/photon_estimate.c, chapter 8), against
+ * the closed form of direct light from a rectangle (configuration_factor.h).
+ *
+ * A 2 x 1 lamp of radiance Le = 2 faces down from height 1.5 over a large floor. A map
+ * of direct photons (PHOTON_DIRECT: stored where they first land) has, in a disk of
+ * radius r around x, the flux that fell on that disk; for a Lambertian floor of
+ * reflectance rho the estimate of photon_estimate.h is then rho/pi times the mean
+ * irradiance over the disk. The closed form gives the irradiance at every point,
+ * pi Le F(x), so the estimate's exact expectation is rho Le times F averaged over the
+ * disk (computed here by quadrature), and its bias against rho Le F(x) (the box
+ * kernel's blur) is known too: it is printed, and within 1.2% at these points.
+ *
+ * 1. Lambert, at 12 points under and beside the lamp (disks apart, so nearly
+ *    independent): z = (estimate - expectation) / sigma, sigma from the binomial count
+ *    of photons in the disk, each |z| under the Sidak-corrected level for 12 tests at
+ *    a family-wise 0.1% (|z| < 3.95), and every estimate within its kernel bias plus
+ *    4 sigma of the closed form at the point itself.
+ * 2. Oren-Nayar (sigma = 0.5) seen at a grazing angle: the BRDF now depends on each
+ *    photon's direction. Its expectation is the direct light there (eq. 21 with many
+ *    shadow rays, area_light.c) times the same blur as Lambert's at that point; a
+ *    z-test at the 0.1% level.
+ * Planted bugs they reject: the estimate divided by r^2 instead of pi r^2 (z = +161 at
+ * the first point); photons emitted uniformly over the hemisphere instead of by the
+ * cosine (z = -33); Lambert's BRDF used for every diffuse surface (Oren-Nayar z = +17).
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include "area_light.h"
+#include "configuration_factor.h"
+#include "photon_estimate.h"
+
+#define LAMP_A 2.0
+#define LAMP_B 1.0
+#define LAMP_H 1.5
+#define LE 2.0
+#define PHOTONS 400000
+#define RADIUS 0.2
+
+static void lamp_over_floor(Scene *scene, Material floor)
+{
+    scene_init(scene);
+    Material lamp = {"lamp", MATERIAL_LIGHT, vec3(0, 0, 0), vec3(LE, LE, LE), 0.0, 1.0};
+    int light = scene_add_material(scene, lamp), diffuse = scene_add_material(scene, floor);
+    Vec3 p0 = vec3(0, 0, LAMP_H), p1 = vec3(0, LAMP_B, LAMP_H), p2 = vec3(LAMP_A, LAMP_B, LAMP_H),
+         p3 = vec3(LAMP_A, 0, LAMP_H);
+    scene_add_triangle(scene, triangle_make(p0, p1, p2, light)); /* facing down */
+    scene_add_triangle(scene, triangle_make(p0, p2, p3, light));
+    Vec3 f0 = vec3(-30, -30, 0), f1 = vec3(30, -30, 0), f2 = vec3(30, 30, 0), f3 = vec3(-30, 30, 0);
+    scene_add_triangle(scene, triangle_make(f0, f1, f2, diffuse));
+    scene_add_triangle(scene, triangle_make(f0, f2, f3, diffuse));
+    assert_int_equal(scene_prepare(scene), 0);
+}
+
+static void direct_map(const Scene *scene, PhotonMap *map)
+{
+    RayCounts counts = {0, 0, 0};
+    PhotonMapSettings settings = {PHOTONS, PHOTON_DIRECT, FRESNEL_EXACT, 77, 0};
+    assert_int_equal(photon_map_build(map, scene, &settings, &counts), 0);
+}
+
+/* F averaged over the disk of radius r around (x, y): midpoint rule in polar
+ * coordinates (error far below the test's noise). */
+static double disk_average_factor(double x, double y, double r)
+{
+    enum { RINGS = 40, SECTORS = 64 };
+    double sum = 0.0;
+    for (int i = 0; i < RINGS; i++) {
+        double rho = r * (i + 0.5) / RINGS;
+        for (int j = 0; j < SECTORS; j++) {
+            double phi = 2 * PI * (j + 0.5) / SECTORS;
+            sum += rho * configuration_factor_at(x + rho * cos(phi), y + rho * sin(phi), LAMP_A,
+                                                 LAMP_B, LAMP_H);
+        }
+    }
+    return sum * (r / RINGS) * (2 * PI / SECTORS) / (PI * r * r);
+}
+
+/* The standard deviation of an estimate of mean `mean` around (x, y): the photons in
+ * the disk are binomial, k of N with mean k_mean = N F_disk pi r^2 / A (the disk's
+ * flux pi Le F_disk pi r^2 over a photon's pi Le A / N), so the relative standard
+ * deviation is sqrt((1 - p) / k_mean), p = k_mean / N. (Oren-Nayar's weights vary a
+ * little from photon to photon, which this neglects.) */
+static double estimate_sigma(double mean, double x, double y)
+{
+    double k_mean = PHOTONS * disk_average_factor(x, y, RADIUS) * PI * RADIUS * RADIUS /
+                    (LAMP_A * LAMP_B);
+    return mean * sqrt((1.0 - k_mean / PHOTONS) / k_mean);
+}
+
+static void test_lambert_matches_configuration_factor(void **state)
+{
+    (void)state;
+    const double rho = 0.5;
+    Material white = {"white", MATERIAL_LAMBERT, vec3(rho, rho, rho), vec3(0, 0, 0), 0.0, 1.0};
+    Scene scene;
+    lamp_over_floor(&scene, white);
+    PhotonMap map;
+    direct_map(&scene, &map);
+    const double points[12][2] = {{1.0, 0.5}, {0.3, 0.2}, {1.7, 0.8}, {0.5, 0.8},
+                                  {1.5, 0.2}, {1.0, -0.6}, {-0.6, 0.5}, {2.6, 0.5},
+                                  {1.0, 1.6}, {-0.4, -0.4}, {2.4, 1.3}, {1.8, -0.5}};
+    const double z_limit = 3.95; /* two-sided 1 - (1 - 0.001)^(1/12) */
+    double largest_bias = 0.0;
+    for (int i = 0; i < 12; i++) {
+        double x = points[i][0], y = points[i][1];
+        Vec3 up = vec3(0, 0, 1), wo = vec3_normalize(vec3(0.2, -0.3, 1.0));
+        double estimate = photon_estimate_radiance(&map, RADIUS, vec3(x, y, 0), up, wo, &white).x;
+        double at_point = rho * LE * configuration_factor_at(x, y, LAMP_A, LAMP_B, LAMP_H);
+        double expected = rho * LE * disk_average_factor(x, y, RADIUS);
+        double sigma = estimate_sigma(expected, x, y), z = (estimate - expected) / sigma;
+        double bias = expected - at_point;
+        largest_bias = fmax(largest_bias, fabs(bias) / at_point);
+        print_message("    (%4.1f, %4.1f): %.5f, disk mean %.5f +- %.5f (z %+.2f), at the point "
+                      "%.5f (kernel bias %+.2f%%)\n", x, y, estimate, expected, sigma, z, at_point,
+                      100 * bias / at_point);
+        assert_true(fabs(z) < z_limit);
+        assert_true(fabs(estimate - at_point) < fabs(bias) + 4 * sigma);
+        assert_true(sigma < 0.025 * expected); /* power to see a few percent */
+    }
+    assert_true(largest_bias < 0.012);
+    photon_map_free(&map);
+    scene_free(&scene);
+}
+
+static void test_oren_nayar_matches_shadow_rays(void **state)
+{
+    (void)state;
+    Material rough = {"rough", MATERIAL_OREN_NAYAR, vec3(0.6, 0.6, 0.6), vec3(0, 0, 0), 0.5, 1.0};
+    Scene scene;
+    lamp_over_floor(&scene, rough);
+    PhotonMap map;
+    direct_map(&scene, &map);
+    const double x = 0.4, y = 0.3;
+    Vec3 point = vec3(x, y, 0), up = vec3(0, 0, 1);
+    Vec3 wo = vec3_normalize(vec3(-2.0, -1.0, 0.5)); /* 77 degrees from the normal */
+    double estimate = photon_estimate_radiance(&map, RADIUS, point, up, wo, &rough).x;
+    /* The direct light at the point, by eq. 21, and the blur of the kernel there. */
+    double sum = 0.0, sum_squares = 0.0;
+    const int n = 20000;
+    RayCounts counts = {0, 0, 0};
+    for (int i = 0; i < n; i++) {
+        Rng rng = rng_for_sample(41, 0, (uint64_t)i);
+        double v = area_light_direct(&scene, point, up, wo, &rough, 16, &rng, &counts).x;
+        sum += v;
+        sum_squares += v * v;
+    }
+    double direct = sum / n, direct_error = sqrt((sum_squares / n - direct * direct) / (n - 1));
+    double blur = disk_average_factor(x, y, RADIUS) / configuration_factor_at(x, y, LAMP_A, LAMP_B, LAMP_H);
+    double expected = direct * blur;
+    /* The photons' noise and the shadow rays' own. */
+    double sigma = sqrt(pow(estimate_sigma(expected, x, y), 2) + pow(direct_error * blur, 2));
+    double z = (estimate - expected) / sigma;
+    print_message("    Oren-Nayar: %.5f, shadow rays %.5f +- %.5f, blur %.4f: expected %.5f +- %.5f "
+                  "(z %+.2f)\n", estimate, direct, direct_error, blur, expected, sigma, z);
+    assert_true(fabs(z) < 3.29); /* two-sided 0.1% */
+    assert_true(sigma < 0.03 * expected);
+    /* And not what a Lambert surface of the same reflectance would give. */
+    assert_true(fabs(0.6 * LE * disk_average_factor(x, y, RADIUS) - expected) > 5 * sigma);
+    photon_map_free(&map);
+    scene_free(&scene);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_lambert_matches_configuration_factor),
+        cmocka_unit_test(test_oren_nayar_matches_shadow_rays),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
