@@ -445,6 +445,29 @@ static void test_bounded_roulette_agrees_on_the_room(void **state)
 #endif
 
 #if CHAPTER >= 7
+/* A tinted mirror (reflectance 0.5, 0.4, 0.3) in the mirrored box, depth limit 3: no
+ * closed form, but shadow rays alone and with the mirror's images must agree (each
+ * within its standard error; the box has little noise, so this sees 0.2%). With depth
+ * 3 only a diffuse hit on the first segment may use the images (two more segments). */
+static void test_mirror_light_agrees_at_a_depth_limit(void **state)
+{
+    (void)state;
+    Scene scene;
+    furnace_box_mirrored(&scene);
+    scene.materials[scene.material_count - 1].reflectance = vec3(0.5, 0.4, 0.3);
+    assert_int_equal(scene_prepare(&scene), 0);
+    PathSettings plain = {.max_depth = 3, .shadow_rays = 1};
+    PathSettings image = {.max_depth = 3, .shadow_rays = 1, .mirror_light = 3};
+    double mean_plain, error_plain, mean_image, error_image;
+    estimate(&scene, &plain, vec3(0.1, -0.2, 0.3), 100, &mean_plain, &error_plain);
+    estimate(&scene, &image, vec3(0.1, -0.2, 0.3), 101, &mean_image, &error_image);
+    print_message("    shadow rays %.5f +- %.5f, with the images %.5f +- %.5f\n", mean_plain,
+                  error_plain, mean_image, error_image);
+    assert_true(fabs(mean_plain - mean_image) <
+                TOLERANCE_SIGMAS * sqrt(error_plain * error_plain + error_image * error_image));
+    scene_free(&scene);
+}
+
 /* On the room: multiple importance sampling agrees with shadow rays alone. */
 static void test_mis_agrees_on_the_room(void **state)
 {
@@ -498,6 +521,7 @@ int main(void)
 #if CHAPTER >= 7
         cmocka_unit_test(test_furnace_chapter7_mis),
         cmocka_unit_test(test_furnace_chapter7_mirror_light),
+        cmocka_unit_test(test_mirror_light_agrees_at_a_depth_limit),
         cmocka_unit_test(test_mis_agrees_on_the_room),
         cmocka_unit_test(test_mirror_light_agrees_on_the_room),
 #endif
