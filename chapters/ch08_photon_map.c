@@ -129,13 +129,6 @@ static Vec3 channel_means(const Image *image)
     return vec3(sum[0] / pixels, sum[1] / pixels, sum[2] / pixels);
 }
 
-/* sqrt(MSE - the reference's variance): the error with the reference's noise taken out
- * (0 where the reference's noise accounts for all of it). */
-static double rmse_without_reference_noise(double rmse, const Reference *reference)
-{
-    return sqrt(fmax(rmse * rmse - reference->noise * reference->noise, 0.0));
-}
-
 /* Where the caustic of the first glass sphere is seen, in pixels: a ball lens focuses
  * the lamp's light on the line from the lamp through its centre, so the crop is centred
  * where that line, beyond the sphere, meets a surface. Returns 0 if the scene has no
@@ -245,16 +238,18 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
     experiment_write_figure(options, "ch08_equal_time", panels, caption_list, 2, PANEL_EXPOSURE);
     experiment_write_table(options, "ch08_equal_time", rows, 2);
 
-    double path_error = rmse_without_reference_noise(rows[0].rmse, reference);
-    double photon_error = rmse_without_reference_noise(rows[1].rmse, reference);
+    /* The rows' RMSE has the reference's variance removed (measure.h); the raw one too. */
+    double raw[2], unused;
+    measure_error(&traced.image, &reference->image, &raw[0], &unused);
+    measure_error(&photons.render.image, &reference->image, &raw[1], &unused);
     printf("\nequal time: processor time %.1f s (path tracer) and %.1f s (photon map: passes %d, "
            "photons per pass %d, stored per pass %.0f); wall clock %.1f s and %.1f s\n",
            path_cpu, photons.cpu_seconds, photons.passes, ppm.photons, photons.stored,
            rows[0].seconds, rows[1].seconds);
     printf("RMSE against the reference: %.4f and %.4f, ratio %.3f; without the reference's "
-           "own noise (%.4f): %.4f and %.4f, ratio %.3f\n", rows[0].rmse, rows[1].rmse,
-           rows[1].rmse / rows[0].rmse, reference->noise, path_error, photon_error,
-           photon_error / path_error);
+           "own variance (its noise %.4f): %.4f and %.4f, ratio %.3f\n", raw[0], raw[1],
+           raw[1] / raw[0], reference->noise, rows[0].rmse, rows[1].rmse,
+           rows[1].rmse / rows[0].rmse);
     Vec3 ref_mean = channel_means(&reference->image), mean = channel_means(&photons.render.image);
     printf("image mean per channel, photon map / reference: %.4f %.4f %.4f\n",
            mean.x / ref_mean.x, mean.y / ref_mean.y, mean.z / ref_mean.z);
