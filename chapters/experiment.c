@@ -21,6 +21,14 @@
 static char *scene_text;
 static size_t scene_length;
 
+/* When the program started its work, for the total time it prints at its end. */
+static double start_time;
+
+static void print_total_time(void)
+{
+    printf("%s: total time %.1f s\n", cli_program, stats_now() - start_time);
+}
+
 static void load_font(Font *font)
 {
     char error[4400];
@@ -83,6 +91,7 @@ static void check_output_directory(const Options *options)
 void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
                       Options *options, Scene *scene)
 {
+    start_time = stats_now();
     cli_parse(argc, argv, info, options);
     render_install_interrupt(); /* from the start: temporary files are removed on a signal */
     check_output_directory(options);
@@ -107,6 +116,7 @@ void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed 
                         "%s would render it as Lambert", scene->source,
                      scene->materials[i].name, cli_program);
 #endif
+    atexit(print_total_time); /* once the scene is read: from here on, the time is the work */
 }
 
 void experiment_image_size(const Options *options, const Scene *scene, int *width, int *height)

@@ -42,7 +42,7 @@ typedef enum { NEEDS_POINT_LIGHT, NEEDS_AREA_LIGHT } LightNeed;
  * with status 2 and the reader's message. Also an error: a scene without the kind of
  * light the chapter needs, or with a material this chapter does not have yet. Without
  * the figures' font, exit with status 1 (before any rendering), as
- * experiment_write_figure would. */
+ * experiment_write_figure would. At its exit the program then prints its total time. */
 void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
                       Options *options, Scene *scene);
 
