@@ -2,6 +2,7 @@
  * See path.h. */
 #include "path.h"
 
+#include <stdarg.h>
 #include <stdio.h>
 
 #include "diffuse.h"
@@ -199,28 +200,39 @@ Vec3 path_radiance_caustics(const Scene *scene, Ray ray, Rng *rng, const void *s
 }
 #endif
 
+/* Append printf-style text at text[*used], never past text[size - 1]. */
+static void append(char *text, int size, int *used, const char *format, ...)
+{
+    if (*used >= size - 1)
+        return;
+    va_list args;
+    va_start(args, format);
+    int n = vsnprintf(text + *used, (size_t)(size - *used), format, args);
+    va_end(args);
+    *used = n < 0 ? size : *used + n;
+}
+
 void path_describe(const PathSettings *s, char *text, int size)
 {
-    int used = snprintf(text, (size_t)size, "depth=%d", s->max_depth);
+    int used = 0;
+    text[0] = '\0';
+    append(text, size, &used, "depth=%d", s->max_depth);
 #if CHAPTER >= 3
-    used += snprintf(text + used, (size_t)(size - used), " M=%d", s->shadow_rays);
+    append(text, size, &used, " M=%d", s->shadow_rays);
 #endif
 #if CHAPTER >= 4
-    used += snprintf(text + used, (size_t)(size - used), " %s",
-                     s->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
+    append(text, size, &used, " %s", s->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
 #endif
 #if CHAPTER >= 6
     if (s->rr_throughput > 0)
-        used += snprintf(text + used, (size_t)(size - used), " rr=throughput@%d", s->rr_throughput);
+        append(text, size, &used, " rr=throughput@%d", s->rr_throughput);
     else
-        used += snprintf(text + used, (size_t)(size - used), " rr=%g",
-                         s->rr_survival > 0.0 ? s->rr_survival : 1.0);
+        append(text, size, &used, " rr=%g", s->rr_survival > 0.0 ? s->rr_survival : 1.0);
 #endif
 #if CHAPTER >= 7
     if (s->mis)
-        used += snprintf(text + used, (size_t)(size - used), " mis");
+        append(text, size, &used, " mis");
     if (s->mirror_light > 0)
-        used += snprintf(text + used, (size_t)(size - used), " mirror-light@%d", s->mirror_light);
+        append(text, size, &used, " mirror-light@%d", s->mirror_light);
 #endif
-    (void)used;
 }

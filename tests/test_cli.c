@@ -24,17 +24,23 @@
 static char program[512];
 static char out_dir[] = "/tmp/test_cli_XXXXXX";
 
-/* Run `program ARGS` with stdout and stderr captured; returns the exit status. */
-static int run(const char *args, char *output, size_t size)
+/* Run a shell command with its standard output captured; returns the exit status. */
+static int capture(const char *command, char *output, size_t size)
 {
-    char command[2048];
-    snprintf(command, sizeof command, "%s --quiet --out %s/figures %s 2>&1", program, out_dir, args);
     FILE *pipe = popen(command, "r");
     assert_non_null(pipe);
     size_t n = fread(output, 1, size - 1, pipe);
     output[n] = '\0';
     int status = pclose(pipe);
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/* Run `program ARGS` with stdout and stderr captured; returns the exit status. */
+static int run(const char *args, char *output, size_t size)
+{
+    char command[2048];
+    snprintf(command, sizeof command, "%s --quiet --out %s/figures %s 2>&1", program, out_dir, args);
+    return capture(command, output, size);
 }
 
 static int figures_written(void)
@@ -113,13 +119,7 @@ static void test_standard_output_full(void **state)
     char command[1200], message[512];
     snprintf(command, sizeof command, "%s --quiet --size 8 --out %s/full 2>&1 >/dev/full",
              program, out_dir);
-    FILE *pipe = popen(command, "r");
-    assert_non_null(pipe);
-    size_t n = fread(message, 1, sizeof message - 1, pipe);
-    message[n] = '\0';
-    int status = pclose(pipe);
-    assert_true(WIFEXITED(status));
-    assert_int_equal(WEXITSTATUS(status), 1);
+    assert_int_equal(capture(command, message, sizeof message), 1);
     assert_non_null(strstr(message, "cannot write to standard output"));
 }
 
@@ -224,12 +224,7 @@ static int run_chapter2(const char *scene_command, const char *scene, char *outp
     snprintf(command, sizeof command,
              "%s timeout 60 %s/ch02_monte_carlo --quiet --size 16 --spp 1 --reference-spp 2 "
              "--scene %s --out %s/ch02 2>&1", scene_command, directory, scene, out_dir);
-    FILE *pipe = popen(command, "r");
-    assert_non_null(pipe);
-    size_t n = fread(output, 1, size - 1, pipe);
-    output[n] = '\0';
-    int status = pclose(pipe);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return capture(command, output, size);
 }
 
 /* The room with a comment that makes its bytes unlike any other run's. */
