@@ -2,10 +2,11 @@
  * Table 1).
  *
  * New concepts (lib/): bvh (the bounding volume hierarchy that every chapter's ray
- * queries already go through), plot (the convergence plot), and three ways to spend
+ * queries already go through), plot (the convergence plot), and four ways to spend
  * the samples where the error is: mis (multiple importance sampling of the lamps),
- * mirror_light (the lamp's image in the mirror wall as a light of its own) and, from
- * chapter 6, roulette with bounded weights. Multithreading (render.c, --threads) is
+ * mirror_light (the lamp's image in the mirror wall as a light of its own), sobol
+ * (stratified pairs of numbers across a pixel's samples) and, from chapter 6, roulette
+ * with bounded weights. Multithreading (render.c, --threads) is
  * what the report's discussion asks for first: its final image took 311 minutes on one
  * thread.
  *
@@ -13,10 +14,12 @@
  *   - Figure 7: the room with everything on (sub-pixels, shadow rays, glass with
  *     Fresnel reflectance, Russian roulette; Oren-Nayar where a scene uses it), and
  *     with the levers below: one shadow ray, bounded-weight roulette (unless --rr is
- *     given) and the mirror's image of the lamp at every diffuse hit;
+ *     given), the mirror's image of the lamp at every diffuse hit, and the stratified
+ *     pairs of sobol.h (--strata off: independent numbers);
  *   - the levers, one by one, at equal samples on a quarter-size image: the report's
  *     estimator of this chapter's old default (M=4, alpha=0.75), then M=1, bounded
- *     weights, mis and the mirror light, each with its time, error and efficiency.
+ *     weights, mis, the mirror light and the stratified pairs, each with its time,
+ *     error and efficiency.
  *     Where the error is (measured per path): in the room most of it is light found
  *     only by hitting the lamp after a mirror or the glass (caustics), the mirror
  *     wall's share the largest; shadow rays already find the lamp directly well, so
@@ -88,8 +91,9 @@ static TableRow render_path(const Options *options, const Scene *scene, const Re
     char description[128], settings_text[192];
     path_describe(path, description, sizeof description);
     snprintf(settings_text, sizeof settings_text, "%d spp, %s%s", spp, description, note);
-    return experiment_path_row(options, scene, path, spp, PIXEL_SUBPIXELS, name, settings_text,
-                               reference, image);
+    PixelSampling sampling = options->strata ? PIXEL_STRATIFIED : PIXEL_SUBPIXELS;
+    return experiment_path_row(options, scene, path, spp, sampling, name, settings_text, reference,
+                               image);
 }
 
 /* One of the report's settings (M shadow rays, constant alpha) as a table row. */
@@ -123,11 +127,15 @@ static void final_image(const Options *options, const Scene *scene, const Refere
 {
     Image image;
     PathSettings path = final_estimator(options);
-    TableRow row = render_path(options, scene, reference, &path, options->spp, "ch07_figure7", "",
-                               &image);
+    TableRow row = render_path(options, scene, reference, &path, options->spp, "ch07_figure7",
+                               options->strata ? " strata" : "", &image);
     char caption[256];
-    experiment_caption(&row, "Figure 7: final image, with chapter 7's levers (bounded-weight"
-                       " roulette, the mirror's image of the lamp)", caption, sizeof caption);
+    experiment_caption(&row, options->strata
+                                 ? "Figure 7: final image, with chapter 7's levers (bounded-weight"
+                                   " roulette, the mirror's image of the lamp, stratified pairs)"
+                                 : "Figure 7: final image, with chapter 7's levers (bounded-weight"
+                                   " roulette, the mirror's image of the lamp)",
+                       caption, sizeof caption);
     const char *captions[] = {caption};
     experiment_write_figure(options, "ch07_figure7_captioned", &image, captions, 1, PANEL_EXPOSURE);
     experiment_write_table(options, "ch07_figure7", &row, 1);
@@ -160,15 +168,20 @@ static void table1(const Options *options, const Scene *scene, const Reference *
  * reference: each row adds one to the row before, from the report's estimator of
  * this chapter's old default; the last row is the final image's estimator. */
 #define LEVER_SPP 16
+#define LEVER_STEPS 7
 static void levers(const Options *options, const Scene *scene)
 {
-    Options small = *options;
+    Options small = *options, stratified;
     small.size = cli_quarter(options->size, 16);
+    small.strata = 0;
+    stratified = small;
+    stratified.strata = 1;
     Reference reference;
     reference_for(&small, scene, &reference);
-    PathSettings steps[6];
-    const char *names[6] = {"report: M=4, alpha=0.75", "M=1", "+ bounded weights", "+ mis",
-                            "+ mirror light", "final: without mis"};
+    PathSettings steps[LEVER_STEPS];
+    const char *names[LEVER_STEPS] = {"report: M=4, alpha=0.75", "M=1", "+ bounded weights",
+                                      "+ mis", "+ mirror light", "without mis",
+                                      "final: + stratified pairs"};
     steps[0] = (PathSettings){.max_depth = small.depth, .shadow_rays = 4, .fresnel = small.fresnel,
                               .rr_survival = 0.75};
     steps[1] = steps[0];
@@ -181,14 +194,20 @@ static void levers(const Options *options, const Scene *scene)
     steps[4].mirror_light = small.depth;
     steps[5] = steps[4];
     steps[5].mis = 0;
-    TableRow rows[6];
-    for (int i = 0; i < 6; i++)
-        rows[i] = render_path(&small, scene, &reference, &steps[i], LEVER_SPP, names[i], "", NULL);
+    steps[6] = steps[5];
+    TableRow rows[LEVER_STEPS];
+    for (int i = 0; i < LEVER_STEPS; i++) {
+        int last = i == LEVER_STEPS - 1;
+        rows[i] = render_path(last ? &stratified : &small, scene, &reference, &steps[i], LEVER_SPP,
+                              names[i], last ? " strata" : "", NULL);
+    }
     printf("\nthe levers at %d pixels wide, %d spp each (efficiency = 1 / (rel_mse * seconds)):\n",
            small.size, LEVER_SPP);
-    experiment_write_table(options, "ch07_levers", rows, 6);
-    printf("final estimator: %.2f times the efficiency of the report's (row 1)\n",
-           rows[5].efficiency / rows[0].efficiency);
+    experiment_write_table(options, "ch07_levers", rows, LEVER_STEPS);
+    printf("final estimator: %.2f times the efficiency of the report's (row 1); the stratified"
+           " pairs alone: %.2f times\n",
+           rows[LEVER_STEPS - 1].efficiency / rows[0].efficiency,
+           rows[LEVER_STEPS - 1].efficiency / rows[LEVER_STEPS - 2].efficiency);
     measure_reference_free(&reference);
 }
 
@@ -269,9 +288,10 @@ int main(int argc, char **argv)
         "one, and plots error against time. Figure 7 uses roulette with bounded weights\n"
         "unless --rr is given.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_RR | FLAG_DEPTH | FLAG_FRESNEL |
-            FLAG_REFERENCE_SPP | FLAG_RUNS,
+            FLAG_REFERENCE_SPP | FLAG_RUNS | FLAG_STRATA,
         {.scene = "scenes/room.scene", .size = 800, .spp = 64, .shadow_rays = 1, .rr = 0.75,
-         .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = 256, .runs = 3},
+         .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = 256, .runs = 3,
+         .strata = 1},
     };
     Options options;
     Scene scene;
@@ -279,10 +299,12 @@ int main(int argc, char **argv)
     Reference reference;
     reference_for(&options, &scene, &reference);
     final_image(&options, &scene, &reference);
-    table1(&options, &scene, &reference);
+    Options report = options; /* the report's estimators: independent numbers */
+    report.strata = 0;
+    table1(&report, &scene, &reference);
     measure_reference_free(&reference);
     levers(&options, &scene);
-    convergence(&options, &scene);
+    convergence(&report, &scene);
     scene_free(&scene);
     return 0;
 }

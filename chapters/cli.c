@@ -11,7 +11,7 @@
 
 const char *cli_program = "mcrt";
 
-typedef enum { VALUE_NONE, VALUE_INT, VALUE_REAL, VALUE_TEXT, VALUE_SEED, VALUE_FRESNEL } ValueKind;
+typedef enum { VALUE_NONE, VALUE_INT, VALUE_REAL, VALUE_TEXT, VALUE_SEED, VALUE_FRESNEL, VALUE_SWITCH } ValueKind;
 
 /* One row per flag: its name, what its value is, the range allowed, and its help. */
 typedef struct {
@@ -37,6 +37,7 @@ static const FlagSpec FLAG_SPECS[] = {
     {FLAG_QUICK, "--quick", VALUE_NONE, 0, 0, "        small and fast, for a first look: a quarter of the size, and more runs"},
     {FLAG_REFERENCE_SPP, "--reference-spp", VALUE_INT, 1, 1 << 20, "N       samples per pixel of the reference image"},
     {FLAG_RUNS, "--runs", VALUE_INT, 1, CLI_RUNS_MAX, "N       independent runs (seeds) of each measured setting: its error is their mean and spread"},
+    {FLAG_STRATA, "--strata", VALUE_SWITCH, 0, 0, "on|off  the final estimator's lamp points and bounces stratified across a pixel's samples"},
 };
 #define FLAG_SPEC_COUNT ((int)(sizeof FLAG_SPECS / sizeof FLAG_SPECS[0]))
 
@@ -68,6 +69,9 @@ static void print_default(const FlagSpec *spec, const Options *d)
 #endif
     case FLAG_REFERENCE_SPP: printf(" (default %d)", d->reference_spp); break;
     case FLAG_RUNS: printf(" (default %d; with --quick %d)", d->runs, CLI_QUICK_RUNS); break;
+#if CHAPTER >= 7
+    case FLAG_STRATA: printf(" (default %s)", d->strata ? "on" : "off"); break;
+#endif
     default: break;
     }
 }
@@ -138,6 +142,15 @@ static void set_value(const FlagSpec *spec, const char *text, Options *o)
             o->fresnel = FRESNEL_EXACT;
         else
             cli_fail(2, "%s: expected 'schlick' or 'exact', got '%s'", spec->name, text);
+#endif
+#if CHAPTER >= 7
+    } else if (spec->kind == VALUE_SWITCH) {
+        if (strcmp(text, "on") == 0)
+            o->strata = 1;
+        else if (strcmp(text, "off") == 0)
+            o->strata = 0;
+        else
+            cli_fail(2, "%s: expected 'on' or 'off', got '%s'", spec->name, text);
 #endif
     } else if (spec->kind == VALUE_TEXT) {
         if (*text == '\0')

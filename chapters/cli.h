@@ -30,7 +30,8 @@ enum {
     FLAG_FRESNEL = 1u << 10,    /* --fresnel schlick|exact */
     FLAG_QUICK = 1u << 11,      /* --quick: a quarter of the default size, more runs */
     FLAG_REFERENCE_SPP = 1u << 12, /* --reference-spp N: samples of the reference image */
-    FLAG_RUNS = 1u << 13         /* --runs N: independent runs of each measured setting */
+    FLAG_RUNS = 1u << 13,        /* --runs N: independent runs of each measured setting */
+    FLAG_STRATA = 1u << 14       /* --strata on|off: stratified pairs (chapter 7; sobol.h) */
 };
 
 /* --runs: at most, and with --quick (small images, so more runs for the same time). */
@@ -57,6 +58,9 @@ typedef struct {
     int quick;
     int reference_spp;
     int runs;
+#if CHAPTER >= 7
+    int strata; /* 1: the estimator's pairs of numbers stratified across a pixel's samples */
+#endif
     unsigned given; /* the FLAG_ bits the user set on the command line */
 } Options;
 

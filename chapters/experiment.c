@@ -133,7 +133,7 @@ void experiment_image_size(const Options *options, const Scene *scene, int *widt
 RenderSettings experiment_render_settings(const Options *options, const Scene *scene, int spp,
                                           PixelSampling sampling, const char *label)
 {
-    RenderSettings settings;
+    RenderSettings settings = {0};
     experiment_image_size(options, scene, &settings.width, &settings.height);
     settings.spp = spp;
     settings.sampling = sampling;

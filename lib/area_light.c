@@ -28,7 +28,8 @@ ShadowRay area_light_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, con
                                 Rng *rng, RayCounts *counts)
 {
     ShadowRay ray = {.value = vec3(0, 0, 0)};
-    double u_select = rng_uniform(rng), u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+    double u_select = rng_uniform(rng), u1, u2;
+    rng_pair(rng, &u1, &u2);
     LightSample light = area_light_sample(scene, u_select, u1, u2);
     Vec3 to_light = vec3_sub(light.point, x);
     double distance2 = vec3_dot(to_light, to_light);

@@ -96,13 +96,22 @@ void camera_stratum_bounds(int cell, int samples, double *u0, double *v0, double
     *height = (double)columns / samples;
 }
 
+int camera_uses_subpixels(PixelSampling sampling)
+{
+#if CHAPTER >= 7
+    if (sampling == PIXEL_STRATIFIED)
+        return 1;
+#endif
+    return sampling == PIXEL_SUBPIXELS;
+}
+
 void camera_pixel_position(PixelSampling sampling, int sample, int samples, int first_stratum,
                            Rng *rng, double *u, double *v)
 {
     if (sampling == PIXEL_RANDOM) {
         *u = rng_uniform(rng);
         *v = rng_uniform(rng);
-    } else if (sampling == PIXEL_SUBPIXELS) {
+    } else if (camera_uses_subpixels(sampling)) {
         uint64_t cell = (uint64_t)camera_stratum(sample, samples, first_stratum), first, columns;
         stratum_row(cell, (uint64_t)samples, &first, &columns);
         /* Uniform in the cell; each quotient has a numerator below its denominator, so

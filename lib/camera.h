@@ -8,7 +8,9 @@
  * Where in the pixel (report §3.3.1, supersampling):
  *   - PIXEL_CENTRE: u = v = 1/2, one ray per pixel (Whitted, chapter 1);
  *   - PIXEL_RANDOM: u, v uniform in [0, 1) ("ray randomization", chapter 2);
- *   - PIXEL_SUBPIXELS: the report's "sub pixels", stratified and jittered (chapter 2).
+ *   - PIXEL_SUBPIXELS: the report's "sub pixels", stratified and jittered (chapter 2);
+ *   - PIXEL_STRATIFIED: sub-pixels, and the numbers the estimator draws in pairs
+ *     stratified across the pixel's samples as well (chapter 7; sobol.h, render.c).
  *
  * Sub-pixels (chapter 2). The pixel is cut into n = samples strata of equal area 1/n,
  * for any n: r = round(sqrt(n)) rows, row k holding c_k = floor((k+1) n / r) -
@@ -51,7 +53,17 @@ typedef struct {
     Vec3 up;    /* TL - BL: the image plane's full height */
 } Camera;
 
-typedef enum { PIXEL_CENTRE, PIXEL_SUBPIXELS, PIXEL_RANDOM } PixelSampling;
+typedef enum {
+    PIXEL_CENTRE,
+    PIXEL_SUBPIXELS,
+    PIXEL_RANDOM,
+#if CHAPTER >= 7
+    PIXEL_STRATIFIED /* sub-pixels, and the estimator's pairs of numbers too (sobol.h) */
+#endif
+} PixelSampling;
+
+/* Whether the samples are placed on sub-pixels (PIXEL_SUBPIXELS, PIXEL_STRATIFIED). */
+int camera_uses_subpixels(PixelSampling sampling);
 
 Camera camera_make(Vec3 eye, Vec3 bottom_left, Vec3 bottom_right, Vec3 top_left);
 

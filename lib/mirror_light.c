@@ -54,7 +54,8 @@ ShadowRay mirror_light_shadow_ray(const Scene *scene, const MirrorPlane *plane, 
                                   Vec3 wo, const Material *m, Rng *rng, RayCounts *counts)
 {
     ShadowRay ray = {vec3(0, 0, 0), vec3(0, 0, 0), 0.0};
-    double u_select = rng_uniform(rng), u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+    double u_select = rng_uniform(rng), u1, u2;
+    rng_pair(rng, &u1, &u2);
     LightSample light = area_light_sample(scene, u_select, u1, u2);
     double height_x = vec3_dot(plane->normal, x) - plane->offset;
     double height_y = vec3_dot(plane->normal, light.point) - plane->offset;

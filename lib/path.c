@@ -149,7 +149,8 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
                 throughput = vec3_scale(throughput, 1.0 / survival);
             }
 #endif
-            double u1 = rng_uniform(rng), u2 = rng_uniform(rng);
+            double u1, u2;
+            rng_pair(rng, &u1, &u2);
             throughput = vec3_mul(throughput, diffuse_sample(m, n, wo, u1, u2, &direction));
 #if CHAPTER >= 7
             diffuse_vertices++;

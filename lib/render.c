@@ -108,11 +108,17 @@ static void render_row(Worker *worker, int row)
     for (int col = 0; col < s->width; col++) {
         uint64_t index = (uint64_t)row * s->width + col;
         int first_stratum = 0;
-        if (s->sampling == PIXEL_SUBPIXELS) {
+        if (camera_uses_subpixels(s->sampling)) {
             Rng pixel_rng = rng_for_sample(s->seed, index, RENDER_PIXEL_STREAM);
             first_stratum = camera_first_stratum(&pixel_rng, s->spp);
         }
         Rng rng = rng_for_sample(s->seed, index, (uint64_t)job->pass);
+#if CHAPTER >= 7
+        if (s->sampling == PIXEL_STRATIFIED) {
+            rng.strata_key = rng_hash(rng_hash(s->seed ^ RENDER_STRATA_STREAM) ^ index) | 1u;
+            rng.strata_index = (uint32_t)job->pass;
+        }
+#endif
         double u, v;
         camera_pixel_position(s->sampling, job->pass, s->spp, first_stratum, &rng, &u, &v);
         Ray ray = camera_ray(&job->scene->camera, s->width, s->height, col, row, u, v);

@@ -65,6 +65,10 @@ typedef struct {
 
 /* The sample number of each pixel's own generator (camera_first_stratum). */
 #define RENDER_PIXEL_STREAM UINT64_MAX
+#if CHAPTER >= 7
+/* Mixed with the seed and the pixel into the key of its stratified pairs. */
+#define RENDER_STRATA_STREAM 0x5b0b01ULL
+#endif
 
 /* Render. Returns 0, or -1 when memory runs out (nothing is then allocated). */
 int render(const Scene *scene, const RenderSettings *settings, Estimator estimate,

@@ -1,9 +1,13 @@
 /* rng.c (chapter 1): PCG32 seeded by SplitMix64. See rng.h. */
 #include "rng.h"
 
+#if CHAPTER >= 7
+#include "sobol.h"
+#endif
+
 /* SplitMix64's finaliser (Steele, Lea, Flood 2014): a bijective mix of 64 bits, so
  * nearby inputs (pixel 7 and pixel 8) give unrelated outputs. */
-static uint64_t splitmix64(uint64_t x)
+uint64_t rng_hash(uint64_t x)
 {
     x += 0x9e3779b97f4a7c15ULL;
     x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
@@ -13,10 +17,9 @@ static uint64_t splitmix64(uint64_t x)
 
 Rng rng_for_sample(uint64_t seed, uint64_t pixel, uint64_t sample)
 {
-    uint64_t key = splitmix64(splitmix64(splitmix64(seed) ^ pixel) ^ sample);
-    Rng rng;
-    rng.state = 0;
-    rng.increment = (splitmix64(key) << 1) | 1u; /* the LCG increment must be odd */
+    uint64_t key = rng_hash(rng_hash(rng_hash(seed) ^ pixel) ^ sample);
+    Rng rng = {0};
+    rng.increment = (rng_hash(key) << 1) | 1u; /* the LCG increment must be odd */
     rng_next(&rng);
     rng.state += key;
     rng_next(&rng);
@@ -35,4 +38,16 @@ uint32_t rng_next(Rng *rng)
 double rng_uniform(Rng *rng)
 {
     return rng_next(rng) * 0x1p-32;
+}
+
+void rng_pair(Rng *rng, double *u, double *v)
+{
+#if CHAPTER >= 7
+    if (rng->strata_key != 0 && rng->pairs_drawn < SOBOL_PAIRS) {
+        sobol_pair(rng->strata_index, rng_hash(rng->strata_key ^ rng->pairs_drawn++), u, v);
+        return;
+    }
+#endif
+    *u = rng_uniform(rng);
+    *v = rng_uniform(rng);
 }

@@ -15,7 +15,15 @@
 
 #include <stdint.h>
 
-typedef struct { uint64_t state, increment; } Rng;
+typedef struct {
+    uint64_t state, increment;
+#if CHAPTER >= 7
+    /* Stratified pairs (sobol.h): 0, or the pixel's key for them; the sample's number
+     * in its pixel; the pairs it has drawn so far. */
+    uint64_t strata_key;
+    uint32_t strata_index, pairs_drawn;
+#endif
+} Rng;
 
 /* The generator for one sample of one pixel of one image. */
 Rng rng_for_sample(uint64_t seed, uint64_t pixel, uint64_t sample);
@@ -25,5 +33,13 @@ uint32_t rng_next(Rng *rng);
 
 /* A uniform double in [0, 1): 32 random bits scaled by 2^-32, so never 1. */
 double rng_uniform(Rng *rng);
+
+/* Two uniform numbers in [0, 1) that belong together (a point on a lamp, a direction):
+ * two rng_uniform draws; from chapter 7 on, when the generator has a strata_key, the
+ * sample's point of a stratified pair (sobol.h) for its first SOBOL_PAIRS pairs. */
+void rng_pair(Rng *rng, double *u, double *v);
+
+/* SplitMix64's finaliser (see rng.c): 64 bits mixed into 64 unrelated-looking ones. */
+uint64_t rng_hash(uint64_t x);
 
 #endif

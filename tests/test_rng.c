@@ -32,7 +32,7 @@ static Rng rng_about_to_output(uint32_t bits)
         uint64_t above = i + 18 < 64 ? (state >> (i + 18)) & 1u : 0u;
         state |= ((((uint64_t)bits >> (i - 27)) & 1u) ^ above) << i;
     }
-    Rng rng = {state, 1};
+    Rng rng = {.state = state, .increment = 1};
     return rng;
 }
 
