@@ -224,7 +224,7 @@ fuzz: $(FUZZ_BINS)
 BENCH_ARGS ?=
 $(BUILD)/bench: $(BUILD)/chapter$(FINAL)/tests/bench.o $(BUILD)/chapter$(FINAL)/libmc.a
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
-bench: $(BUILD)/bench
+bench: $(BUILD)/bench $(REFERENCE_BIN)
 	$(BUILD)/bench $(BENCH_ARGS)
 
 clean:

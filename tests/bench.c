@@ -10,13 +10,20 @@
  * speed-up and issue 11's target: at least 15 M rays/s per core. The image is the
  * same for any thread count (tests/test_render.c), so the two runs do exactly the
  * same work.
+ *
+ * Then the room's efficiency, 1 / (relative MSE x seconds), of chapter 7's final
+ * estimator (Figure 7's: one shadow ray, bounded-weight roulette, the lamp's mirror
+ * image, exact Fresnel, depth 64) at a quarter of the size and 64 spp on all cores,
+ * measured over 3 runs against the reference that chapter 7 uses at that size
+ * (build/reference, cached in build/references: rendered once, about a minute), with
+ * independent numbers and with the stratified pairs (sobol.h).
  */
 #include <stdio.h>
 #include <time.h>
 
 #include "cli.h"
+#include "experiment.h"
 #include "path.h"
-#include "scene_file.h"
 
 static void report(const char *label, const RenderResult *r, double cpu_seconds)
 {
@@ -35,14 +42,11 @@ int main(int argc, char **argv)
         "The speed benchmark: Table 1's first row (16 spp, 1 shadow ray, alpha 0.25) on one\n"
         "thread and on all cores.",
         FLAG_SCENE | FLAG_SIZE | FLAG_SPP | FLAG_THREADS | FLAG_QUIET,
-        {.scene = "scenes/room.scene", .size = 800, .spp = 16, .threads = 0},
+        {.scene = "scenes/room.scene", .size = 800, .spp = 16, .threads = 0, .out = "."},
     };
     Options options;
-    cli_parse(argc, argv, &info, &options);
     Scene scene;
-    char error[512];
-    if (scene_load(options.scene, &scene, error, sizeof error) != 0)
-        cli_fail(2, "%s", error);
+    experiment_start(argc, argv, &info, NEEDS_AREA_LIGHT, &options, &scene);
     PathSettings path = {.max_depth = 64, .shadow_rays = 1, .rr_survival = 0.25};
     int threads[2] = {1, options.threads > 0 ? options.threads : render_core_count()};
     RenderResult results[2];
@@ -67,6 +71,35 @@ int main(int argc, char **argv)
            per_core >= 15.0 ? "met" : "NOT met", per_core);
     for (int i = 0; i < 2; i++)
         render_result_free(&results[i]);
+
+    Options small = options;
+    small.size = cli_quarter(options.size, 16);
+    small.spp = 64;
+    small.depth = 64;
+    small.fresnel = FRESNEL_EXACT;
+    small.reference_spp = 256;
+    small.runs = 3;
+    small.threads = threads[1];
+    small.seed = 1;
+    PathSettings final = {.max_depth = 64, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
+                          .rr_throughput = 1, .mirror_light = 64};
+    printf("\nthe room's efficiency, chapter 7's final estimator, %d pixels wide, %d spp, %d "
+           "threads, %d runs:\n", small.size, small.spp, small.threads, small.runs);
+    Reference reference;
+    experiment_path_reference(&small, &scene, &final, NULL, 0.0, &reference);
+    const PixelSampling samplings[2] = {PIXEL_SUBPIXELS, PIXEL_STRATIFIED};
+    const char *names[2] = {"independent numbers", "stratified pairs"};
+    TableRow rows[2];
+    for (int i = 0; i < 2; i++) {
+        rows[i] = experiment_path_row(&small, &scene, &final, small.spp, samplings[i], names[i],
+                                      names[i], &reference, NULL);
+        printf("  %-20s %6.2f s per run  RMSE %.4f +- %.4f  relative MSE %.3g  efficiency %.3g\n",
+               names[i], rows[i].seconds, rows[i].rmse, rows[i].rmse_spread, rows[i].rel_mse,
+               rows[i].efficiency);
+    }
+    printf("stratified pairs: %.2f times the efficiency of independent numbers\n",
+           rows[1].efficiency / rows[0].efficiency);
+    measure_reference_free(&reference);
     scene_free(&scene);
     return 0;
 }
