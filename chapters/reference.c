@@ -14,7 +14,9 @@
  * measured (chapter 7's levers table): one shadow ray, Russian roulette with bounded
  * weights (finite variance for any reflectance) and the planar mirrors' images of the
  * lamps at every diffuse hit (mirror_light.h; nothing where a scene has no planar
- * mirror), and stores it as --out/KEY.pfm, KEY-stderr.pfm and KEY.txt. An interrupted
+ * mirror), bounces aimed at the mirror and glass spheres (sphere_guide.h), with
+ * independent numbers (PIXEL_RANDOM: its per-pixel errors are then exact, which the
+ * chapters subtract from their MSE), and stores it as --out/KEY.pfm, KEY-stderr.pfm and KEY.txt. An interrupted
  * render stores nothing and exits with status 130.
  */
 #include <errno.h>
@@ -26,6 +28,7 @@
 #include "path.h"
 #include "render.h"
 #include "scene_file.h"
+#include "sphere_guide.h"
 
 static const char *program = "reference";
 
@@ -114,7 +117,8 @@ int main(int argc, char **argv)
     PathSettings path = {.max_depth = (int)request.depth, .shadow_rays = 1,
                          .fresnel = strcmp(request.fresnel, "exact") == 0 ? FRESNEL_EXACT
                                                                          : FRESNEL_SCHLICK,
-                         .rr_throughput = 1, .mirror_light = (int)request.depth};
+                         .rr_throughput = 1, .mirror_light = (int)request.depth,
+                         .sphere_guide = SPHERE_GUIDE_STRENGTH};
     RenderSettings settings = {0};
     settings.width = (int)request.size;
     settings.height = (int)lround(request.size / camera_aspect(&scene.camera));

@@ -18,6 +18,7 @@
 #if CHAPTER >= 7
 #include "mirror_light.h"
 #include "mis.h"
+#include "sphere_guide.h"
 #endif
 #if CHAPTER >= 8
 #include "photon_estimate.h"
@@ -68,6 +69,33 @@ static Vec3 direct_light(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Mate
                 sum = vec3_add(sum, weighted(sample, n, s));
             }
     return vec3_scale(sum, 1.0 / s->shadow_rays);
+}
+
+/* The diffuse bounce: cosine-weighted (diffuse.h) or, with sphere_guide, from the mixture
+ * aimed at the mirror and glass spheres (sphere_guide.h). Returns the weight f cos / p
+ * (0 for a direction below the surface), and the density p in *pdf. */
+static Vec3 diffuse_bounce(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Material *m,
+                           const PathSettings *s, Rng *rng, Vec3 *wi, double *pdf)
+{
+    if (s->sphere_guide > 0.0) {
+        SphereGuide guide;
+        sphere_guide_at(scene, x, n, s->sphere_guide, &guide);
+        if (guide.count > 0) {
+            double u_select = rng_uniform(rng), u1, u2;
+            rng_pair(rng, &u1, &u2);
+            *wi = sphere_guide_sample(&guide, n, u_select, u1, u2);
+            *pdf = sphere_guide_pdf(&guide, n, *wi);
+            double cos_theta = vec3_dot(n, *wi);
+            if (cos_theta <= 0.0)
+                return vec3(0, 0, 0);
+            return vec3_scale(diffuse_brdf(m, n, *wi, wo), cos_theta / *pdf);
+        }
+    }
+    double u1, u2;
+    rng_pair(rng, &u1, &u2);
+    Vec3 weight = diffuse_sample(m, n, wo, u1, u2, wi);
+    *pdf = diffuse_pdf(n, *wi);
+    return weight;
 }
 #endif
 
@@ -149,14 +177,18 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings_p
                 throughput = vec3_scale(throughput, 1.0 / survival);
             }
 #endif
+#if CHAPTER >= 7
+            Vec3 weight = diffuse_bounce(scene, hit.point, n, wo, m, s, rng, &direction, &bsdf_pdf);
+            if (weight.x == 0.0 && weight.y == 0.0 && weight.z == 0.0)
+                break; /* a guided direction below the surface */
+            throughput = vec3_mul(throughput, weight);
+            diffuse_vertices++;
+            diffuse_segment = segment;
+            travelled = 0.0;
+#else
             double u1, u2;
             rng_pair(rng, &u1, &u2);
             throughput = vec3_mul(throughput, diffuse_sample(m, n, wo, u1, u2, &direction));
-#if CHAPTER >= 7
-            diffuse_vertices++;
-            diffuse_segment = segment;
-            bsdf_pdf = diffuse_pdf(n, direction);
-            travelled = 0.0;
 #endif
         } else if (m->kind == MATERIAL_MIRROR) {
             direction = mirror_reflect(ray.dir, n);
@@ -235,5 +267,7 @@ void path_describe(const PathSettings *s, char *text, int size)
         append(text, size, &used, " mis");
     if (s->mirror_light > 0)
         append(text, size, &used, " mirror-light@%d", s->mirror_light);
+    if (s->sphere_guide > 0.0)
+        append(text, size, &used, " sphere-guide=%g", s->sphere_guide);
 #endif
 }

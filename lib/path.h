@@ -19,6 +19,10 @@
  *                M >= 1: each shadow ray's light is weighted by the power heuristic, and
  *                emission that a path hits right after a diffuse bounce is added too,
  *                weighted by the complementary share, instead of dropped.
+ *   sphere_guide bounces aimed at the mirror and glass spheres (chapter 7;
+ *                sphere_guide.h): at a diffuse hit the bounce direction comes from a
+ *                mixture of the cosine-weighted hemisphere and the spheres' cones, this
+ *                strong, weighted by the mixture's density. 0: cosine only.
  *   mirror_light the lamps seen in planar mirrors (chapter 7; mirror_light.h), with
  *                M >= 1: at the first mirror_light diffuse hits of a path, M shadow rays
  *                more per mirror plane go to the lamps' mirror images, and a path that
@@ -65,6 +69,7 @@ typedef struct {
 #if CHAPTER >= 7
     int mis;          /* 1: light and BRDF sampling combined by the power heuristic */
     int mirror_light; /* K: at the first K diffuse hits, shadow rays to the lamps' images */
+    double sphere_guide; /* > 0: bounces aimed at mirror and glass spheres, this strongly */
 #endif
 } PathSettings;
 

@@ -24,6 +24,7 @@
 #include "cli.h"
 #include "experiment.h"
 #include "path.h"
+#include "sphere_guide.h"
 
 static void report(const char *label, const RenderResult *r, double cpu_seconds)
 {
@@ -82,7 +83,8 @@ int main(int argc, char **argv)
     small.threads = threads[1];
     small.seed = 1;
     PathSettings final = {.max_depth = 64, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
-                          .rr_throughput = 1, .mirror_light = 64};
+                          .rr_throughput = 1, .mirror_light = 64,
+                          .sphere_guide = SPHERE_GUIDE_STRENGTH};
     printf("\nthe room's efficiency, chapter 7's final estimator, %d pixels wide, %d spp, %d "
            "threads, %d runs:\n", small.size, small.spp, small.threads, small.runs);
     Reference reference;
