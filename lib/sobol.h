@@ -38,9 +38,12 @@
 
 /* The pairs of a sample that are stratified; later pairs are independent numbers. In
  * the room the first diffuse hit draws three (its shadow ray's lamp point, the lamp's
- * mirror image's, the bounce). Measured at 256 x 256, 64 spp: 3 pairs cut the relative
- * RMSE from 0.0759 to 0.0717 for 5% more time, 8 pairs to 0.0720 for 17% more (each
- * pair costs a few hashes); at 256 spp 3 pairs took it from 0.0395 to 0.0365. */
+ * mirror image's, the bounce). Measured at 256 x 256 against an 8192-spp reference,
+ * before the sphere guide: at 64 spp 3 pairs cut the relative RMSE from 0.0759 to
+ * 0.0717 for 5% more time, 8 pairs to 0.0720 for 17% more (each pair costs a few
+ * hashes); at 256 spp 3 pairs took it from 0.0395 to 0.0365. With the guide (chapter 7's
+ * final estimator) the gain is smaller: 0.0494 -> 0.0482 at 64 spp, 0.0266 -> 0.0258 at
+ * 256 (the levers table and `make bench` print it each time). */
 #define SOBOL_PAIRS 3
 
 /* Point `index` of the (0,2)-sequence scrambled by `key`, in [0, 1)^2. */
