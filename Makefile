@@ -3,7 +3,8 @@
 #   make figures          render every chapter's figures into build/figures/ (QUICK=1: small)
 #   make test             build every chapter's snapshot and run its tests and a smoke render
 #   make chapterN         build chapter N from chapter N's library and run it
-#                         (ARGS="--size 200 --spp 4" to change its settings)
+#                         (ARGS="--size 200 --spp 4" to change its settings; RUNS=1 to
+#                         measure each setting once, in the chapters that take --runs)
 #   make diff-chapterN    what chapter N adds to chapter N-1, as a unified diff
 #   make source-chapterN  the clean source of chapter N in build/source/chapterN/
 #   make sanitize         the tests under AddressSanitizer and UndefinedBehaviorSanitizer
@@ -30,6 +31,7 @@ LDFLAGS ?=
 BUILD   ?= build
 FIGURES ?= $(BUILD)/figures
 ARGS    ?=
+RUNS    ?=
 QUICK   ?=
 FUZZ_SECONDS ?= 60
 
@@ -100,7 +102,10 @@ ALL_TESTS += $$(CHAPTER$(1)_TESTS)
 
 .PHONY: chapter$(1) source-chapter$(1) diff-chapter$(1)
 chapter$(1): $(call program_of,$(1)) $(REFERENCE_BIN)
-	$(call program_of,$(1)) --out $$(FIGURES) $$(QUICK_ARGS) $$(ARGS)
+	@runs=; if [ -n "$$(RUNS)" ] && $(call program_of,$(1)) --help | grep -q -- '--runs'; then \
+	    runs="--runs $$(RUNS)"; fi; \
+	echo $(call program_of,$(1)) --out $$(FIGURES) $$(QUICK_ARGS) $$$$runs $$(ARGS); \
+	$(call program_of,$(1)) --out $$(FIGURES) $$(QUICK_ARGS) $$$$runs $$(ARGS)
 
 source-chapter$(1): | $(DEPS_OK)
 	@sh .ci/install-deps unifdef
