@@ -69,9 +69,12 @@ typedef struct {
     int failed;
 } Worker;
 
-static void *trace_share(void *argument)
+/* The thread works on its own copy of its Worker and writes it back at the end: the
+ * workers sit side by side in one array, and two threads updating counters in one
+ * cache line at every ray would pass the line between their cores (false sharing, as
+ * in render.c). */
+static void trace_into(Worker *w)
 {
-    Worker *w = argument;
     const PhotonMapSettings *s = w->settings;
     for (int k = w->first; k < w->end; k++) {
         Rng rng = rng_for_sample(s->seed, (uint64_t)k, 0);
@@ -87,13 +90,20 @@ static void *trace_share(void *argument)
             Photon *grown = realloc(w->photons, (size_t)capacity * sizeof *grown);
             if (!grown) {
                 w->failed = 1;
-                return NULL;
+                return;
             }
             w->photons = grown;
             w->capacity = capacity;
         }
         w->photons[w->count++] = photon;
     }
+}
+
+static void *trace_share(void *argument)
+{
+    Worker *shared = argument, own = *shared;
+    trace_into(&own);
+    *shared = own;
     return NULL;
 }
 

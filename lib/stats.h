@@ -3,7 +3,8 @@
  * Introduced in chapter 1. Rays are counted by purpose, so a table can say where the
  * time went: camera rays (one per sample), bounce rays (every ray a path continues
  * with: diffuse, mirror, glass), shadow rays (visibility tests towards a light).
- * Each render thread counts into its own RayCounts; they are summed at the end.
+ * Each render thread counts into its own RayCounts, a row at a time (render.c); they
+ * are summed at the end.
  */
 #ifndef STATS_H
 #define STATS_H
