@@ -36,7 +36,7 @@ int main(int argc, char **argv)
         "sub-pixels with random positions.",
         FLAGS_COMMON | FLAG_SPP | FLAG_DEPTH | FLAG_REFERENCE_SPP | FLAG_RUNS,
         {.scene = "scenes/room.scene", .size = 800, .spp = 64, .depth = 8, .seed = 1,
-         .out = "build/figures", .reference_spp = 256, .runs = CLI_RUNS},
+         .out = "build/figures", .reference_spp = DEPTH8_REFERENCE_SPP, .runs = CLI_RUNS},
     };
     Options options;
     Scene scene;

@@ -96,7 +96,7 @@ int main(int argc, char **argv)
         "sweeps the number of shadow rays M.",
         FLAGS_COMMON | FLAG_SPP | FLAG_DEPTH | FLAG_REFERENCE_SPP | FLAG_RUNS,
         {.scene = "scenes/room.scene", .size = 800, .spp = 4, .depth = 8, .seed = 1,
-         .out = "build/figures", .reference_spp = 256, .runs = CLI_RUNS},
+         .out = "build/figures", .reference_spp = DEPTH8_REFERENCE_SPP, .runs = CLI_RUNS},
     };
     Options options;
     Scene scene;

@@ -100,6 +100,13 @@ Image experiment_plot(const Plot *plot, int width, int height);
 #endif
 
 #if CHAPTER >= 2
+/* Samples per pixel of the full-size reference of chapters 2 and 3 (depth 8: one image,
+ * so one reference, shared through the cache). Their panels are much noisier than it:
+ * at 256 spp its noise was at most 2% of their MSE (chapter 2's 64-spp panels without
+ * shadow rays), so at 128 about 4%, for half of its 163 s. The later chapters keep
+ * 256, which Figure 7 (64 spp of nearly the reference's own estimator) needs. */
+#define DEPTH8_REFERENCE_SPP 128
+
 /* The reference for the image that the path tracer with settings `path` estimates (its
  * depth and, from chapter 4, its Fresnel mode; shadow rays and roulette do not change the
  * expectation), of the scene as loaded, with the roughness of the material named
