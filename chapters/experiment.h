@@ -65,9 +65,9 @@ void experiment_path(const Options *options, const char *file_name, char *path, 
 /* The options for a chapter's sweep on a quarter-size image: a quarter of --size (at
  * least 16 pixels), and a reference with twice the samples per pixel (at most 2^20), for
  * an eighth of the cost of the full-size reference. The sweeps' panels have few samples,
- * so its noise stays a small share of their error (with 4 times the samples, at most
- * 2% in issue 11's full-size run, chapter 5's sweep; half the samples double a share),
- * and the nine such references of `make figures` take half of the 258 s they took. */
+ * so its noise stays a small share of their error: at most 5% in the full-size `make
+ * figures` (chapter 5's sweep; 2% with 4 times the samples), whose nine quarter-size
+ * references took 137 s (258 s with 4 times the samples). */
 Options experiment_quarter_size(const Options *options);
 
 /* Exposure of every panel's PNG: radiance 1 is white. */
@@ -103,7 +103,7 @@ Image experiment_plot(const Plot *plot, int width, int height);
 /* Samples per pixel of the full-size reference of chapters 2 and 3 (depth 8: one image,
  * so one reference, shared through the cache). Their panels are much noisier than it:
  * at 256 spp its noise was at most 2% of their MSE (chapter 2's 64-spp panels without
- * shadow rays), so at 128 about 4%, for half of its 163 s. The later chapters keep
+ * shadow rays), at 128 it is 4% (measured at 800 x 800), for half of its 163 s. The later chapters keep
  * 256, which Figure 7 (64 spp of nearly the reference's own estimator) needs. */
 #define DEPTH8_REFERENCE_SPP 128
 
