@@ -483,6 +483,7 @@ static void error_against_time(const Options *options, const Scene *scene)
     reference_for(&small, scene, &references[0]);
     Options other = small;
     other.seed = small.seed + 1000; /* references use ~seed; the panels seed .. seed + SEEDS */
+    printf("a second reference of the same image, of another seed (the table's errors use both):\n");
     reference_for(&other, scene, &references[1]);
     int width, height;
     experiment_image_size(&small, scene, &width, &height);
