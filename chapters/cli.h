@@ -34,10 +34,10 @@ enum {
     FLAG_STRATA = 1u << 14       /* --strata on|off: stratified pairs (chapter 7; sobol.h) */
 };
 
-/* --runs: at most; by default (at the report's 800 x 800, where a run of Figure 7 takes
- * about a minute, two: issue 11's time for `make figures` against issue 10's "fewer at
- * full size if time demands"); and with --quick (small images, so more runs for the same
- * time). */
+/* --runs: at most; by default, two (at the report's 800 x 800 a run of Figure 7 takes
+ * about a minute, and issue 10 allowed fewer runs at full size where time demands: issue
+ * 11's time for `make figures`); and with --quick (small images, so more runs for the
+ * same time). */
 #define CLI_RUNS_MAX 100
 #define CLI_RUNS 2
 #define CLI_QUICK_RUNS 5

@@ -103,8 +103,9 @@ Image experiment_plot(const Plot *plot, int width, int height);
 /* Samples per pixel of the full-size reference of chapters 2 and 3 (depth 8: one image,
  * so one reference, shared through the cache). Their panels are much noisier than it:
  * at 256 spp its noise was at most 2% of their MSE (chapter 2's 64-spp panels without
- * shadow rays), at 128 it is 4% (measured at 800 x 800), for half of its 163 s. The later chapters keep
- * 256, which Figure 7 (64 spp of nearly the reference's own estimator) needs. */
+ * shadow rays), at 128 it is 4% (measured at 800 x 800), for half of its 163 s. The
+ * later chapters keep 256, which Figure 7 (64 spp of nearly the reference's own
+ * estimator) needs. */
 #define DEPTH8_REFERENCE_SPP 128
 
 /* The reference for the image that the path tracer with settings `path` estimates (its
