@@ -31,7 +31,9 @@
 #endif
 
 /* Render the room with 1, 2 and 7 threads: the same images bit for bit, and the same
- * ray counts. The one-thread result is left in *first. */
+ * ray counts: one camera ray per sample, and bounce and shadow rays (the room has
+ * mirrors and a light), counted in full whichever thread traced them. The one-thread
+ * result is left in *first. */
 static void assert_same_for_any_thread_count(const Scene *scene, Estimator estimate,
                                              const void *estimator_settings,
                                              PixelSampling sampling, RenderResult *first)
@@ -43,7 +45,9 @@ static void assert_same_for_any_thread_count(const Scene *scene, Estimator estim
         RenderSettings settings = {48, 48, 3, sampling, threads[i], 2019, 0, "test"};
         assert_int_equal(render(scene, &settings, estimate, estimator_settings, &results[i]), 0);
         assert_int_equal(results[i].threads, threads[i]);
+        assert_true(results[i].samples == 48 * 48 * 3 && results[i].rays.camera == 48 * 48 * 3);
     }
+    assert_true(results[0].rays.bounce > 0 && results[0].rays.shadow > 0);
     for (int i = 1; i < 3; i++) {
         assert_memory_equal(results[0].image.pixels, results[i].image.pixels, bytes);
         assert_memory_equal(results[0].std_error.pixels, results[i].std_error.pixels, bytes);
