@@ -211,7 +211,7 @@ int main(int argc, char **argv)
         "vs 8) and compares Schlick's approximation with the exact Fresnel equations.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_FRESNEL | FLAG_REFERENCE_SPP | FLAG_RUNS,
         {.scene = "scenes/room.scene", .size = 800, .spp = 4, .shadow_rays = 1, .seed = 1,
-         .out = "build/figures", .fresnel = FRESNEL_SCHLICK, .reference_spp = 256, .runs = CLI_RUNS},
+         .out = "build/figures", .fresnel = FRESNEL_SCHLICK, .reference_spp = REFERENCE_SPP, .runs = CLI_RUNS},
     };
     Options options;
     Scene scene;

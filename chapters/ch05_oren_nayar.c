@@ -152,7 +152,7 @@ int main(int argc, char **argv)
         "sphere beside a Lambertian one) and sweeps the roughness sigma.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_REFERENCE_SPP | FLAG_RUNS,
         {.scene = "scenes/oren_nayar.scene", .size = 800, .spp = 16, .shadow_rays = 4,
-         .depth = 8, .seed = 1, .out = "build/figures", .reference_spp = 256, .runs = CLI_RUNS},
+         .depth = 8, .seed = 1, .out = "build/figures", .reference_spp = REFERENCE_SPP, .runs = CLI_RUNS},
     };
     Options options;
     Scene scene;

@@ -78,7 +78,7 @@ int main(int argc, char **argv)
         "and sweeps alpha, the survival probability.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_DEPTH | FLAG_REFERENCE_SPP | FLAG_RUNS,
         {.scene = "scenes/room.scene", .size = 800, .spp = 4, .shadow_rays = 1, .depth = 64,
-         .seed = 1, .out = "build/figures", .reference_spp = 256, .runs = CLI_RUNS},
+         .seed = 1, .out = "build/figures", .reference_spp = REFERENCE_SPP, .runs = CLI_RUNS},
     };
     Options options;
     Scene scene;

@@ -300,7 +300,7 @@ int main(int argc, char **argv)
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_RR | FLAG_DEPTH | FLAG_FRESNEL |
             FLAG_REFERENCE_SPP | FLAG_RUNS | FLAG_STRATA,
         {.scene = "scenes/room.scene", .size = 800, .spp = 64, .shadow_rays = 1, .rr = 0.75,
-         .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = 256, .runs = CLI_RUNS,
+         .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = REFERENCE_SPP, .runs = CLI_RUNS,
          .strata = 1},
     };
     Options options;

@@ -560,7 +560,7 @@ int main(int argc, char **argv)
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_RR | FLAG_DEPTH | FLAG_FRESNEL |
             FLAG_REFERENCE_SPP,
         {.scene = "scenes/room.scene", .size = 800, .spp = 16, .shadow_rays = 4, .rr = 0.75,
-         .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = 256},
+         .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = REFERENCE_SPP},
     };
     Options options;
     Scene scene;

@@ -63,11 +63,9 @@ void experiment_render(const Scene *scene, const RenderSettings *settings, Estim
 void experiment_path(const Options *options, const char *file_name, char *path, size_t size);
 
 /* The options for a chapter's sweep on a quarter-size image: a quarter of --size (at
- * least 16 pixels), and a reference with twice the samples per pixel (at most 2^20), for
- * an eighth of the cost of the full-size reference. The sweeps' panels have few samples,
- * so its noise stays a small share of their error: at most 5% in the full-size `make
- * figures` (chapter 5's sweep; 2% with 4 times the samples), whose nine quarter-size
- * references took 137 s (258 s with 4 times the samples). */
+ * least 16 pixels), and a reference with as many samples per pixel as the full-size one,
+ * for a sixteenth of its cost. The sweeps' panels have few samples, so its noise stays a
+ * small share of their error: see the measurements under DEPTH8_REFERENCE_SPP. */
 Options experiment_quarter_size(const Options *options);
 
 /* Exposure of every panel's PNG: radiance 1 is white. */
@@ -100,13 +98,14 @@ Image experiment_plot(const Plot *plot, int width, int height);
 #endif
 
 #if CHAPTER >= 2
-/* Samples per pixel of the full-size reference of chapters 2 and 3 (depth 8: one image,
- * so one reference, shared through the cache). Their panels are much noisier than it:
- * at 256 spp its noise was at most 2% of their MSE (chapter 2's 64-spp panels without
- * shadow rays), at 128 it is 4% (measured at 800 x 800), for half of its 163 s. The
- * later chapters keep 256, which Figure 7 (64 spp of nearly the reference's own
- * estimator) needs. */
-#define DEPTH8_REFERENCE_SPP 128
+/* Samples per pixel of the full-size references (their default --reference-spp):
+ * REFERENCE_SPP for chapters 4-8, DEPTH8_REFERENCE_SPP for the depth-8 image of
+ * chapters 2 and 3 (one image, so one reference, shared through the cache), whose
+ * panels are much noisier than it. The reference program renders them on sub-pixels in
+ * batches (chapters/reference.c), which reach the noise of twice the samples at random
+ * positions nearly: see the measurements under DEPTH8_REFERENCE_SPP. */
+#define REFERENCE_SPP 128
+#define DEPTH8_REFERENCE_SPP 64
 
 /* The reference for the image that the path tracer with settings `path` estimates (its
  * depth and, from chapter 4, its Fresnel mode; shadow rays and roulette do not change the
