@@ -162,6 +162,7 @@ Options experiment_quarter_size(const Options *options)
 {
     Options quarter = *options;
     quarter.size = cli_quarter(options->size, 16);
+    quarter.reference_spp = (int)fmin(2.0 * options->reference_spp, 1 << 20);
     return quarter;
 }
 

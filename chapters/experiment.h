@@ -63,9 +63,10 @@ void experiment_render(const Scene *scene, const RenderSettings *settings, Estim
 void experiment_path(const Options *options, const char *file_name, char *path, size_t size);
 
 /* The options for a chapter's sweep on a quarter-size image: a quarter of --size (at
- * least 16 pixels), and a reference with as many samples per pixel as the full-size one,
- * for a sixteenth of its cost. The sweeps' panels have few samples, so its noise stays a
- * small share of their error: see the measurements under DEPTH8_REFERENCE_SPP. */
+ * least 16 pixels), and a reference with twice the samples per pixel (at most 2^20), for
+ * an eighth of the cost of the full-size reference. The sweeps' panels have few samples,
+ * so its noise stays a small share of their error: see the measurements under
+ * DEPTH8_REFERENCE_SPP. */
 Options experiment_quarter_size(const Options *options);
 
 /* Exposure of every panel's PNG: radiance 1 is white. */
