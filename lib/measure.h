@@ -22,8 +22,10 @@
  *     E[(x - r)^2] = E[(x - mu)^2] + E[(r - mu)^2] - 2 E[x - mu] E[r - mu]
  *                  = MSE_true + Var(r),
  * so the raw squared difference overstates the image's error by the reference's
- * variance. Its per-pixel standard error se_r (render.h) estimates sqrt(Var(r)) (s^2 / n
- * is unbiased for the variance of a mean of n samples), so
+ * variance. Its per-pixel standard error se_r estimates sqrt(Var(r)) without bias: the
+ * reference program renders it in independent batches and takes se_r^2 from the spread
+ * of their means (render_batches.h; s^2 / n over a pixel's samples, render.h, is
+ * unbiased only for independent samples, not for the sub-pixels the batches use), so
  *     MSE = sum ((x - r)^2 - se_r^2) / N
  * estimates the image's own MSE without bias (measure_error_estimate). The relative MSE
  * gets the same correction term by term, ((x - r)^2 - se_r^2) / (r^2 + 0.01): only
