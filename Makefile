@@ -165,7 +165,9 @@ test: all check-sources
 
 # The gallery (chapters/gallery.c): $(FIGURES)/index.html, one page with every chapter's
 # figures, tables, plots and diff. `make figures` records its run in $(FIGURES)/run.txt
-# (start, end, seconds, threads, QUICK), writes each chapter's diff and then the page;
+# (start, end, seconds, threads, QUICK), writes each chapter's diff and then the page.
+# It builds every program first, nproc compilers at a time, and then runs the chapters
+# one after another, so that no render shares the cores it measures its time on;
 # `make gallery` rewrites the page from the files there, without rendering;
 # `make browser-test` opens it in headless Chromium. DIFFS: the folder with the
 # diff-chapterN.diff files to show.
@@ -176,9 +178,10 @@ $(GALLERY): $(BUILD)/chapter$(FINAL)/chapters/gallery.o $(BUILD)/chapter$(FINAL)
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 gallery: $(GALLERY)
 	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
-figures: $(GALLERY)
-	@mkdir -p $(FIGURES); start=$$(date +%s); started=$$(date '+%Y-%m-%d %H:%M:%S %z'); \
-	for n in $(CHAPTERS); do $(MAKE) --no-print-directory chapter$$n || exit 1; done; \
+figures:
+	@start=$$(date +%s); started=$$(date '+%Y-%m-%d %H:%M:%S %z'); \
+	$(MAKE) --no-print-directory -j$$(nproc) $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) || exit 1; \
+	mkdir -p $(FIGURES); for n in $(CHAPTERS); do $(MAKE) --no-print-directory chapter$$n || exit 1; done; \
 	seconds=$$(($$(date +%s) - start)); \
 	printf 'started=%s\nfinished=%s\nseconds=%s\nthreads=%s\nquick=%s\n' "$$started" \
 	    "$$(date '+%Y-%m-%d %H:%M:%S %z')" "$$seconds" "$$(nproc)" \
