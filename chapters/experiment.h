@@ -65,8 +65,8 @@ void experiment_path(const Options *options, const char *file_name, char *path, 
 /* The options for a chapter's sweep on a quarter-size image: a quarter of --size (at
  * least 16 pixels), and a reference with twice the samples per pixel (at most 2^20), for
  * an eighth of the cost of the full-size reference. The sweeps' panels have few samples,
- * so its noise stays a small share of their error: see the measurements under
- * DEPTH8_REFERENCE_SPP. */
+ * so its noise stays a small share of their error (at most 4% in `make figures`, chapter
+ * 5's sweep; the measurements are under REFERENCE_SPP below). */
 Options experiment_quarter_size(const Options *options);
 
 /* Exposure of every panel's PNG: radiance 1 is white. */
@@ -100,11 +100,23 @@ Image experiment_plot(const Plot *plot, int width, int height);
 
 #if CHAPTER >= 2
 /* Samples per pixel of the full-size references (their default --reference-spp):
- * REFERENCE_SPP for chapters 4-8, DEPTH8_REFERENCE_SPP for the depth-8 image of
- * chapters 2 and 3 (one image, so one reference, shared through the cache), whose
- * panels are much noisier than it. The reference program renders them on sub-pixels in
- * batches (chapters/reference.c), which reach the noise of twice the samples at random
- * positions nearly: see the measurements under DEPTH8_REFERENCE_SPP. */
+ * REFERENCE_SPP for chapters 4-8 (chapter 5 takes twice as many), DEPTH8_REFERENCE_SPP
+ * for the depth-8 image of chapters 2 and 3 (one image, so one reference, shared
+ * through the cache), whose panels are much noisier than it. The reference program
+ * renders on sub-pixels in batches (chapters/reference.c), which nearly reach the noise
+ * of twice the samples at random positions. Measured in `make figures` at 800 x 800
+ * (2 cores), random positions before, batches of sub-pixels now, noise = the RMS of
+ * the reference's standard errors:
+ *     depth 64:  256 spp 196.8 s noise 0.0263,  128 spp 89.0 s noise 0.0281
+ *                (Figure 7's 64-spp panel: reference share 35%, now 39%)
+ *     depth 8:   128 spp  94.6 s noise 0.0364,   64 spp 42.3 s noise 0.0416
+ *                (chapter 2's 64-spp panels: 4%, now 5%)
+ * and at a quarter of the size (experiment_quarter_size), where more pixels hold an
+ * edge, with less noise in less time:
+ *     depth 8:   256 spp  13.1 s noise 0.0442,  128 spp  5.3 s noise 0.0363
+ *     depth 64:  512 spp  27.4 s noise 0.0315,  256 spp 11.4 s noise 0.0241
+ *     exact:     512 spp  22.6 s noise 0.0313,  256 spp 10.5 s noise 0.0235
+ * Chapter 5's rough sphere keeps 256 (0.0030 both ways): its noise is not at edges. */
 #define REFERENCE_SPP 128
 #define DEPTH8_REFERENCE_SPP 64
 
