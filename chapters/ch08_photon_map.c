@@ -40,9 +40,9 @@
  *     images in the mirrors and the glass (lamp_mask): their edges' noise is the same in
  *     every estimator and at a quarter size would hide everything else.
  *
- * Both panels sample random positions in their pixels, as the reference does: a photon
- * pass is a render of its own, and sub-pixel centres would put every pass's samples in
- * the same places. The photon version uses one shadow ray (chapter 3's cheapest): with
+ * Both panels sample random positions in their pixels (the reference's batches of
+ * sub-pixels estimate the same image): a photon pass is a render of its own, and
+ * sub-pixel centres would put every pass's samples in the same places. The photon version uses one shadow ray (chapter 3's cheapest): with
  * the caustics gone, most of its error is at the edges of the lamp and of its images in
  * the mirrors, which are the same estimator in both panels and which only more camera
  * samples reduce. Photons per pass and the first radius scale with the image: per pass

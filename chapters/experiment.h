@@ -124,8 +124,8 @@ Image experiment_plot(const Plot *plot, int width, int height);
  * depth and, from chapter 4, its Fresnel mode; shadow rays and roulette do not change the
  * expectation), of the scene as loaded, with the roughness of the material named
  * `rough_material` (or none, NULL) set to `rough_sigma` (chapter 5's sweep), at the
- * options' size and --reference-spp samples per pixel of random positions, with a seed
- * independent of the panels'. Read from the cache, or rendered by the reference program
+ * options' size and --reference-spp samples per pixel (rounded up to whole batches of
+ * sub-pixels, chapters/reference.c), with a seed independent of the panels'. Read from the cache, or rendered by the reference program
  * first. Prints a line with its noise. */
 void experiment_path_reference(const Options *options, const Scene *scene,
                                const PathSettings *path, const char *rough_material,
