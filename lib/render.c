@@ -11,14 +11,6 @@
 
 #include "atomic_file.h"
 
-/* What one pixel has received so far: for the three channels and their mean (index 3),
- * Welford's running mean and M2 (render.h). */
-typedef struct {
-    double mean[4];
-    double m2[4];
-    uint32_t finite;   /* samples averaged in */
-} PixelSum;
-
 typedef struct {
     const Scene *scene;
     const RenderSettings *settings;
@@ -88,8 +80,7 @@ static void show_progress(Job *job)
             fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0);
 }
 
-/* Welford's update (render.h) with one finite sample. */
-static void accumulate(PixelSum *pixel, Vec3 radiance)
+void pixel_sum_add(PixelSum *pixel, Vec3 radiance)
 {
     double value[4] = {radiance.x, radiance.y, radiance.z, vec3_average(radiance)};
     double n = ++pixel->finite;
@@ -135,7 +126,7 @@ static void render_row(Worker *worker, int row)
             nonfinite++;
             continue;
         }
-        accumulate(&job->pixels[index], radiance);
+        pixel_sum_add(&job->pixels[index], radiance);
     }
     ray_counts_add(&worker->rays, rays);
     worker->samples += samples;
@@ -164,8 +155,7 @@ static void *work(void *argument)
     return NULL;
 }
 
-/* Mean and standard errors of every pixel from its Welford sums: sqrt(M2 / (n - 1) / n). */
-static void finish_images(const PixelSum *pixels, RenderResult *result)
+void pixel_sums_finish(const PixelSum *pixels, RenderResult *result)
 {
     for (int row = 0; row < result->image.height; row++) {
         for (int col = 0; col < result->image.width; col++) {
@@ -227,7 +217,7 @@ int render(const Scene *scene, const RenderSettings *settings, Estimator estimat
         r.nonfinite += workers[i].nonfinite;
     }
     r.interrupted = render_interrupted();
-    finish_images(pixels, &r);
+    pixel_sums_finish(pixels, &r);
     free(pixels);
     free(workers);
     free(threads);

@@ -63,6 +63,23 @@ typedef struct {
     int interrupted;     /* stopped early by SIGINT */
 } RenderResult;
 
+/* What one pixel has received so far: for the three channels and their mean (index 3),
+ * Welford's running mean and M2 (above) over `finite` values. render() keeps one per
+ * pixel of its samples; render_batches.h (chapter 7) of its batches' means. */
+typedef struct {
+    double mean[4];
+    double m2[4];
+    uint32_t finite;   /* values averaged in */
+} PixelSum;
+
+/* Welford's update with one finite value. */
+void pixel_sum_add(PixelSum *pixel, Vec3 radiance);
+
+/* Every pixel's mean and standard errors, sqrt(M2 / (n - 1) / n) (0 for n <= 1), from
+ * pixels[width * height] into result's image, std_error and average_std_error, which
+ * must already be allocated at that size. */
+void pixel_sums_finish(const PixelSum *pixels, RenderResult *result);
+
 /* The sample number of each pixel's own generator (camera_first_stratum). */
 #define RENDER_PIXEL_STREAM UINT64_MAX
 #if CHAPTER >= 7

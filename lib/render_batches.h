@@ -20,7 +20,8 @@
  * share nothing (rng_hash of the seed and the batch), and average them. Their means
  * x_1 .. x_B are independent draws of one distribution, so with xbar their average,
  *     Var(xbar) is estimated without bias by  sum_b (x_b - xbar)^2 / (B - 1) / B,
- * whatever the samples inside a batch are like. B - 1 degrees of freedom make each
+ * whatever the samples inside a batch are like: the same sums that render() keeps of a
+ * pixel's samples (PixelSum, render.h), kept of the batches' means. B - 1 degrees of freedom make each
  * pixel's estimate rough (with B = 8, its relative spread is about sqrt(2 / 7) = 53%),
  * but sums over many pixels, all that measure.h takes from it, are sharp. More batches
  * mean finer per-pixel estimates but coarser strata: 4, 8, 16 and 32 batches of 256 spp
