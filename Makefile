@@ -5,8 +5,11 @@
 #   make chapterN         build chapter N from chapter N's library and run it
 #                         (ARGS="--size 200 --spp 4" to change its settings; RUNS=1 to
 #                         measure each setting once, in the chapters that take --runs)
-#   make diff-chapterN    what chapter N adds to chapter N-1, as a unified diff
+#   make diff-chapterN    what chapter N adds to chapter N-1: the lesson first (lib/ and the
+#                         chapter's program), then its tests (TESTS=no: the lesson only)
 #   make source-chapterN  the clean source of chapter N in build/source/chapterN/
+#   make check-sources    every chapter's clean source: compiles alone, no markers left,
+#                         no placeholders, the lesson never reaches into the bench
 #   make sanitize         the tests under AddressSanitizer and UndefinedBehaviorSanitizer
 #   make fuzz             run the libFuzzer targets (scene reader, command line), each for
 #                         FUZZ_SECONDS
@@ -15,13 +18,16 @@
 #   make browser-test     open that page in headless Chromium and check every image loads
 #   make clean
 #
-# Chapters are snapshots of one source tree (SPEC §1). The first line of every file in
-# lib/, chapters/ and tests/ says which chapter introduces it, as "/* NAME (chapter N): ...";
-# code that a later chapter adds to an existing file sits in "#if CHAPTER >= N". Chapter N's
-# library is every file of chapters 1..N compiled with -DCHAPTER=N into build/chapterN/, and
-# chapter N's program links only that, so the compiler enforces what a chapter may use.
-# References (measure.h) are rendered by build/reference, built from the last chapter's
-# library, and re-rendered whenever that program is rebuilt.
+# The lesson and the bench. lib/ is the lesson: what the chapters teach. bench/ measures
+# and shows it (scene files, images, figures, references, errors, threads, the command
+# line); it is in no chapter's source. The first line of every file says which chapter
+# introduces it, as "/* NAME (chapter N): ..." (bench files: from which chapter on they
+# are built); code that a later chapter adds to an existing file sits in
+# "#if CHAPTER >= N". Chapter N's library is every lesson and bench file of chapters
+# 1..N compiled with -DCHAPTER=N into build/chapterN/, and chapter N's program links only
+# that, so the compiler enforces what a chapter may use. References (bench/measure.h) are
+# rendered by build/reference, built from the last chapter's library, and re-rendered
+# whenever that program is rebuilt.
 #
 # CC, CFLAGS and LDFLAGS are honoured; the flags the project requires are added to them.
 
@@ -33,6 +39,7 @@ FIGURES ?= $(BUILD)/figures
 ARGS    ?=
 RUNS    ?=
 QUICK   ?=
+TESTS   ?= yes
 FUZZ_SECONDS ?= 60
 
 ifneq ($(QUICK),)
@@ -41,17 +48,22 @@ endif
 
 # stb's headers are third-party: include them as system headers so -Werror judges only ours.
 # Evaluated when used (=, not :=), so after .ci/install-deps has run on a fresh machine.
+# Every estimator takes the arguments the Estimator type gives it, whether it uses them
+# or not (Whitted draws no random numbers): unused parameters are not warned about.
 PKG_CFLAGS  = $(patsubst -I%,-isystem %,$(shell pkg-config --cflags stb cmocka 2>/dev/null))
-REQUIRED   := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wpedantic -Werror -pthread
-ALL_CFLAGS  = $(REQUIRED) -Ilib -Ichapters $(PKG_CFLAGS) $(CFLAGS) -MMD -MP
+REQUIRED   := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wpedantic -Werror \
+              -Wno-unused-parameter -pthread
+ALL_CFLAGS  = $(REQUIRED) -Ilib -Ibench $(PKG_CFLAGS) $(CFLAGS) -MMD -MP
 LIBS        = $(shell pkg-config --libs stb 2>/dev/null) -lm -pthread
 TEST_LIBS   = $(shell pkg-config --libs cmocka 2>/dev/null) $(LIBS)
 DEPS_OK     := $(BUILD)/.deps-ok
 
 # ---- which chapter introduces each file -------------------------------------------------
-SOURCES  := $(wildcard lib/*.c lib/*.h chapters/*.c chapters/*.h tests/*.c tests/*.h)
-TAGS     := $(shell awk 'FNR == 1 && match($$0, /^\/\* [^ ]+ \(chapter [0-9]+\)/) { \
-                t = substr($$0, RSTART, RLENGTH); sub(/.*\(chapter /, "", t); sub(/\)/, "", t); \
+LESSON   := $(wildcard lib/*.c lib/*.h chapters/*.c tests/*.c tests/*.h)
+BENCH    := $(wildcard bench/*.c bench/*.h bench/tests/*.c bench/tests/*.h bench/fuzz/*.c)
+SOURCES  := $(LESSON) $(BENCH)
+TAGS     := $(shell awk 'FNR == 1 && match($$0, /^\/\* [^ ]+ \((bench, )?chapter [0-9]+\)/) { \
+                t = substr($$0, RSTART, RLENGTH); sub(/.*chapter /, "", t); gsub(/[^0-9]/, "", t); \
                 print FILENAME "=" t }' $(SOURCES))
 chapter_of = $(patsubst $(1)=%,%,$(filter $(1)=%,$(TAGS)))
 UNTAGGED := $(filter-out $(foreach t,$(TAGS),$(firstword $(subst =, ,$(t)))),$(SOURCES))
@@ -66,10 +78,12 @@ CHAPTERS := $(foreach p,$(PROGRAMS),$(call chapter_of,$(p)))
 FINAL    := $(lastword $(CHAPTERS))
 program_of = $(patsubst chapters/%.c,$(BUILD)/%,$(filter chapters/ch0$(1)_%,$(PROGRAMS)))
 
-LIB_SOURCES     := $(wildcard lib/*.c)
-SUPPORT_SOURCES := chapters/cli.c chapters/experiment.c
-TEST_SOURCES    := $(wildcard tests/test_*.c)
-REFERENCE_BIN   := $(BUILD)/reference
+LIB_SOURCES   := $(wildcard lib/*.c)
+BENCH_MAINS   := bench/reference.c bench/gallery_main.c bench/bench.c
+BENCH_SOURCES := $(filter-out $(BENCH_MAINS),$(wildcard bench/*.c))
+TEST_SOURCES  := $(wildcard tests/test_*.c bench/tests/test_*.c)
+REFERENCE_BIN := $(BUILD)/reference
+GALLERY       := $(BUILD)/gallery
 
 .PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery
 .DEFAULT_GOAL := all
@@ -87,7 +101,7 @@ $(BUILD)/chapter$(1)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $$(@D)
 	$$(CC) $$(ALL_CFLAGS) -DCHAPTER=$(1) -c $$< -o $$@
 
-$(BUILD)/chapter$(1)/libmc.a: $(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call upto,$(1),$(LIB_SOURCES) $(SUPPORT_SOURCES)))
+$(BUILD)/chapter$(1)/libmc.a: $(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call upto,$(1),$(LIB_SOURCES) $(BENCH_SOURCES)))
 	@rm -f $$@
 	$$(AR) rcs $$@ $$^
 
@@ -97,7 +111,10 @@ $(call program_of,$(1)): $(BUILD)/chapter$(1)/chapters/$(notdir $(call program_o
 $(BUILD)/chapter$(1)/tests/%: $(BUILD)/chapter$(1)/tests/%.o $(BUILD)/chapter$(1)/libmc.a
 	$$(CC) $$^ $$(LDFLAGS) $$(TEST_LIBS) -o $$@
 
-CHAPTER$(1)_TESTS := $(patsubst tests/%.c,$(BUILD)/chapter$(1)/tests/%,$(if $(filter $(1),$(FINAL)),$(call upto,$(1),$(TEST_SOURCES)),$(foreach t,$(TEST_SOURCES),$(if $(filter $(1),$(call chapter_of,$(t))),$(t)))))
+$(BUILD)/chapter$(1)/bench/tests/%: $(BUILD)/chapter$(1)/bench/tests/%.o $(BUILD)/chapter$(1)/libmc.a
+	$$(CC) $$^ $$(LDFLAGS) $$(TEST_LIBS) -o $$@
+
+CHAPTER$(1)_TESTS := $(patsubst %.c,$(BUILD)/chapter$(1)/%,$(if $(filter $(1),$(FINAL)),$(call upto,$(1),$(TEST_SOURCES)),$(foreach t,$(TEST_SOURCES),$(if $(filter $(1),$(call chapter_of,$(t))),$(t)))))
 ALL_TESTS += $$(CHAPTER$(1)_TESTS)
 
 .PHONY: chapter$(1) source-chapter$(1) diff-chapter$(1)
@@ -110,45 +127,69 @@ chapter$(1): $(call program_of,$(1)) $(REFERENCE_BIN)
 source-chapter$(1): | $(DEPS_OK)
 	@sh .ci/install-deps unifdef
 	@rm -rf $(BUILD)/source/chapter$(1)
-	@for f in $(call upto,$(1),$(filter-out chapters/ch%,$(SOURCES)) $(PROGRAMS)); do \
+	@for f in $(call upto,$(1),$(filter-out chapters/ch%,$(LESSON)) $(PROGRAMS)); do \
 	    mkdir -p $(BUILD)/source/chapter$(1)/$$$$(dirname $$$$f); \
 	    unifdef -x2 -DCHAPTER=$(1) -o $(BUILD)/source/chapter$(1)/$$$$f $$$$f || exit 1; \
 	done
 	@echo "wrote $(BUILD)/source/chapter$(1)/"
 
 diff-chapter$(1): source-chapter$(1) $(if $(filter-out 1,$(1)),source-chapter$(shell echo $$(($(1) - 1))))
-	@cd $(BUILD)/source && diff -ruN chapter$(shell echo $$(($(1) - 1))) chapter$(1) > ../diff-chapter$(1).diff; \
-	    [ $$$$? -le 1 ] && cat ../diff-chapter$(1).diff
+	@cd $(BUILD)/source && { diff -ruN chapter$(shell echo $$(($(1) - 1)))/lib chapter$(1)/lib; \
+	    diff -ruN chapter$(shell echo $$(($(1) - 1)))/chapters chapter$(1)/chapters; \
+	    if [ "$$(TESTS)" != no ]; then diff -ruN chapter$(shell echo $$(($(1) - 1)))/tests chapter$(1)/tests; fi; \
+	    true; } > ../diff-chapter$(1).diff && cat ../diff-chapter$(1).diff
 endef
 $(foreach n,$(CHAPTERS),$(eval $(call CHAPTER_RULES,$(n))))
 
-# The final chapter's tests keep their short path, build/tests/NAME.
-FINAL_TESTS := $(patsubst $(BUILD)/chapter$(FINAL)/tests/%,$(BUILD)/tests/%,$(CHAPTER$(FINAL)_TESTS))
+# The final chapter's tests keep a short path, build/tests/NAME.
+FINAL_TESTS := $(addprefix $(BUILD)/tests/,$(notdir $(CHAPTER$(FINAL)_TESTS)))
 $(BUILD)/tests/%: $(BUILD)/chapter$(FINAL)/tests/%
+	@mkdir -p $(@D)
+	cp $< $@
+$(BUILD)/tests/%: $(BUILD)/chapter$(FINAL)/bench/tests/%
 	@mkdir -p $(@D)
 	cp $< $@
 CHAPTER_TESTS := $(filter-out $(CHAPTER$(FINAL)_TESTS),$(ALL_TESTS))
 
-# The reference renderer: the final library's best estimator. It links the physics only,
-# not the files that draw figures, plots and tables, so that editing those does not make
-# every reference render again (the cache key holds this program's bytes and time).
-PRESENTATION    := $(wildcard lib/figure.c lib/plot.c lib/table.c lib/font.c lib/gallery.c)
-REFERENCE_OBJS  := $(patsubst %.c,$(BUILD)/chapter$(FINAL)/%.o,$(filter-out $(PRESENTATION),$(call upto,$(FINAL),$(LIB_SOURCES))))
-$(REFERENCE_BIN): $(BUILD)/chapter$(FINAL)/chapters/reference.o $(REFERENCE_OBJS)
+# The reference renderer: the final library's best estimator. It links the physics and
+# what measures it, not the files that draw figures, plots and tables, so that editing
+# those does not make every reference render again (the cache key holds this program's
+# bytes and time).
+PRESENTATION    := $(wildcard bench/figure.c bench/plot.c bench/table.c bench/font.c bench/gallery.c bench/experiment.c bench/cli.c)
+REFERENCE_OBJS  := $(patsubst %.c,$(BUILD)/chapter$(FINAL)/%.o,$(filter-out $(PRESENTATION),$(call upto,$(FINAL),$(LIB_SOURCES) $(BENCH_SOURCES))))
+$(REFERENCE_BIN): $(BUILD)/chapter$(FINAL)/bench/reference.o $(REFERENCE_OBJS)
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 
 CHAPTER_BINS := $(foreach n,$(CHAPTERS),$(call program_of,$(n)))
 all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) $(CHAPTER_TESTS) $(FINAL_TESTS)
 
-# The clean source of every chapter compiles on its own, with no chapter markers left.
+# Every chapter's clean source: no chapter markers left; its lesson (lib/) compiles
+# with nothing but its own headers (it never includes the bench, nor a later chapter),
+# its program and tests with the bench's; no placeholder statement "(void) x;" in its
+# lesson; at most 10 chapter markers in all of lib/*.c; no comment cites a document
+# outside the repository or an issue; each lesson file opens with at most 12 comment
+# lines.
 check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 	@for n in $(CHAPTERS); do \
 	    tree=$(BUILD)/source/chapter$$n; \
 	    if grep -rln '^#if.*CHAPTER' $$tree; then echo "chapter markers left in $$tree"; exit 1; fi; \
-	    for f in $$(find $$tree -name '*.c'); do \
-	        $(CC) $(REQUIRED) -I$$tree/lib -I$$tree/chapters $(PKG_CFLAGS) -fsyntax-only $$f || exit 1; \
+	    if grep -rnE '^\s*\(void\)' $$tree/lib; then echo "a placeholder in $$tree/lib"; exit 1; fi; \
+	    for f in $$tree/lib/*.c; do \
+	        $(CC) $(REQUIRED) -I$$tree/lib -fsyntax-only $$f || { echo "$$f: the lesson alone does not compile"; exit 1; }; \
 	    done; \
-	done; echo "the clean source of chapters $(CHAPTERS) compiles"
+	    for f in $$(find $$tree/chapters $$tree/tests -name '*.c'); do \
+	        $(CC) $(REQUIRED) -I$$tree/lib -Ibench $(PKG_CFLAGS) -fsyntax-only $$f || exit 1; \
+	    done; \
+	done; \
+	markers=$$(grep -c '^#if.*CHAPTER' lib/*.c | awk -F: '{ s += $$2 } END { print s }'); \
+	if [ $$markers -gt 10 ]; then echo "$$markers chapter markers in lib/*.c (at most 10)"; exit 1; fi; \
+	if grep -rnE 'SPEC|[Ii]ssue [0-9]|\.\./shared' lib chapters tests bench; then \
+	    echo "comments cite documents outside the repository or issues"; exit 1; fi; \
+	for f in lib/*.c lib/*.h; do \
+	    n=$$(awk 'NR == 1 && !/^\/\*/ { print 0; exit } /\*\// { print NR; exit }' $$f); \
+	    if [ "$$n" -gt 12 ]; then echo "$$f: its first comment has $$n lines (at most 12)"; exit 1; fi; \
+	done; \
+	echo "the clean source of chapters $(CHAPTERS) compiles; $$markers chapter markers in lib/*.c"
 
 # Each test program is run from the top directory (some read scenes/ and run the chapter
 # programs): first every chapter's own tests in its own snapshot, then all of them in the
@@ -163,7 +204,7 @@ test: all check-sources
 	echo "programs: $$passed passed, $$failed failed"; \
 	[ $$failed -eq 0 ]
 
-# The gallery (chapters/gallery.c): $(FIGURES)/index.html, one page with every chapter's
+# The gallery (bench/gallery_main.c): $(FIGURES)/index.html, one page with every chapter's
 # figures, tables, plots and diff. `make figures` records its run in $(FIGURES)/run.txt
 # (start, end, seconds, threads, QUICK), writes each chapter's diff and then the page.
 # It builds every program first, nproc compilers at a time, and then runs the chapters
@@ -172,9 +213,8 @@ test: all check-sources
 # `make browser-test` opens it in headless Chromium. DIFFS: the folder with the
 # diff-chapterN.diff files to show.
 DIFFS   ?= $(BUILD)
-GALLERY := $(BUILD)/gallery
 .PHONY: gallery browser-test
-$(GALLERY): $(BUILD)/chapter$(FINAL)/chapters/gallery.o $(BUILD)/chapter$(FINAL)/libmc.a
+$(GALLERY): $(BUILD)/chapter$(FINAL)/bench/gallery_main.o $(BUILD)/chapter$(FINAL)/libmc.a
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 gallery: $(GALLERY)
 	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
@@ -190,7 +230,7 @@ figures:
 	@for n in $(CHAPTERS); do $(MAKE) --no-print-directory diff-chapter$$n > /dev/null || exit 1; done
 	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
 browser-test: $(GALLERY)
-	sh tests/browser_gallery.sh $(FIGURES)
+	sh bench/browser_gallery.sh $(FIGURES)
 
 sanitize:
 	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize \
@@ -200,37 +240,37 @@ sanitize:
 # The libFuzzer targets, under AddressSanitizer and UndefinedBehaviorSanitizer, each for
 # FUZZ_SECONDS: fuzz_scene_file gives any bytes to the scene reader; fuzz_argv gives any
 # command line to cli_parse, compiled with its exit() renamed so that it jumps back to
-# the target instead of ending the process (tests/fuzz_argv.c).
+# the target instead of ending the process (bench/fuzz/fuzz_argv.c).
 FUZZ_DIR       := $(BUILD)/fuzz
 FUZZ_SANITIZE  := address,undefined -fno-sanitize-recover=all
-FUZZ_FLAGS     := $(REQUIRED) -DCHAPTER=$(FINAL) -Ilib -Ichapters -g -O1
-FUZZ_SCENE_SRC := $(addprefix lib/,scene_file.c scene.c bvh.c triangle.c sphere.c camera.c ray.c vec.c rng.c)
-FUZZ_BINS      := $(FUZZ_DIR)/fuzz_scene_file $(FUZZ_DIR)/fuzz_argv
+FUZZ_FLAGS     := $(REQUIRED) -DCHAPTER=$(FINAL) -Ilib -Ibench -g -O1
+FUZZ_SCENE_SRC := bench/scene_file.c $(addprefix lib/,scene.c bvh.c triangle.c sphere.c camera.c ray.c vec.c rng.c)
 
-$(FUZZ_DIR)/fuzz_scene_file: tests/fuzz_scene_file.c $(FUZZ_SCENE_SRC) | $(DEPS_OK)
+$(FUZZ_DIR)/fuzz_scene_file: bench/fuzz/fuzz_scene_file.c $(FUZZ_SCENE_SRC) | $(DEPS_OK)
 	@sh .ci/install-deps clang
 	@mkdir -p $(@D)
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer,$(FUZZ_SANITIZE) $^ -lm -o $@
 
-$(FUZZ_DIR)/cli.o: chapters/cli.c chapters/cli.h | $(DEPS_OK)
+$(FUZZ_DIR)/cli.o: bench/cli.c bench/cli.h | $(DEPS_OK)
 	@sh .ci/install-deps clang
 	@mkdir -p $(@D)
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link,$(FUZZ_SANITIZE) -Dexit=fuzz_argv_exit -c $< -o $@
 
-$(FUZZ_DIR)/fuzz_argv: tests/fuzz_argv.c $(FUZZ_DIR)/cli.o
+$(FUZZ_DIR)/fuzz_argv: bench/fuzz/fuzz_argv.c $(FUZZ_DIR)/cli.o
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer,$(FUZZ_SANITIZE) $^ -lm -o $@
 
-# New inputs go to the first directory, under $(FUZZ_DIR); the seeds stay in tests/.
+# New inputs go to the first directory, under $(FUZZ_DIR); the seeds stay in bench/fuzz/.
+FUZZ_BINS := $(FUZZ_DIR)/fuzz_scene_file $(FUZZ_DIR)/fuzz_argv
 fuzz: $(FUZZ_BINS)
 	@mkdir -p $(FUZZ_DIR)/corpus/scene_file $(FUZZ_DIR)/corpus/argv
 	$(FUZZ_DIR)/fuzz_scene_file -max_total_time=$(FUZZ_SECONDS) -timeout=5 -max_len=4096 \
-	    $(FUZZ_DIR)/corpus/scene_file tests/fuzz_corpus/scene_file scenes
+	    $(FUZZ_DIR)/corpus/scene_file bench/fuzz/corpus/scene_file scenes
 	$(FUZZ_DIR)/fuzz_argv -max_total_time=$(FUZZ_SECONDS) -timeout=5 -max_len=1024 \
-	    -close_fd_mask=3 $(FUZZ_DIR)/corpus/argv tests/fuzz_corpus/argv
+	    -close_fd_mask=3 $(FUZZ_DIR)/corpus/argv bench/fuzz/corpus/argv
 
 # The benchmark: speed, not correctness (BENCH_ARGS="--size 400" to change it).
 BENCH_ARGS ?=
-$(BUILD)/bench: $(BUILD)/chapter$(FINAL)/tests/bench.o $(BUILD)/chapter$(FINAL)/libmc.a
+$(BUILD)/bench: $(BUILD)/chapter$(FINAL)/bench/bench.o $(BUILD)/chapter$(FINAL)/libmc.a
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 bench: $(BUILD)/bench $(REFERENCE_BIN)
 	$(BUILD)/bench $(BENCH_ARGS)

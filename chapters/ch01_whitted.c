@@ -28,7 +28,7 @@ int main(int argc, char **argv)
     experiment_start(argc, argv, &info, NEEDS_POINT_LIGHT, &options, &scene);
     WhittedSettings whitted = {options.depth};
     RenderSettings settings =
-        experiment_render_settings(&options, &scene, 1, PIXEL_CENTRE, "Whitted");
+        experiment_render_settings(&options, &scene, 1, "Whitted");
     RenderResult result;
     experiment_render(&scene, &settings, whitted_radiance, &whitted, &result);
 

@@ -62,7 +62,7 @@ int main(int argc, char **argv)
         char settings_text[96];
         snprintf(settings_text, sizeof settings_text, "%d spp %s, M=0 depth=%d", panels[i].spp,
                  panels[i].sampling == PIXEL_RANDOM ? "random" : "sub-pixels", options.depth);
-        rows[i] = experiment_path_row(&options, &scene, &hitting, panels[i].spp, panels[i].sampling,
+        rows[i] = experiment_path_row(&options, &scene, path_radiance, &hitting, panels[i].spp, panels[i].sampling,
                                       panels[i].name, settings_text, &reference, &images[i]);
         experiment_caption(&rows[i], panels[i].title, captions[i], sizeof captions[i]);
     }

@@ -27,6 +27,7 @@
 
 #include "experiment.h"
 #include "path.h"
+#include "path_direct.h"
 
 static const int SWEEP[] = {0, 1, 2, 4, 8, 16, 30};
 enum { SWEEP_COUNT = sizeof SWEEP / sizeof SWEEP[0], SWEEP_SPP = 4 };
@@ -38,7 +39,8 @@ static TableRow render_m(const Options *options, const Scene *scene, const Refer
     PathSettings path = {.max_depth = options->depth, .shadow_rays = m};
     char settings_text[96];
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d depth=%d", spp, m, options->depth);
-    return experiment_path_row(options, scene, &path, spp, sampling, name, settings_text,
+    Estimator estimate = m == 0 ? path_radiance : path_direct_radiance;
+    return experiment_path_row(options, scene, estimate, &path, spp, sampling, name, settings_text,
                                reference, image);
 }
 

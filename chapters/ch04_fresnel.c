@@ -28,7 +28,7 @@
 #include "atomic_file.h"
 #include "experiment.h"
 #include "fresnel.h"
-#include "path.h"
+#include "path_direct.h"
 #include "plot.h"
 #include "schlick.h"
 #include "snell.h"
@@ -61,10 +61,10 @@ static TableRow render_panel(const Options *options, const Scene *scene,
 {
     PathSettings path = {.max_depth = depth, .shadow_rays = options->shadow_rays, .fresnel = fresnel};
     char description[64], settings_text[96];
-    path_describe(&path, description, sizeof description);
+    describe_path(&path, description, sizeof description);
     snprintf(settings_text, sizeof settings_text, "%d spp, %s", options->spp, description);
     RenderSettings settings = experiment_render_settings(options, scene, options->spp, sampling, name);
-    return experiment_runs(options, scene, &settings, path_radiance, &path, name,
+    return experiment_runs(options, scene, &settings, path_direct_radiance, &path, name,
                            settings_text, reference, 1, result);
 }
 

@@ -21,7 +21,8 @@
 
 #include "experiment.h"
 #include "oren_nayar.h"
-#include "path.h"
+#include "path_direct.h"
+#include "scene_file.h"
 
 static const double SIGMAS[] = {0.0, 0.25, 0.5, 1.0};
 enum { SIGMA_COUNT = sizeof SIGMAS / sizeof SIGMAS[0] };
@@ -44,7 +45,7 @@ static TableRow render_panel(const Options *options, const Scene *scene,
     char settings_text[96];
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d depth=%d, sigma=%g",
              options->spp, options->shadow_rays, options->depth, sigma);
-    return experiment_path_row(options, scene, &path, options->spp, sampling, name,
+    return experiment_path_row(options, scene, path_direct_radiance, &path, options->spp, sampling, name,
                                settings_text, reference, image);
 }
 
@@ -129,8 +130,8 @@ static double eye_lit_ratio(double sigma)
 
 /* The first sphere of material `rough` and the first Lambertian sphere, to compare;
  * exit 2 when the scene lacks either. */
-static void find_spheres(const Scene *scene, int rough, const Sphere **rough_sphere,
-                         const Sphere **lambert_sphere)
+static void find_spheres(const Options *options, const Scene *scene, int rough,
+                         const Sphere **rough_sphere, const Sphere **lambert_sphere)
 {
     *rough_sphere = *lambert_sphere = NULL;
     for (int i = 0; i < scene->sphere_count; i++) {
@@ -142,7 +143,7 @@ static void find_spheres(const Scene *scene, int rough, const Sphere **rough_sph
     }
     if (!*rough_sphere || !*lambert_sphere)
         cli_fail(2, "%s:%d: no sphere of material 'rough', or no Lambertian sphere: %s "
-                    "compares the two", scene->source, scene->line_count, cli_program);
+                    "compares the two", options->scene, options->scene_lines, cli_program);
 }
 
 int main(int argc, char **argv)
@@ -160,12 +161,12 @@ int main(int argc, char **argv)
     Options options;
     Scene scene;
     experiment_start(argc, argv, &info, NEEDS_AREA_LIGHT, &options, &scene);
-    int rough = scene_find_material(&scene, "rough");
+    int rough = scene_file_material(&scene, "rough");
     if (rough < 0 || scene.materials[rough].kind != MATERIAL_OREN_NAYAR)
         cli_fail(2, "%s:%d: no oren_nayar material named 'rough': %s sweeps its sigma",
-                 scene.source, scene.line_count, cli_program);
+                 options.scene, options.scene_lines, cli_program);
     const Sphere *rough_sphere, *lambert_sphere;
-    find_spheres(&scene, rough, &rough_sphere, &lambert_sphere);
+    find_spheres(&options, &scene, rough, &rough_sphere, &lambert_sphere);
 
     /* Figure 10: the scene as it is. */
     double file_sigma = scene.materials[rough].sigma;

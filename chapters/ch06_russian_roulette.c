@@ -27,7 +27,7 @@
 #include <stdio.h>
 
 #include "experiment.h"
-#include "path.h"
+#include "path_roulette.h"
 
 /* The last point, 0, is not a constant alpha but roulette with bounded weights. */
 static const double SWEEP[] = {0.01, 0.05, 0.1, 0.25, 0.5, 0.75, 0.9, 1.0, 0.0};
@@ -57,7 +57,7 @@ static TableRow measure_alpha(const Options *options, const Scene *scene,
     }
     RenderSettings settings =
         experiment_render_settings(options, scene, options->spp, PIXEL_RANDOM, name);
-    TableRow row = experiment_runs(options, scene, &settings, path_radiance, &path, name,
+    TableRow row = experiment_runs(options, scene, &settings, path_roulette_radiance, &path, name,
                                    settings_text, reference, 0, result);
     row.infinite_variance = experiment_infinite_variance(scene, &path);
     return row;
@@ -95,7 +95,7 @@ int main(int argc, char **argv)
         snprintf(name, sizeof name, "ch06_figure12_alpha%g", figure_alpha[i]);
         settings_text_for(&options, figure_alpha[i], settings_text, sizeof settings_text);
         PathSettings path = {.max_depth = options.depth, .shadow_rays = options.shadow_rays, .rr_survival = figure_alpha[i]};
-        rows[i] = experiment_path_row(&options, &scene, &path, options.spp, PIXEL_SUBPIXELS, name,
+        rows[i] = experiment_path_row(&options, &scene, path_roulette_radiance, &path, options.spp, PIXEL_SUBPIXELS, name,
                                       settings_text, &reference, &images[i]);
         experiment_caption(&rows[i], i == 0 ? "Figure 12, left" : "Figure 12, right",
                            captions[i], sizeof captions[i]);

@@ -49,7 +49,8 @@
 #include <string.h>
 
 #include "experiment.h"
-#include "path.h"
+#include "path_final.h"
+#include "path_roulette.h"
 #include "plot.h"
 #include "sphere_guide.h"
 
@@ -87,16 +88,18 @@ static void reference_for(const Options *options, const Scene *scene, Reference 
     experiment_path_reference(options, scene, &estimator, NULL, 0.0, reference);
 }
 
-/* One estimator as a table row; with `image`, a panel (experiment_path_row). */
+/* The final estimator with these settings as a table row; with `image`, a panel
+ * (experiment_path_row). */
 static TableRow render_path(const Options *options, const Scene *scene, const Reference *reference,
                             const PathSettings *path, int spp, const char *name, const char *note,
                             Image *image)
 {
     char description[128], settings_text[192];
-    path_describe(path, description, sizeof description);
+    describe_path(path, description, sizeof description);
     snprintf(settings_text, sizeof settings_text, "%d spp, %s%s", spp, description, note);
     PixelSampling sampling = options->strata ? PIXEL_STRATIFIED : PIXEL_SUBPIXELS;
-    return experiment_path_row(options, scene, path, spp, sampling, name, settings_text, reference,
+    return experiment_path_row(options, scene, path_final_radiance, path, spp, sampling, name,
+                               settings_text, reference,
                                image);
 }
 
@@ -108,7 +111,8 @@ static TableRow render_setting(const Options *options, const Scene *scene,
     PathSettings path = {.max_depth = options->depth, .shadow_rays = shadow_rays, .fresnel = options->fresnel, .rr_survival = rr};
     char settings_text[96];
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d, rr=%g%s", spp, shadow_rays, rr, note);
-    return experiment_path_row(options, scene, &path, spp, PIXEL_SUBPIXELS, name, settings_text,
+    return experiment_path_row(options, scene, path_roulette_radiance, &path, spp, PIXEL_SUBPIXELS,
+                               name, settings_text,
                                reference, image);
 }
 
@@ -116,11 +120,11 @@ static TableRow render_setting(const Options *options, const Scene *scene,
  * constant alpha if given), the mirror's image of the lamp at every diffuse hit, bounces
  * aimed at the spheres. No mis: in this room it changes nothing measurable (see the
  * levers table) for about 2% more work. */
-static PathSettings final_estimator(const Options *options)
+static PathSettings final_estimator(const Options *options, const MirrorPlanes *mirrors)
 {
     PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays,
                          .fresnel = options->fresnel, .mirror_light = options->depth,
-                         .sphere_guide = SPHERE_GUIDE_STRENGTH};
+                         .mirrors = mirrors, .sphere_guide = SPHERE_GUIDE_STRENGTH};
     if (cli_given(options, FLAG_RR))
         path.rr_survival = options->rr;
     else
@@ -128,10 +132,11 @@ static PathSettings final_estimator(const Options *options)
     return path;
 }
 
-static void final_image(const Options *options, const Scene *scene, const Reference *reference)
+static void final_image(const Options *options, const Scene *scene, const Reference *reference,
+                        const MirrorPlanes *mirrors)
 {
     Image image;
-    PathSettings path = final_estimator(options);
+    PathSettings path = final_estimator(options, mirrors);
     TableRow row = render_path(options, scene, reference, &path, options->spp, "ch07_figure7",
                                options->strata ? " strata" : "", &image);
     char caption[512];
@@ -175,7 +180,7 @@ static void table1(const Options *options, const Scene *scene, const Reference *
  * this chapter's old default; the last row is the final image's estimator. */
 #define LEVER_SPP 16
 #define LEVER_STEPS 8
-static void levers(const Options *options, const Scene *scene)
+static void levers(const Options *options, const Scene *scene, const MirrorPlanes *mirrors)
 {
     Options small = *options, stratified;
     small.size = cli_quarter(options->size, 16);
@@ -198,6 +203,7 @@ static void levers(const Options *options, const Scene *scene)
     steps[3].mis = 1;
     steps[4] = steps[3];
     steps[4].mirror_light = small.depth;
+    steps[4].mirrors = mirrors;
     steps[5] = steps[4];
     steps[5].mis = 0;
     steps[6] = steps[5];
@@ -306,15 +312,19 @@ int main(int argc, char **argv)
     Options options;
     Scene scene;
     experiment_start(argc, argv, &info, NEEDS_AREA_LIGHT, &options, &scene);
+    MirrorPlanes mirrors;
+    if (mirror_light_find_planes(&scene, &mirrors) != 0)
+        cli_fail(1, "out of memory");
     Reference reference;
     reference_for(&options, &scene, &reference);
-    final_image(&options, &scene, &reference);
+    final_image(&options, &scene, &reference, &mirrors);
     Options report = options; /* the report's estimators: independent numbers */
     report.strata = 0;
     table1(&report, &scene, &reference);
     measure_reference_free(&reference);
-    levers(&options, &scene);
+    levers(&options, &scene, &mirrors);
     convergence(&report, &scene);
+    mirror_planes_free(&mirrors);
     scene_free(&scene);
     return 0;
 }

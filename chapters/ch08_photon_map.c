@@ -54,6 +54,7 @@
 #include "atomic_file.h"
 #include "experiment.h"
 #include "plot.h"
+#include "path_roulette.h"
 #include "ppm.h"
 
 /* The photon version's settings, for an image 800 pixels wide (they scale: see above). */
@@ -115,7 +116,7 @@ static void render_ppm(const Scene *scene, const RenderSettings *settings, const
 {
     render_install_interrupt();
     if (ppm_render(scene, settings, ppm, result) != 0)
-        cli_fail(1, "out of memory rendering %d x %d with photons", settings->width, settings->height);
+        cli_fail(1, "out of memory rendering %d x %d with photons", settings->image.width, settings->image.height);
     experiment_exit_if_interrupted(&result->render, NULL);
 }
 
@@ -206,11 +207,11 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
     RenderSettings settings = experiment_render_settings(options, scene, options->spp,
                                                          PIXEL_RANDOM, "chapter 7's path tracer");
     char description[64], text[96];
-    path_describe(&path, description, sizeof description);
+    describe_path(&path, description, sizeof description);
     snprintf(text, sizeof text, "%d spp, %s", options->spp, description);
     RenderResult traced;
     double cpu_start = stats_cpu_now();
-    experiment_render(scene, &settings, path_radiance, &path, &traced);
+    experiment_render(scene, &settings, path_roulette_radiance, &path, &traced);
     double path_cpu = stats_cpu_now() - cpu_start;
     experiment_write_image(options, "ch08_path", &traced.image, PANEL_EXPOSURE);
     experiment_exit_if_interrupted(&traced, "ch08_path");
@@ -218,7 +219,7 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
     rows[0] = experiment_row("ch08_path", text, &traced);
     measure_fill_row(&rows[0], &traced.image, reference);
 
-    PpmSettings ppm = photon_settings(options, settings.width, settings.height,
+    PpmSettings ppm = photon_settings(options, settings.image.width, settings.image.height,
                                       PPM_SPP_PER_PASS, MAX_PASSES);
     ppm.cpu_seconds = path_cpu;
     settings.label = "photon map";
@@ -363,7 +364,7 @@ static void measure_path(const Options *small, const Scene *scene, const Referen
         RenderSettings settings = seeded_settings(small, scene, k, spp);
         RenderResult result;
         double cpu = stats_cpu_now();
-        experiment_render(scene, &settings, path_radiance, &path, &result);
+        experiment_render(scene, &settings, path_roulette_radiance, &path, &result);
         cpu = stats_cpu_now() - cpu;
         experiment_exit_if_interrupted(&result, NULL);
         seeds_add(&seeds, &result.image, result.seconds, cpu, &references[0]);
@@ -440,18 +441,16 @@ static void write_measurements(const Options *options, const Measurement *rows, 
 static unsigned char *lamp_mask(const Options *small, const Scene *scene, int *left_out)
 {
     PhotonMap empty;
-    RayCounts counts = {0, 0, 0};
-    PhotonMapSettings none = {0, PHOTON_CAUSTIC, small->fresnel, 0, 1};
-    if (photon_map_build(&empty, scene, &none, &counts) != 0)
+    if (photon_map_build(&empty, NULL, 0, 0) != 0)
         cli_fail(1, "out of memory");
     CausticPathSettings without = {chapter7_estimator(small), &empty, 1.0};
     Options quiet = *small;
     quiet.quiet = 1;
     RenderSettings settings = experiment_render_settings(&quiet, scene, 16, PIXEL_RANDOM, "mask");
     RenderResult result;
-    experiment_render(scene, &settings, path_radiance_caustics, &without, &result);
+    experiment_render(scene, &settings, path_caustics_radiance, &without, &result);
     experiment_exit_if_interrupted(&result, NULL);
-    int w = settings.width, h = settings.height;
+    int w = settings.image.width, h = settings.image.height;
     unsigned char *lamp = calloc((size_t)w * h, 1);
     if (!lamp)
         cli_fail(1, "out of memory");

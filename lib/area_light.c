@@ -44,10 +44,8 @@ ShadowRay area_light_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, con
     Vec3 f = diffuse_brdf(m, n, wi, wo);
     ray.value = vec3_scale(vec3_mul(light.emission, f),
                            scene->light_area * cos_alpha * cos_beta / distance2);
-#if CHAPTER >= 7
     ray.wi = wi;
     ray.pdf = area_light_pdf(scene, sqrt(distance2), cos_beta);
-#endif
     return ray;
 }
 
@@ -59,10 +57,8 @@ Vec3 area_light_direct(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Materi
         sum = vec3_add(sum, area_light_shadow_ray(scene, x, n, wo, m, rng, counts).value);
     return vec3_scale(sum, 1.0 / shadow_rays);
 }
-#if CHAPTER >= 7
 
 double area_light_pdf(const Scene *scene, double distance, double cos_beta)
 {
     return distance * distance / (scene->light_area * cos_beta);
 }
-#endif

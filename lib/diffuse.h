@@ -1,30 +1,25 @@
-/* diffuse.h (chapter 2): the diffuse materials' BRDF and sampling in world space.
+/* diffuse.h (chapter 2): the diffuse materials' BRDF and sampling, in world space.
  *
- * Introduced in chapter 2. Lambertian (eq. 8) and Oren-Nayar (eqs. 13-14) surfaces are
- * both sampled with the cosine-weighted hemisphere (hemisphere.h, pdf cos/pi), so a
- * sampled direction carries the weight
- *     f cos / pdf = rho                      (Lambert)
- *                 = rho * oren_nayar_factor  (Oren-Nayar).
- * The BRDFs themselves work in the local frame with the normal as +z (lambert.h,
- * oren_nayar.h); this file moves directions into and out of that frame.
+ * A diffuse surface is sampled by the cosine-weighted hemisphere (hemisphere.h) around
+ * its normal, so a sampled direction carries the weight f cos / pdf = rho for Lambert
+ * (eq. 8) and, from chapter 5, rho times oren_nayar_factor for Oren-Nayar. The BRDFs
+ * themselves work in the local frame, normal +z; this file moves directions into it.
  */
 #ifndef DIFFUSE_H
 #define DIFFUSE_H
 
 #include "material.h"
 
-/* f(wi, wo) for a Lambert or Oren-Nayar material at a surface with unit normal n
- * (facing wo); wi and wo are unit directions away from the surface. */
+/* f(wi, wo) at a surface with unit normal n facing wo; wi and wo are unit directions
+ * away from the surface. */
 Vec3 diffuse_brdf(const Material *m, Vec3 n, Vec3 wi, Vec3 wo);
 
-/* Sample wi by the cosine-weighted hemisphere around n; returns the weight
- * f cos / pdf and the direction in *wi. */
+/* Draw wi from the cosine-weighted hemisphere around n with u1, u2 in [0, 1); returns
+ * the weight f cos / pdf. */
 Vec3 diffuse_sample(const Material *m, Vec3 n, Vec3 wo, double u1, double u2, Vec3 *wi);
 
-#if CHAPTER >= 7
-/* The density in solid angle with which diffuse_sample draws wi: cos / pi (hemisphere.h),
- * 0 below the surface. Multiple importance sampling (mis.h) needs it. */
+/* The density in solid angle with which diffuse_sample draws wi: cos / pi above the
+ * surface, 0 below it. */
 double diffuse_pdf(Vec3 n, Vec3 wi);
-#endif
 
 #endif

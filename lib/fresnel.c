@@ -1,5 +1,4 @@
-/* fresnel.c (chapter 4): exact Fresnel reflectance, eqs. 3-5 with the corrected labels of
- * SPEC §8.3 (chapter 4). See fresnel.h. */
+/* fresnel.c (chapter 4): the exact Fresnel reflectance. See fresnel.h. */
 #include "fresnel.h"
 
 #include <math.h>
@@ -27,9 +26,9 @@ static Polarised fresnel_polarised(double cos_i, double n_i, double n_t)
         r.s = r.p = 1.0;
         return r;
     }
-    /* R_s: the formula the report labels R_p, eq. 4 (SPEC §8.3). */
+    /* R_s: the formula the report labels R_p, eq. 4. */
     r.s = squared_ratio(n_i * cos_i - n_t * cos_t, n_i * cos_i + n_t * cos_t);
-    /* R_p: the formula the report labels R_s, eq. 5 (SPEC §8.3). */
+    /* R_p: the formula the report labels R_s, eq. 5. */
     r.p = squared_ratio(n_i * cos_t - n_t * cos_i, n_i * cos_t + n_t * cos_i);
     return r;
 }

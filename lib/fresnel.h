@@ -1,25 +1,11 @@
-/* fresnel.h (chapter 4): the exact Fresnel reflectance of a smooth dielectric interface (report
- * §3.5.2, eqs. 3-5).
+/* fresnel.h (chapter 4): the exact Fresnel reflectance of a smooth dielectric (report
+ * §3.5.2, eqs. 3-5), which chapter 4 compares with Schlick's (schlick.h).
  *
- * Introduced in chapter 4, which compares it with Schlick's approximation (schlick.h).
- * Light meeting the interface between indices n_i and n_t at incidence angle theta_i
- * is partly reflected and partly refracted to theta_t (Snell's law, snell.h). The
- * reflected fraction depends on the polarisation. With cos_i = cos(theta_i) and
- * cos_t = cos(theta_t):
- *   s-polarised (electric field perpendicular to the plane of incidence; eq. 4):
- *       R_s = ((n_i cos_i - n_t cos_t) / (n_i cos_i + n_t cos_t))^2
- *   p-polarised (electric field in the plane of incidence; eq. 5):
- *       R_p = ((n_i cos_t - n_t cos_i) / (n_i cos_t + n_t cos_i))^2
- *   unpolarised light, half of each:   R = (R_s + R_p) / 2                    (eq. 3)
- * Erratum (SPEC §8.3): the report's eq. 4 is labelled R_p but is R_s, and eq. 5 the
- * other way round; their average R, which the renderer uses, is the same either way.
- *
- * Some landmarks the tests check: at normal incidence R_s = R_p = ((n_i - n_t) /
- * (n_i + n_t))^2 (Schlick's R0); at Brewster's angle tan(theta_i) = n_t / n_i the
- * p-polarised part vanishes, R_p = 0; at grazing incidence R = 1. Leaving the denser
- * medium beyond the critical angle (SPEC §8.2) there is no refracted ray and R = 1
- * (total internal reflection); R rises continuously to 1 as the angle approaches it.
- * When n_i = n_t there is no interface and R = 0 at every angle.
+ *     R_s = ((n_i cos_i - n_t cos_t) / (n_i cos_i + n_t cos_t))^2    (eq. 4)
+ *     R_p = ((n_i cos_t - n_t cos_i) / (n_i cos_t + n_t cos_i))^2    (eq. 5)
+ *     R = (R_s + R_p) / 2                                              (eq. 3)
+ * Erratum: the report labels eq. 4 R_p and eq. 5 R_s; their average is unaffected.
+ * Beyond the critical angle R = 1 (total internal reflection); with n_i = n_t, R = 0.
  */
 #ifndef FRESNEL_H
 #define FRESNEL_H

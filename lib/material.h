@@ -1,8 +1,8 @@
-/* material.h (chapter 1): what a surface does with light, as the scene file declares it (SPEC §4).
+/* material.h (chapter 1): what a surface does with light, as the scene file declares it.
  *
- * Introduced in chapter 1; each kind's physics lives in its own file: lambert.h
- * (eq. 8), oren_nayar.h (eqs. 13-14), mirror.h, snell.h, schlick.h and fresnel.h
- * (eqs. 2-7). A material is plain data so the scene can be a flat array of them.
+ * Plain data, so the scene is a flat array of materials; each kind's physics is in its
+ * own file: lambert.h, mirror.h, snell.h, schlick.h and, from later chapters,
+ * fresnel.h and oren_nayar.h.
  */
 #ifndef MATERIAL_H
 #define MATERIAL_H
@@ -13,26 +13,34 @@
 
 typedef enum {
     MATERIAL_LAMBERT,
-    MATERIAL_OREN_NAYAR,
     MATERIAL_MIRROR,
     MATERIAL_GLASS,
-    MATERIAL_LIGHT
+    MATERIAL_LIGHT,
+#if CHAPTER >= 5
+    MATERIAL_OREN_NAYAR,
+#endif
 } MaterialKind;
 
 typedef struct {
     char name[MATERIAL_NAME_MAX];
     MaterialKind kind;
-    Vec3 reflectance; /* rho of the diffuse kinds (BRDF rho/pi), or the mirror's colour */
+    Vec3 reflectance; /* rho of a diffuse surface (BRDF rho/pi), or the mirror's colour */
     Vec3 emission;    /* emitted radiance Le, from the front side only */
-    double sigma;     /* Oren-Nayar roughness: std. dev. of facet slope, radians */
     double ior;       /* glass: index of refraction; the outside medium has index 1 */
+#if CHAPTER >= 5
+    double sigma;     /* Oren-Nayar roughness: std. dev. of facet slope, radians */
+#endif
 } Material;
 
-/* Lambertian and Oren-Nayar surfaces: those that scatter diffusely, where shadow rays
- * are sent and Russian roulette may end a path. */
+/* The surfaces that scatter diffusely: where shadow rays are sent and paths bounce in
+ * random directions. */
 static inline int material_is_diffuse(const Material *m)
 {
+#if CHAPTER >= 5
     return m->kind == MATERIAL_LAMBERT || m->kind == MATERIAL_OREN_NAYAR;
+#else
+    return m->kind == MATERIAL_LAMBERT;
+#endif
 }
 
 static inline int material_emits(const Material *m)

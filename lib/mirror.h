@@ -1,10 +1,8 @@
 /* mirror.h (chapter 1): the perfect mirror (report §3.5.1, Figure 4).
  *
- * Introduced in chapter 1. The BRDF is a Dirac delta around the mirror direction
- *     R(d) = d - 2 (d . n) n,
- * so the reflected radiance is the mirror's reflectance times the radiance arriving
- * from R(d), with no sampling needed. The formula is the same for either orientation
- * of the unit normal n.
+ * Its BRDF is a Dirac delta around the mirror direction R(d) = d - 2 (d . n) n, so the
+ * reflected radiance is the mirror's reflectance times the radiance arriving from R(d).
+ * The formula is the same for either orientation of the unit normal n.
  */
 #ifndef MIRROR_H
 #define MIRROR_H

@@ -22,32 +22,38 @@ static int is_mirror_triangle(const Scene *scene, int triangle)
     return scene->materials[scene->triangles[triangle].material].kind == MATERIAL_MIRROR;
 }
 
-int mirror_light_find_planes(Scene *scene)
+int mirror_light_find_planes(const Scene *scene, MirrorPlanes *mirrors)
 {
-    free(scene->mirror_planes);
-    scene->mirror_planes = NULL;
-    scene->mirror_plane_count = 0;
-    int mirrors = 0;
+    mirrors->planes = NULL;
+    mirrors->count = 0;
+    int mirror_triangles = 0;
     for (int i = 0; i < scene->triangle_count; i++)
-        mirrors += is_mirror_triangle(scene, i);
-    if (mirrors == 0)
+        mirror_triangles += is_mirror_triangle(scene, i);
+    if (mirror_triangles == 0)
         return 0;
-    scene->mirror_planes = malloc((size_t)mirrors * sizeof *scene->mirror_planes);
-    if (!scene->mirror_planes)
+    mirrors->planes = malloc((size_t)mirror_triangles * sizeof *mirrors->planes);
+    if (!mirrors->planes)
         return -1;
     for (int i = 0; i < scene->triangle_count; i++) {
         const Triangle *triangle = &scene->triangles[i];
         if (!is_mirror_triangle(scene, i))
             continue;
         int known = 0;
-        for (int p = 0; p < scene->mirror_plane_count && !known; p++)
-            known = in_plane(&scene->mirror_planes[p], triangle);
+        for (int p = 0; p < mirrors->count && !known; p++)
+            known = in_plane(&mirrors->planes[p], triangle);
         if (!known) {
             MirrorPlane plane = {triangle->normal, vec3_dot(triangle->normal, triangle->v0)};
-            scene->mirror_planes[scene->mirror_plane_count++] = plane;
+            mirrors->planes[mirrors->count++] = plane;
         }
     }
     return 0;
+}
+
+void mirror_planes_free(MirrorPlanes *mirrors)
+{
+    free(mirrors->planes);
+    mirrors->planes = NULL;
+    mirrors->count = 0;
 }
 
 ShadowRay mirror_light_shadow_ray(const Scene *scene, const MirrorPlane *plane, Vec3 x, Vec3 n,

@@ -1,4 +1,4 @@
-/* mis.c (chapter 7): the power heuristic of multiple importance sampling. See mis.h. */
+/* mis.c (chapter 7): the power heuristic. See mis.h. */
 #include "mis.h"
 
 /* Written as 1 / (1 + (g/f)^2), which neither overflows for a huge density (a light seen

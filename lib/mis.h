@@ -1,26 +1,11 @@
-/* mis.h (chapter 7): multiple importance sampling, the power heuristic (Veach 1997, ch. 9;
- * pbrt's path integrator).
+/* mis.h (chapter 7): multiple importance sampling by the power heuristic (Veach 1997,
+ * ch. 9).
  *
- * Introduced in chapter 7. At a diffuse vertex x there are two ways to find the light
- * that arrives from a lamp:
- *   - light sampling (area_light.h): M shadow rays to points drawn uniformly over the
- *     lamp, whose directions have density p_light(w) = d^2 / (A cos beta) in solid
- *     angle. Good for a small or distant lamp, bad where the lamp is near and seen at
- *     a grazing angle (the ceiling beside this room's lamp: cos beta / d^2 varies
- *     wildly over it);
- *   - BRDF sampling (diffuse.h): the path's next direction, density p_bsdf(w) =
- *     cos(alpha) / pi, which finds the lamp when it happens to hit it. Good exactly where
- *     light sampling is bad, useless for a small lamp.
- * Chapter 3 uses only the first (and drops what the second finds, so nothing is counted
- * twice). Multiple importance sampling keeps both, each sample weighted so that the
- * weights of the ways that can produce a direction w add up to 1 there:
- *     L_D = 1/M sum_k w_light(w_k) f Le cos / p_light(w_k)  +  w_bsdf(w') f Le cos / p_bsdf(w'),
- * unbiased for any weights that sum to 1, and the power heuristic (beta = 2) is close
- * to the best such weights: with n_light = M samples of one and n_bsdf = 1 of the other,
- *     w_light = (M p_light)^2 / ((M p_light)^2 + p_bsdf^2),  w_bsdf = 1 - w_light
- * (the density of a strategy counts once per sample it takes). Each sample is then
- * weighted by how well its own strategy explains it, and a direction that one strategy
- * samples rarely (with a huge value) gets a small weight there.
+ * Two ways find the light arriving at a diffuse vertex: shadow rays (light sampling,
+ * density d^2 / (A cos beta)) and the path's own bounce (BRDF sampling, cos / pi). Each
+ * sample is kept, weighted so that the weights of the ways that can produce a direction
+ * add up to 1 there; the power heuristic w_f = (n_f p_f)^2 / ((n_f p_f)^2 + (n_g p_g)^2)
+ * is close to the best such weights (docs/chapter7.md).
  */
 #ifndef MIS_H
 #define MIS_H

@@ -1,5 +1,4 @@
-/* oren_nayar.c (chapter 5): the Oren-Nayar BRDF with the errata of SPEC §8.1.
- * See oren_nayar.h. */
+/* oren_nayar.c (chapter 5): the Oren-Nayar BRDF, with the errata of oren_nayar.h. */
 #include "oren_nayar.h"
 
 #include <float.h>

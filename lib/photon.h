@@ -1,33 +1,12 @@
-/* photon.h (chapter 8): photons shot from the area lights, and the caustic photon map.
- * The report's §5 and its reference [9]: Jensen, "Global illumination using photon
- * maps" (1996).
+/* photon.h (chapter 8): photons shot from the area lights, and the caustic photon map
+ * (beyond the report: its §5 and reference [9], Jensen 1996).
  *
- * Introduced in chapter 8. The path tracer finds light that reached a diffuse surface
- * through mirrors or glass (paths L S+ D, in Heckbert's notation: light, one or more
- * specular bounces, a diffuse one) only when a path happens to hit the lamp after a
- * specular bounce: rarely, and brightly. Photons go the other way, from the light.
- *
- * Emission. A photon starts at a point y uniform over the lights' total area A
- * (area_light_sample: density 1/A) in a direction w cosine-weighted about the light's
- * front normal (hemisphere.h: density cos(theta)/pi). A light of radiance Le emits the
- * flux Phi = integral over its area and hemisphere of Le cos(theta) = pi Le A, and a
- * photon must carry its share of it: Le(y) cos / (p(y) p(w)) / N = pi A Le(y) / N,
- * i.e. Phi / N each for a single lamp (the cosine cancels: every photon carries the
- * same power).
- *
- * Tracing. At a mirror the photon is reflected and its power filtered by the mirror's
- * colour; at glass it is reflected with probability R and refracted otherwise, with
- * the path tracer's own glass_scatter (path.h): since the probabilities are the Fresnel
- * weights, the power is unchanged. At the first diffuse surface it is stored (position,
- * the direction it came from, the surface's normal on its side, its power) if at least
- * one specular bounce came before, and it ends there: that is the caustic map, L S+ D.
- * A photon whose first surface is diffuse is dropped: that light is direct light, which
- * the shadow rays estimate. A photon that reaches a light, leaves the scene, or makes
- * more than PHOTON_MAX_BOUNCES specular bounces is dropped too.
- *
- * A test-only mode stores the other kind instead: photons whose first surface is
- * diffuse (L D), so that a density estimate of direct light can be checked against a
- * closed form (tests/test_photon_estimate.c).
+ * A photon starts at a point uniform over the lights' area A, in a cosine-weighted
+ * direction, carrying pi A Le / N of the lights' flux. Mirrors filter its power by
+ * their colour; glass reflects or refracts it by R (glass.h), power unchanged. At its
+ * first diffuse surface it is stored if a specular bounce came before (the caustic
+ * map, L S+ D) and ends there. Shooting them is independent per photon, so any number
+ * of threads can shoot a map's photons (docs/chapter8.md).
  */
 #ifndef PHOTON_H
 #define PHOTON_H
@@ -71,22 +50,23 @@ typedef struct {
     PhotonPaths paths;
     FresnelMode fresnel; /* the glass reflectance, as the path tracer's */
     uint64_t seed;       /* photon k uses rng_for_sample(seed, k, 0) */
-    int threads;         /* 0: one per core; the map is the same for any count */
 } PhotonMapSettings;
 
+/* Photon k of a map's N: emitted and traced with its own generator. Returns 1 and the
+ * photon in *stored if it ends where the map keeps photons, else 0. */
+int photon_shoot(const Scene *scene, const PhotonMapSettings *settings, int k, Photon *stored,
+                 RayCounts *counts);
+
 typedef struct PhotonMap {
-    Photon *photons; /* in the kd-tree's order (photon.c) */
+    Photon *photons; /* in the kd-tree's order */
     int count;       /* stored */
     int emitted;
     KdTree tree;     /* over the photons' positions */
 } PhotonMap;
 
-/* Shoot and trace settings->emitted photons, keep those `paths` asks for, and build
- * the kd-tree over them. Rays traced are added to *counts. Returns 0, or -1 when
- * memory runs out (the map is then empty). */
-int photon_map_build(PhotonMap *map, const Scene *scene, const PhotonMapSettings *settings,
-                     RayCounts *counts);
-
+/* The map of `count` photons stored out of `emitted` shot: a kd-tree over their
+ * positions (photons is copied). Returns 0, or -1 when memory runs out. */
+int photon_map_build(PhotonMap *map, const Photon *photons, int count, int emitted);
 void photon_map_free(PhotonMap *map);
 
 #endif

@@ -32,3 +32,8 @@ Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 
     Vec3 sum = g.lambert ? vec3_mul(diffuse_brdf(m, n, wo, wo), g.sum) : g.sum;
     return vec3_scale(sum, 1.0 / (PI * radius * radius));
 }
+
+double ppm_radius(double first_radius, double alpha, int pass)
+{
+    return first_radius * sqrt(pow((double)pass, alpha - 1.0));
+}

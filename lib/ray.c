@@ -1,4 +1,4 @@
-/* ray.c (chapter 1): starting secondary rays off the surface. See ray.h. */
+/* ray.c (chapter 1): starting new rays off the surface. See ray.h. */
 #include "ray.h"
 
 Vec3 ray_offset_origin(Vec3 p, Vec3 n, Vec3 towards, double scale)

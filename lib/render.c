@@ -1,238 +1,28 @@
-/* render.c (chapter 1): the Monte Carlo pixel loop, threads, progress and interruption
- * (chapter 1; report §3.3). See render.h for the design. */
+/* render.c (chapter 1): one sample of one pixel. See render.h. */
 #include "render.h"
 
-#include <pthread.h>
-#include <signal.h>
-#include <stdatomic.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <unistd.h>
-
-#include "atomic_file.h"
-
-typedef struct {
-    const Scene *scene;
-    const RenderSettings *settings;
-    Estimator estimate;
-    const void *estimator_settings;
-    PixelSum *pixels;
-    int pass;
-    atomic_int next_row;
-    atomic_long rows_done;   /* over all passes, for the progress display */
-    double start_time;
-} Job;
-
-typedef struct {
-    Job *job;
-    int index;
-    RayCounts rays;
-    uint64_t samples, nonfinite;
-} Worker;
-
-static volatile sig_atomic_t interrupt_requested = 0;
-
-/* The one signal path. The first SIGINT asks a running render to stop early (it saves
- * what it has). SIGTERM, SIGHUP and a second SIGINT end the program: first the
- * temporary files being written are removed (atomic_file.h), then the signal is raised
- * again with its default action, so the program dies of it as it would have. */
-static void on_signal(int signal_number)
+Vec3 render_sample(const Scene *scene, const ImageSettings *image, int col, int row,
+                   int sample, Estimator estimate, const void *settings, RayCounts *counts)
 {
-    if (signal_number == SIGINT && !interrupt_requested) {
-        interrupt_requested = 1;
-        return;
+    uint64_t pixel = (uint64_t)row * (uint64_t)image->width + (uint64_t)col;
+#if CHAPTER >= 2
+    int first_stratum = 0;
+    if (pixel_uses_subpixels(image->sampling)) {
+        Rng pixel_rng = rng_for_sample(image->seed, pixel, PIXEL_STREAM);
+        first_stratum = pixel_first_stratum(&pixel_rng, image->spp);
     }
-    atomic_remove_temporaries();
-    signal(signal_number, SIG_DFL);
-    raise(signal_number); /* delivered when this handler returns */
-}
-
-void render_install_interrupt(void)
-{
-    static const int handled[] = {SIGINT, SIGTERM, SIGHUP};
-    struct sigaction action = {0};
-    action.sa_handler = on_signal;
-    sigemptyset(&action.sa_mask);
-    for (int i = 0; i < 3; i++)
-        sigaddset(&action.sa_mask, handled[i]); /* one at a time */
-    for (int i = 0; i < 3; i++)
-        sigaction(handled[i], &action, NULL);
-}
-
-int render_interrupted(void)
-{
-    return interrupt_requested != 0;
-}
-
-int render_core_count(void)
-{
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    return cores > 0 ? (int)cores : 1;
-}
-
-static void show_progress(Job *job)
-{
-    const RenderSettings *s = job->settings;
-    double fraction = (double)atomic_load(&job->rows_done) / ((double)s->spp * s->height);
-    double elapsed = stats_now() - job->start_time;
-    fprintf(stderr, "\r%s: %3.0f%%  sample %d/%d  %.1f s elapsed, about %.0f s left   ",
-            s->label ? s->label : "render", 100.0 * fraction, job->pass + 1, s->spp, elapsed,
-            fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0);
-}
-
-void pixel_sum_add(PixelSum *pixel, Vec3 radiance)
-{
-    double value[4] = {radiance.x, radiance.y, radiance.z, vec3_average(radiance)};
-    double n = ++pixel->finite;
-    for (int c = 0; c < 4; c++) {
-        double delta = value[c] - pixel->mean[c];
-        pixel->mean[c] += delta / n;
-        pixel->m2[c] += delta * (value[c] - pixel->mean[c]);
-    }
-}
-
-/* Take sample `pass` of every pixel in one row. The row's counts are kept in local
- * variables and added to the worker's at its end: the workers' structs sit side by side
- * in one array, often in one cache line, and two threads incrementing counters in one
- * line make the line travel between their cores at every ray (false sharing; measured
- * 8% of the time on 2 threads). */
-static void render_row(Worker *worker, int row)
-{
-    Job *job = worker->job;
-    const RenderSettings *s = job->settings;
-    RayCounts rays = {0, 0, 0};
-    uint64_t samples = 0, nonfinite = 0;
-    for (int col = 0; col < s->width; col++) {
-        uint64_t index = (uint64_t)row * s->width + col;
-        int first_stratum = 0;
-        if (camera_uses_subpixels(s->sampling)) {
-            Rng pixel_rng = rng_for_sample(s->seed, index, RENDER_PIXEL_STREAM);
-            first_stratum = camera_first_stratum(&pixel_rng, s->spp);
-        }
-        Rng rng = rng_for_sample(s->seed, index, (uint64_t)job->pass);
-#if CHAPTER >= 7
-        if (s->sampling == PIXEL_STRATIFIED) {
-            rng.strata_key = rng_hash(rng_hash(s->seed ^ RENDER_STRATA_STREAM) ^ index) | 1u;
-            rng.strata_index = (uint32_t)job->pass;
-        }
+    Rng rng = rng_for_sample(image->seed, pixel, (uint64_t)sample);
+    double u, v;
+    pixel_position(image->sampling, sample, image->spp, first_stratum, &rng, &u, &v);
+#else
+    Rng rng = rng_for_sample(image->seed, pixel, (uint64_t)sample);
+    double u = 0.5, v = 0.5; /* the pixel's centre */
 #endif
-        double u, v;
-        camera_pixel_position(s->sampling, job->pass, s->spp, first_stratum, &rng, &u, &v);
-        Ray ray = camera_ray(&job->scene->camera, s->width, s->height, col, row, u, v);
-        rays.camera++;
-        Vec3 radiance = job->estimate(job->scene, ray, &rng, job->estimator_settings, &rays);
-        samples++;
-        if (!vec3_is_finite(radiance)) {
-            nonfinite++;
-            continue;
-        }
-        pixel_sum_add(&job->pixels[index], radiance);
-    }
-    ray_counts_add(&worker->rays, rays);
-    worker->samples += samples;
-    worker->nonfinite += nonfinite;
-}
-
-static void *work(void *argument)
-{
-    Worker *worker = argument;
-    Job *job = worker->job;
-    int show = worker->index == 0 && job->settings->progress && isatty(STDERR_FILENO);
-    double last_shown = 0.0;
-    for (;;) {
-        if (render_interrupted())
-            break;
-        int row = atomic_fetch_add(&job->next_row, 1);
-        if (row >= job->settings->height)
-            break;
-        render_row(worker, row);
-        atomic_fetch_add(&job->rows_done, 1);
-        if (show && stats_now() - last_shown > 0.25) {
-            last_shown = stats_now();
-            show_progress(job);
-        }
-    }
-    return NULL;
-}
-
-void pixel_sums_finish(const PixelSum *pixels, RenderResult *result)
-{
-    for (int row = 0; row < result->image.height; row++) {
-        for (int col = 0; col < result->image.width; col++) {
-            const PixelSum *p = &pixels[(long)row * result->image.width + col];
-            double n = p->finite, e[4] = {0, 0, 0, 0};
-            for (int c = 0; c < 4 && n > 1; c++)
-                e[c] = sqrt(p->m2[c] / (n - 1) / n);
-            image_set(&result->image, col, row, vec3(p->mean[0], p->mean[1], p->mean[2]));
-            image_set(&result->std_error, col, row, vec3(e[0], e[1], e[2]));
-            image_set(&result->average_std_error, col, row, vec3(e[3], e[3], e[3]));
-        }
-    }
-}
-
-int render(const Scene *scene, const RenderSettings *settings, Estimator estimate,
-           const void *estimator_settings, RenderResult *result)
-{
-    RenderResult r = {0};
-    r.threads = settings->threads > 0 ? settings->threads : render_core_count();
-    if (r.threads > settings->height)
-        r.threads = settings->height;
-    r.image = image_new(settings->width, settings->height);
-    r.std_error = image_new(settings->width, settings->height);
-    r.average_std_error = image_new(settings->width, settings->height);
-    PixelSum *pixels = calloc((size_t)settings->width * settings->height, sizeof *pixels);
-    Worker *workers = calloc((size_t)r.threads, sizeof *workers);
-    pthread_t *threads = calloc((size_t)r.threads, sizeof *threads);
-    if (!r.image.pixels || !r.std_error.pixels || !r.average_std_error.pixels || !pixels ||
-        !workers || !threads) {
-        free(pixels);
-        free(workers);
-        free(threads);
-        render_result_free(&r);
-        return -1;
-    }
-
-    Job job = {scene, settings, estimate, estimator_settings, pixels, 0, 0, 0, stats_now()};
-    for (int i = 0; i < r.threads; i++)
-        workers[i] = (Worker){&job, i, {0, 0, 0}, 0, 0};
-    for (job.pass = 0; job.pass < settings->spp && !render_interrupted(); job.pass++) {
-        atomic_store(&job.next_row, 0);
-        int started = 1;
-        for (int i = 1; i < r.threads; i++)
-            if (pthread_create(&threads[i], NULL, work, &workers[i]) == 0)
-                started = i + 1;
-            else
-                break; /* fewer threads this pass: the rows are still all taken */
-        work(&workers[0]);
-        for (int i = 1; i < started; i++)
-            pthread_join(threads[i], NULL);
-    }
-    r.seconds = stats_now() - job.start_time;
-    if (settings->progress && isatty(STDERR_FILENO))
-        fprintf(stderr, "\r%*s\r", 79, "");
-
-    for (int i = 0; i < r.threads; i++) {
-        ray_counts_add(&r.rays, workers[i].rays);
-        r.samples += workers[i].samples;
-        r.nonfinite += workers[i].nonfinite;
-    }
-    r.interrupted = render_interrupted();
-    pixel_sums_finish(pixels, &r);
-    free(pixels);
-    free(workers);
-    free(threads);
-    *result = r;
-    return 0;
-}
-
-void render_result_free(RenderResult *result)
-{
-    image_free(&result->image);
-    image_free(&result->std_error);
-    image_free(&result->average_std_error);
-}
-
-double render_samples_per_pixel(const RenderResult *result)
-{
-    return (double)result->samples / ((double)result->image.width * result->image.height);
+#if CHAPTER >= 7
+    if (image->sampling == PIXEL_STRATIFIED)
+        rng_stratify(&rng, image->seed, pixel, (uint32_t)sample);
+#endif
+    Ray ray = camera_ray(&scene->camera, image->width, image->height, col, row, u, v);
+    counts->camera++;
+    return estimate(scene, ray, &rng, settings, counts);
 }

@@ -1,10 +1,6 @@
 /* rng.c (chapter 1): PCG32 seeded by SplitMix64. See rng.h. */
 #include "rng.h"
 
-#if CHAPTER >= 7
-#include "sobol.h"
-#endif
-
 /* SplitMix64's finaliser (Steele, Lea, Flood 2014): a bijective mix of 64 bits, so
  * nearby inputs (pixel 7 and pixel 8) give unrelated outputs. */
 uint64_t rng_hash(uint64_t x)
@@ -40,14 +36,10 @@ double rng_uniform(Rng *rng)
     return rng_next(rng) * 0x1p-32;
 }
 
+#if CHAPTER < 7
 void rng_pair(Rng *rng, double *u, double *v)
 {
-#if CHAPTER >= 7
-    if (rng->strata_key != 0 && rng->pairs_drawn < SOBOL_PAIRS) {
-        sobol_pair(rng->strata_index, rng_hash(rng->strata_key ^ rng->pairs_drawn++), u, v);
-        return;
-    }
-#endif
     *u = rng_uniform(rng);
     *v = rng_uniform(rng);
 }
+#endif

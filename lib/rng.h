@@ -1,14 +1,9 @@
 /* rng.h (chapter 1): the random numbers behind every Monte Carlo estimate.
  *
- * Introduced in chapter 1 (jittered pixel positions), used by every chapter after.
- * PCG32 (O'Neill 2014, "PCG: A Family of Simple Fast Space-Efficient Statistically
- * Good Algorithms for Random Number Generation"): a 64-bit linear congruential state,
- * output permuted by an xorshift and a data-dependent rotation, 32 bits per step.
- *
- * Every sample gets its own generator, seeded from (seed, pixel, sample) through a
- * SplitMix64 hash (SPEC §9). A pixel's samples therefore do not depend on which thread
- * renders them or in what order, and an image is bit-for-bit the same for any thread
- * count and any run.
+ * PCG32 (O'Neill 2014): a 64-bit linear congruential state whose output is permuted by
+ * an xorshift and a data-dependent rotation. Every sample of every pixel gets its own
+ * generator, seeded from (seed, pixel, sample) by a SplitMix64 hash, so an image is the
+ * same bit for bit whichever thread renders which pixel.
  */
 #ifndef RNG_H
 #define RNG_H
@@ -18,10 +13,9 @@
 typedef struct {
     uint64_t state, increment;
 #if CHAPTER >= 7
-    /* Stratified pairs (sobol.h): 0, or the pixel's key for them; the sample's number
-     * in its pixel; the pairs it has drawn so far. */
-    uint64_t strata_key;
-    uint32_t strata_index, pairs_drawn;
+    uint64_t strata_key;   /* 0, or the pixel's key for its stratified pairs (sobol.h) */
+    uint32_t strata_index; /* the sample's number in its pixel */
+    uint32_t pairs_drawn;  /* the pairs it has drawn so far */
 #endif
 } Rng;
 
@@ -34,12 +28,20 @@ uint32_t rng_next(Rng *rng);
 /* A uniform double in [0, 1): 32 random bits scaled by 2^-32, so never 1. */
 double rng_uniform(Rng *rng);
 
-/* Two uniform numbers in [0, 1) that belong together (a point on a lamp, a direction):
- * two rng_uniform draws; from chapter 7 on, when the generator has a strata_key, the
- * sample's point of a stratified pair (sobol.h) for its first SOBOL_PAIRS pairs. */
+/* Two uniform numbers in [0, 1) that belong together (a point on a lamp, a direction). */
 void rng_pair(Rng *rng, double *u, double *v);
 
-/* SplitMix64's finaliser (see rng.c): 64 bits mixed into 64 unrelated-looking ones. */
+/* SplitMix64's finaliser: 64 bits mixed into 64 unrelated-looking ones. */
 uint64_t rng_hash(uint64_t x);
+
+#if CHAPTER >= 7
+/* Make rng_pair's first pairs stratified across the samples of the pixel (sobol.h):
+ * the pixel's key for them, and the sample's number. */
+static inline void rng_stratify(Rng *rng, uint64_t seed, uint64_t pixel, uint32_t sample)
+{
+    rng->strata_key = rng_hash(rng_hash(seed ^ 0x5b0b01u) ^ pixel) | 1u;
+    rng->strata_index = sample;
+}
+#endif
 
 #endif

@@ -1,5 +1,4 @@
-/* roulette.c (chapter 6): Russian roulette with survival probability alpha.
- * See roulette.h for why it is unbiased, and the report's erratum. */
+/* roulette.c (chapter 6): Russian roulette. See roulette.h. */
 #include "roulette.h"
 
 int roulette_survives(double alpha, Rng *rng)
@@ -10,4 +9,18 @@ int roulette_survives(double alpha, Rng *rng)
 double roulette_survival_from_throughput(Vec3 throughput)
 {
     return fmin(1.0, vec3_max_component(throughput));
+}
+
+int roulette_continues(const PathSettings *settings, int segment, Vec3 *throughput, Rng *rng)
+{
+    double survival = settings->rr_survival;
+    if (settings->rr_throughput > 0)
+        survival = segment >= settings->rr_throughput ? roulette_survival_from_throughput(*throughput)
+                                                      : 1.0;
+    if (!(survival > 0.0 && survival < 1.0))
+        return 1; /* no roulette */
+    if (!roulette_survives(survival, rng))
+        return 0;
+    *throughput = vec3_scale(*throughput, 1.0 / survival);
+    return 1;
 }

@@ -1,4 +1,4 @@
-/* schlick.c (chapter 1): Schlick's reflectance with the erratum of SPEC §8.4. */
+/* schlick.c (chapter 1): Schlick's reflectance, with the erratum of schlick.h. */
 #include "schlick.h"
 
 #include <math.h>

@@ -1,4 +1,5 @@
-/* sobol.c (chapter 7): the scrambled (0,2)-sequence of sobol.h. */
+/* sobol.c (chapter 7): the scrambled (0,2)-sequence of sobol.h, and rng_pair (rng.h)
+ * drawing from it. */
 #include "sobol.h"
 
 #include "rng.h"
@@ -49,4 +50,16 @@ void sobol_pair(uint32_t index, uint64_t key, double *u, double *v)
     uint32_t shuffled = owen_scramble(index, (uint32_t)more);
     *u = owen_scramble(reverse_bits(shuffled), (uint32_t)seeds) * 0x1p-32;
     *v = owen_scramble(sobol_second(shuffled), (uint32_t)(seeds >> 32)) * 0x1p-32;
+}
+
+/* From this chapter on, a generator with a strata key (rng_stratify) draws its first
+ * SOBOL_PAIRS pairs from the pixel's point sets. */
+void rng_pair(Rng *rng, double *u, double *v)
+{
+    if (rng->strata_key != 0 && rng->pairs_drawn < SOBOL_PAIRS) {
+        sobol_pair(rng->strata_index, rng_hash(rng->strata_key ^ rng->pairs_drawn++), u, v);
+        return;
+    }
+    *u = rng_uniform(rng);
+    *v = rng_uniform(rng);
 }

@@ -1,4 +1,4 @@
-/* sphere.c (chapter 1): ray-sphere intersection. See sphere.h for the derivation. */
+/* sphere.c (chapter 1): ray-sphere intersection. See sphere.h. */
 #include "sphere.h"
 
 double sphere_intersect(const Sphere *sphere, Ray ray, double tmin, double tmax)

@@ -2,6 +2,7 @@
  * sphere_guide.h. */
 #include "sphere_guide.h"
 
+#include "diffuse.h"
 #include "hemisphere.h"
 
 void sphere_guide_at(const Scene *scene, Vec3 x, Vec3 n, double strength, SphereGuide *guide)
@@ -71,4 +72,26 @@ double sphere_guide_pdf(const SphereGuide *guide, Vec3 n, Vec3 w)
         if (vec3_dot(w, guide->axis[k]) >= guide->cos_max[k])
             pdf += guide->density[k];
     return pdf;
+}
+
+Vec3 sphere_guide_bounce(const Scene *scene, const Vertex *x, double strength, Rng *rng,
+                         Vec3 *direction, double *pdf)
+{
+    SphereGuide guide;
+    guide.count = 0;
+    if (strength > 0.0)
+        sphere_guide_at(scene, x->hit.point, x->normal, strength, &guide);
+    if (guide.count == 0) {
+        Vec3 weight = path_diffuse_bounce(x, rng, direction);
+        *pdf = diffuse_pdf(x->normal, *direction);
+        return weight;
+    }
+    double u_select = rng_uniform(rng), u1, u2;
+    rng_pair(rng, &u1, &u2);
+    *direction = sphere_guide_sample(&guide, x->normal, u_select, u1, u2);
+    *pdf = sphere_guide_pdf(&guide, x->normal, *direction);
+    double cos_theta = vec3_dot(x->normal, *direction);
+    if (cos_theta <= 0.0)
+        return vec3(0, 0, 0);
+    return vec3_scale(diffuse_brdf(x->material, x->normal, *direction, x->wo), cos_theta / *pdf);
 }

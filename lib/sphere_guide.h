@@ -1,40 +1,21 @@
-/* sphere_guide.h (chapter 7): bounces aimed at the mirror and glass spheres, for the
- * caustics (issue 11: spend the samples where the error is).
+/* sphere_guide.h (chapter 7): bounces aimed at the mirror and glass spheres, for their
+ * caustics.
  *
- * Light that reaches a diffuse point through a glass or mirror sphere (the bright patch
- * that the room's glass sphere focuses on the floor) is found only when the bounce
- * direction happens to hit the sphere and the path then, after refraction, hits the
- * lamp: the path tracer's brightest and rarest samples. From a floor point under the
- * glass sphere a cosine-weighted bounce hits it about one time in ten.
- *
- * So a diffuse bounce chooses, with probability q_k, a direction uniformly in the cone
- * of directions that meet sphere k (half-angle theta_k, sin theta_k = r / |c - x|,
- * solid angle Omega_k = 2 pi (1 - cos theta_k)), and otherwise (1 - sum q_k) the cosine-
- * weighted hemisphere. Whichever it chose, the direction w is weighted by the density
- * of the whole mixture (one-sample MIS with the balance heuristic; Veach 1997, §9.2.4):
- *     p(w) = (1 - sum q_k) cos(w) / pi + sum_k q_k [w in cone k] / Omega_k,
- *     weight = f(w) cos(w) / p(w),
- * which is unbiased for any q_k as long as p(w) > 0 wherever f cos > 0 (the cosine part
- * keeps it so; q_total <= 1/2). A cone direction below the surface has f cos = 0: the
- * path ends there, which costs a sample but biases nothing.
- *
- * q_k = strength * Omega_k / (2 pi), capped so that the total is at most 1/2: a sphere
- * far away gets few samples (its caustic is weak and its cone small), one close by more.
- * Only spheres whose cone is partly above the surface and that do not contain x take
- * part; at most SPHERE_GUIDE_MAX of them (the first in the scene), the others are
- * reached by the cosine part as before.
+ * A diffuse bounce picks, with probability q_k, a direction uniform in the cone of
+ * sphere k (solid angle Omega_k) and otherwise the cosine-weighted hemisphere. Any
+ * direction w is weighted by the whole mixture's density (one-sample MIS, Veach §9.2.4)
+ *     p(w) = (1 - sum q_k) cos / pi + sum_k q_k [w in cone k] / Omega_k,
+ * unbiased since the cosine part keeps p > 0 wherever f cos > 0. q_k = strength Omega_k
+ * / (2 pi), the total capped at 1/2 (docs/chapter7.md).
  */
 #ifndef SPHERE_GUIDE_H
 #define SPHERE_GUIDE_H
 
-#include "scene.h"
+#include "path.h"
 
 #define SPHERE_GUIDE_MAX 8
 
-/* The strength chapter 7's final estimator uses. Measured on the room at 256 x 256,
- * 64 spp, against one 8192-spp reference: relative RMSE 0.0717 without the guide,
- * 0.0565 at strength 2, 0.0512 at 4, 0.048 to 0.050 at 8, 0.0512 at 16, 0.056 at 32
- * (the cap of 1/2 then holds most points), for about 5% more time. */
+/* The strength chapter 7's final estimator uses (docs/chapter7.md: how it was chosen). */
 #define SPHERE_GUIDE_STRENGTH 8.0
 
 typedef struct {
@@ -54,5 +35,11 @@ Vec3 sphere_guide_sample(const SphereGuide *guide, Vec3 n, double u_select, doub
 
 /* The mixture's density p(w) in solid angle. */
 double sphere_guide_pdf(const SphereGuide *guide, Vec3 n, Vec3 w);
+
+/* The bounce at diffuse vertex x drawn from the mixture of this strength (the cosine-
+ * weighted one when no sphere takes part): the throughput's factor f cos / p, zero for
+ * a direction below the surface, the direction and its density p. */
+Vec3 sphere_guide_bounce(const Scene *scene, const Vertex *x, double strength, Rng *rng,
+                         Vec3 *direction, double *pdf);
 
 #endif

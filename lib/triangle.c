@@ -1,5 +1,5 @@
 /* triangle.c (chapter 1): a triangle's edges, normal and area, and its points. The
- * Möller-Trumbore intersection test is in triangle.h, inline. */
+ * intersection test is in triangle.h, inline. */
 #include "triangle.h"
 
 Triangle triangle_make(Vec3 v0, Vec3 v1, Vec3 v2, int material)

@@ -1,10 +1,6 @@
-/* vec.c (chapter 1): the orthonormal basis around a normal.
- *
- * The branchless construction of Duff et al., "Building an Orthonormal Basis,
- * Revisited" (JCGT 2017): the sign of n.z picks one of two branches, so the basis jumps
- * where n.z changes sign and is continuous elsewhere; each branch stays away from the
- * division by zero (sign + n.z is at least 1 in size), so it is exact to rounding for
- * any unit n, n = (0, 0, -1) included.
+/* vec.c (chapter 1): the orthonormal basis around a normal, by the branchless
+ * construction of Duff et al., "Building an Orthonormal Basis, Revisited" (JCGT 2017):
+ * exact to rounding for any unit n, n = (0, 0, -1) included.
  */
 #include "vec.h"
 

@@ -1,11 +1,8 @@
-/* vec.h (chapter 1): three-component vectors, used for points, directions and RGB colours.
+/* vec.h (chapter 1): three-component vectors, for points, directions and RGB colours.
  *
- * Introduced in chapter 1. Doubles throughout (SPEC §9): the room is about 16 units
- * across and is also tested scaled by 1e-3 and 1e3, where floats would lose the
- * offsets that keep secondary rays off their own surface (ray.h).
- *
- * Everything here is a small pure function, defined inline so the compiler can keep
- * vectors in registers; vec.c holds the one longer routine, the orthonormal basis.
+ * Doubles throughout: the renderer must work on scenes scaled far up and down, where
+ * floats would lose the offsets that keep new rays off their surface (ray.h). Every
+ * function is small and inline; vec.c holds the orthonormal basis.
  */
 #ifndef VEC_H
 #define VEC_H

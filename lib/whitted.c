@@ -62,7 +62,6 @@ static Vec3 trace(const Scene *scene, Ray ray, int depth, int max_depth, RayCoun
 Vec3 whitted_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                       RayCounts *counts)
 {
-    (void)rng;
     const WhittedSettings *s = settings;
     return trace(scene, ray, 1, s->max_depth, counts);
 }

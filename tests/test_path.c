@@ -403,8 +403,8 @@ static void assert_agree_on(const Scene *scene, const PathSettings *a_settings, 
     measure_image_mean(&a.image, &a.average_std_error, &mean_a, &error_a);
     measure_image_mean(&b.image, &b.average_std_error, &mean_b, &error_b);
     char text_a[96], text_b[96];
-    path_describe(a_settings, text_a, sizeof text_a);
-    path_describe(b_settings, text_b, sizeof text_b);
+    describe_path(a_settings, text_a, sizeof text_a);
+    describe_path(b_settings, text_b, sizeof text_b);
     print_message("    image means: %s %.5f +- %.5f, %s %.5f +- %.5f\n", text_a, mean_a,
                   error_a, text_b, mean_b, error_b);
     print_message("    sum of z^2 = %.1f over %d block channels (p = %.3f), largest |z| %.2f\n",

@@ -1,0 +1,535 @@
+/* experiment.c (bench, chapter 1): the chores shared by the chapter programs. See experiment.h. */
+#include "experiment.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "figure.h"
+#include "scene_file.h"
+
+/* The bytes of the scene file as read by experiment_load_scene: the scene is read once
+ * (a pipe or a FIFO can be read only once), and these bytes name its references and are
+ * handed to the reference program. Program state, set once. */
+static char *scene_text;
+static size_t scene_length;
+
+/* When the program started its work, for the total time it prints at its end. */
+static double start_time;
+
+static void print_total_time(void)
+{
+    printf("%s: total time %.1f s\n", cli_program, stats_now() - start_time);
+}
+
+static void load_font(Font *font)
+{
+    char error[4400];
+    if (font_load(font, FONT_PATH, error, sizeof error) != 0)
+        cli_fail(1, "%s", error);
+}
+
+/* mkdir -p; returns 0, or -1 with errno set and the failing directory in `failed`. */
+static int make_directories(const char *path, char *failed, size_t size)
+{
+    char directory[4096];
+    if (snprintf(directory, sizeof directory, "%s", path) >= (int)sizeof directory) {
+        errno = ENAMETOOLONG;
+        snprintf(failed, size, "%s", path);
+        return -1;
+    }
+    for (char *p = directory + 1;; p++) {
+        int end = *p == '\0';
+        if (*p == '/' || end) {
+            *p = '\0';
+            struct stat status;
+            if (mkdir(directory, 0777) != 0 &&
+                (errno != EEXIST || stat(directory, &status) != 0 || !S_ISDIR(status.st_mode))) {
+                if (errno == EEXIST)
+                    errno = ENOTDIR;
+                snprintf(failed, size, "%s", directory);
+                return -1;
+            }
+            if (end)
+                return 0;
+            *p = '/';
+        }
+    }
+}
+
+/* --out must be a directory we can write a file into: found out now, not after the
+ * render. A full disk is found by writing a little. */
+static void check_output_directory(const Options *options)
+{
+    char failed[4096], probe[4200];
+    if (make_directories(options->out, failed, sizeof failed) != 0)
+        cli_fail(errno == ENOTDIR || errno == ENAMETOOLONG ? 2 : 1,
+                 "--out %s: cannot create directory %s: %s", options->out, failed,
+                 strerror(errno));
+    snprintf(probe, sizeof probe, "%s/.write-test.%ld", options->out, (long)getpid());
+    char block[4096] = {0};
+    FILE *file = fopen(probe, "wb");
+    int ok = file && fwrite(block, 1, sizeof block, file) == sizeof block;
+    int saved_errno = errno;
+    if (file && fclose(file) != 0 && ok) {
+        ok = 0;
+        saved_errno = errno;
+    }
+    if (file)
+        remove(probe);
+    if (!ok)
+        cli_fail(1, "--out %s: cannot write there: %s", options->out, strerror(saved_errno));
+}
+
+void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
+                      Options *options, Scene *scene)
+{
+    start_time = stats_now();
+    cli_parse(argc, argv, info, options);
+    render_install_interrupt(); /* from the start: temporary files are removed on a signal */
+    check_output_directory(options);
+    char error[4400];
+    SceneFileInfo file;
+    if (scene_file_read(options->scene, &scene_text, &scene_length, error, sizeof error) != 0 ||
+        scene_parse(scene_text, scene_length, options->scene, scene, &file, error,
+                    sizeof error) != 0)
+        cli_fail(2, "%s", error);
+    options->scene_hash = file.hash;
+    options->scene_lines = file.line_count;
+    if (need == NEEDS_POINT_LIGHT && scene->point_light_count == 0)
+        cli_fail(2, "%s:%d: no point_light: %s needs one", options->scene, options->scene_lines,
+                 cli_program);
+    if (need == NEEDS_AREA_LIGHT && scene->light_count == 0)
+        cli_fail(2, "%s:%d: no area light (a 'light' material on a triangle, quad, box or "
+                    "tetrahedron): %s needs one", options->scene, options->scene_lines,
+                 cli_program);
+    /* The figures need the font: say so now rather than after the renders. */
+    Font font;
+    load_font(&font);
+    font_free(&font);
+    atexit(print_total_time); /* once the scene is read: from here on, the time is the work */
+}
+
+void experiment_image_size(const Options *options, const Scene *scene, int *width, int *height)
+{
+    double aspect = camera_aspect(&scene->camera);
+    double exact_height = options->size / aspect;
+    *width = options->size;
+    *height = (int)lround(exact_height);
+    if (*height < 1 || *height > 16384 || fabs(*height - exact_height) > 0.01 * *height)
+        cli_fail(2, "%s:%d: --size %d gives no image whose aspect ratio matches the image "
+                    "plane's (%.4g)", options->scene, options->scene_lines, options->size, aspect);
+}
+
+#if CHAPTER >= 2
+RenderSettings experiment_render_settings(const Options *options, const Scene *scene, int spp,
+                                          PixelSampling sampling, const char *label)
+#else
+RenderSettings experiment_render_settings(const Options *options, const Scene *scene, int spp,
+                                          const char *label)
+#endif
+{
+    RenderSettings settings = {0};
+    experiment_image_size(options, scene, &settings.image.width, &settings.image.height);
+    settings.image.spp = spp;
+#if CHAPTER >= 2
+    settings.image.sampling = sampling;
+#endif
+    settings.image.seed = options->seed;
+    settings.threads = options->threads;
+    settings.progress = !options->quiet;
+    settings.label = label;
+    return settings;
+}
+
+void experiment_render(const Scene *scene, const RenderSettings *settings, Estimator estimate,
+                       const void *estimator_settings, RenderResult *result)
+{
+    render_install_interrupt();
+    if (render_interrupted())
+        cli_fail(130, "interrupted: stopped before rendering %s", settings->label);
+    if (render(scene, settings, estimate, estimator_settings, result) != 0)
+        cli_fail(1, "out of memory rendering %d x %d", settings->image.width,
+                 settings->image.height);
+    if (result->nonfinite > 0)
+        fprintf(stderr, "%s: %s: dropped %llu non-finite samples of %llu\n", cli_program,
+                settings->label, (unsigned long long)result->nonfinite,
+                (unsigned long long)result->samples);
+}
+
+Options experiment_quarter_size(const Options *options)
+{
+    Options quarter = *options;
+    quarter.size = cli_quarter(options->size, 16);
+    quarter.reference_spp = (int)fmin(2.0 * options->reference_spp, 1 << 20);
+    return quarter;
+}
+
+void experiment_path(const Options *options, const char *file_name, char *path, size_t size)
+{
+    char failed[4096];
+    if (make_directories(options->out, failed, sizeof failed) != 0)
+        cli_fail(1, "--out %s: cannot create directory %s: %s", options->out, failed,
+                 strerror(errno));
+    if (snprintf(path, size, "%s/%s", options->out, file_name) >= (int)size)
+        cli_fail(2, "--out: path too long");
+}
+
+static void announce(int status, const char *path)
+{
+    if (status != 0)
+        cli_fail(1, "cannot write %s: %s", path, strerror(errno));
+    printf("wrote %s\n", path);
+    fflush(stdout);
+}
+
+void experiment_write_image(const Options *options, const char *name, const Image *image,
+                            double exposure)
+{
+    char file_name[256], path[4400];
+    snprintf(file_name, sizeof file_name, "%s.png", name);
+    experiment_path(options, file_name, path, sizeof path);
+    announce(image_write_png(image, path, exposure), path);
+    snprintf(file_name, sizeof file_name, "%s.pfm", name);
+    experiment_path(options, file_name, path, sizeof path);
+    announce(image_write_pfm(image, path), path);
+}
+
+void experiment_write_figure(const Options *options, const char *name, const Image *panels,
+                             const char *const *captions, int count, double exposure)
+{
+    char file_name[256], path[4400];
+    snprintf(file_name, sizeof file_name, "%s.png", name);
+    experiment_path(options, file_name, path, sizeof path);
+    Font font;
+    load_font(&font);
+    announce(figure_write_png(path, &font, panels, captions, count, exposure), path);
+    font_free(&font);
+}
+
+#if CHAPTER >= 4
+Image experiment_plot(const Plot *plot, int width, int height)
+{
+    Font font;
+    load_font(&font);
+    Image image = plot_draw(plot, &font, width, height, NULL);
+    font_free(&font);
+    if (!image.pixels)
+        cli_fail(1, "out of memory for a %d x %d plot", width, height);
+    return image;
+}
+#endif
+
+void experiment_write_table(const Options *options, const char *name, const TableRow *rows,
+                            int count)
+{
+    char file_name[256], path[4400];
+    table_print(stdout, rows, count);
+    snprintf(file_name, sizeof file_name, "%s.csv", name);
+    experiment_path(options, file_name, path, sizeof path);
+    announce(table_write_csv(path, rows, count), path);
+}
+
+TableRow experiment_row(const char *panel, const char *settings, const RenderResult *result)
+{
+    TableRow row = {0};
+    snprintf(row.panel, sizeof row.panel, "%s", panel);
+    snprintf(row.settings, sizeof row.settings, "%s", settings);
+    row.spp = render_samples_per_pixel(result);
+    row.seconds = result->seconds;
+    row.threads = result->threads;
+    row.rays = result->rays;
+    row.rmse = row.rel_mse = row.efficiency = row.rmse_spread = row.rel_mse_spread = NAN;
+    row.reference_share = NAN;
+    row.nonfinite = result->nonfinite;
+    row.runs = 1;
+    return row;
+}
+
+void experiment_exit_if_interrupted(const RenderResult *result, const char *saved)
+{
+    if (!result->interrupted)
+        return;
+    if (saved)
+        fprintf(stderr, "%s: interrupted: saved %s after %.2f samples per pixel\n",
+                cli_program, saved, render_samples_per_pixel(result));
+    else
+        fprintf(stderr, "%s: interrupted after %.2f samples per pixel; nothing saved of it\n",
+                cli_program, render_samples_per_pixel(result));
+    exit(130);
+}
+
+#if CHAPTER >= 2
+/* The reference program: "reference" beside this program (the Makefile builds both
+ * into build/), and its cache folder "references" beside it. */
+static void reference_program(char *program, char *directory, size_t size)
+{
+    char self[4096];
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0 || (size_t)n >= sizeof self - 1)
+        cli_fail(1, "cannot find this program's own path to find the reference program");
+    self[n] = '\0';
+    char *slash = strrchr(self, '/');
+    *slash = '\0';
+    if (snprintf(program, size, "%s/reference", self) >= (int)size ||
+        snprintf(directory, size, "%s/references", self) >= (int)size)
+        cli_fail(1, "path too long: %s", self);
+}
+
+/* The reference program's identity: its bytes and its modification time, so that a
+ * rebuild (make rebuilds it whenever a lib/ file it links changes) renders every
+ * reference again. */
+static uint64_t program_identity(const char *program)
+{
+    int fd = open(program, O_RDONLY);
+    struct stat status;
+    if (fd < 0 || fstat(fd, &status) != 0)
+        cli_fail(1, "cannot read the reference program %s: %s (build it: make %s)", program,
+                 strerror(errno), program);
+    uint64_t hash = MEASURE_HASH_START;
+    char block[1 << 16];
+    ssize_t n;
+    while ((n = read(fd, block, sizeof block)) > 0)
+        hash = measure_hash(hash, block, (size_t)n);
+    close(fd);
+    long long stamp[2] = {(long long)status.st_mtim.tv_sec, (long long)status.st_mtim.tv_nsec};
+    return measure_hash(hash, stamp, sizeof stamp);
+}
+
+/* Run the reference program with `argv`, the scene's bytes on its standard input.
+ * Returns its exit status (128 + the signal if a signal ended it). */
+static int run_reference_program(char *const argv[])
+{
+    int pipe_ends[2];
+    if (pipe(pipe_ends) != 0)
+        cli_fail(1, "cannot start the reference program: %s", strerror(errno));
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, pipe_ends[0], STDIN_FILENO);
+    posix_spawn_file_actions_addclose(&actions, pipe_ends[1]);
+    pid_t child;
+    extern char **environ;
+    int spawn_error = posix_spawn(&child, argv[0], &actions, NULL, argv, environ);
+    posix_spawn_file_actions_destroy(&actions);
+    close(pipe_ends[0]);
+    if (spawn_error != 0)
+        cli_fail(1, "cannot start the reference program %s: %s", argv[0], strerror(spawn_error));
+    void (*previous)(int) = signal(SIGPIPE, SIG_IGN); /* a child that stops reading */
+    for (size_t done = 0; done < scene_length;) {
+        ssize_t n = write(pipe_ends[1], scene_text + done, scene_length - done);
+        if (n <= 0 && errno != EINTR)
+            break;
+        done += n > 0 ? (size_t)n : 0;
+    }
+    close(pipe_ends[1]);
+    signal(SIGPIPE, previous);
+    int status;
+    while (waitpid(child, &status, 0) < 0)
+        if (errno != EINTR)
+            cli_fail(1, "lost the reference program: %s", strerror(errno));
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+void experiment_path_reference(const Options *options, const Scene *scene,
+                               const PathSettings *path, const char *rough_material,
+                               double rough_sigma, Reference *reference)
+{
+    int width, height;
+    experiment_image_size(options, scene, &width, &height);
+    char program[4200], directory[4200];
+    reference_program(program, directory, sizeof program);
+#if CHAPTER >= 4
+    int exact = path->fresnel == FRESNEL_EXACT;
+#else
+    int exact = 0;
+#endif
+    char size[32], spp[32], depth[32], seed[32], sigma[128], key_text[64];
+    snprintf(size, sizeof size, "%d", options->size);
+    snprintf(spp, sizeof spp, "%d", options->reference_spp);
+    snprintf(depth, sizeof depth, "%d", path->max_depth);
+    snprintf(seed, sizeof seed, "%llu", (unsigned long long)~options->seed);
+    snprintf(sigma, sizeof sigma, "%s=%.17g", rough_material ? rough_material : "", rough_sigma);
+    char *argv[] = {program, "--scene", "/dev/stdin", "--name", (char *)options->scene,
+                    "--size", size, "--reference-spp", spp, "--depth", depth,
+                    "--fresnel", exact ? "exact" : "schlick", "--seed", seed,
+                    "--sigma", sigma, "--out", directory, "--key", key_text,
+                    options->quiet ? "--quiet" : NULL, NULL};
+    /* The key: the scene's bytes, everything the program is told but where to write, and
+     * the program itself. */
+    uint64_t key = options->scene_hash;
+    for (int i = 5; i < 17; i++)
+        key = measure_hash(key, argv[i], strlen(argv[i]) + 1);
+    key = measure_hash(key, &(uint64_t){program_identity(program)}, sizeof(uint64_t));
+    snprintf(key_text, sizeof key_text, "%016llx", (unsigned long long)key);
+
+    char description[160];
+    snprintf(description, sizeof description, "depth=%d %s%s%s", path->max_depth,
+             exact ? "exact" : "schlick", rough_material ? ", sigma=" : "",
+             rough_material ? sigma + strlen(rough_material) + 1 : "");
+    if (measure_load_reference(directory, key, width, height, reference) != 0) {
+        char failed[4096];
+        if (make_directories(directory, failed, sizeof failed) != 0)
+            cli_fail(1, "cannot create the reference cache %s: %s", failed, strerror(errno));
+        fflush(stdout);
+        render_install_interrupt();
+        if (render_interrupted())
+            cli_fail(130, "interrupted: stopped before rendering the reference");
+        int status = run_reference_program(argv);
+        if (status == 130 || status == 128 + SIGINT)
+            cli_fail(130, "interrupted while rendering the reference; nothing was cached");
+        if (status != 0)
+            cli_fail(status == 2 ? 2 : 1, "the reference program failed (exit status %d)", status);
+        if (measure_load_reference(directory, key, width, height, reference) != 0)
+            cli_fail(1, "the reference program wrote no readable reference %s/%s.pfm",
+                     directory, key_text);
+        reference->cached = 0;
+    }
+    printf("reference: %s, %.0f spp, %s %.1f s; its own standard error (RMS) %.5f\n",
+           description, reference->spp, reference->cached ? "cached, rendered in" : "rendered in",
+           reference->seconds, reference->noise);
+}
+
+/* One run: render, write the panel if asked (and every pixel has a sample), exit if
+ * interrupted, and measure. */
+static TableRow one_run(const Options *options, const Scene *scene,
+                        const RenderSettings *settings, Estimator estimate,
+                        const void *estimator_settings, const char *name,
+                        const char *settings_text, const Reference *reference, int write_panel,
+                        RenderResult *result)
+{
+    experiment_render(scene, settings, estimate, estimator_settings, result);
+    int whole_pass = render_samples_per_pixel(result) >= 1.0;
+    int written = write_panel && (!result->interrupted || whole_pass);
+    if (written)
+        experiment_write_image(options, name, &result->image, PANEL_EXPOSURE);
+    experiment_exit_if_interrupted(result, written ? name : NULL);
+    TableRow row = experiment_row(name, settings_text, result);
+    if (reference)
+        measure_fill_row(&row, &result->image, reference);
+    return row;
+}
+
+TableRow experiment_runs(const Options *options, const Scene *scene,
+                         const RenderSettings *settings, Estimator estimate,
+                         const void *estimator_settings, const char *name,
+                         const char *settings_text, const Reference *reference, int write_panel,
+                         RenderResult *first)
+{
+    int runs = reference && options->runs > 1 ? options->runs : 1;
+    TableRow rows[CLI_RUNS_MAX];
+    rows[0] = one_run(options, scene, settings, estimate, estimator_settings, name,
+                      settings_text, reference, write_panel, first);
+    for (int k = 1; k < runs; k++) {
+        RenderSettings again = *settings;
+        again.image.seed = settings->image.seed + (uint64_t)k;
+        char label[160];
+        snprintf(label, sizeof label, "%s, run %d of %d", settings->label, k + 1, runs);
+        again.label = label;
+        RenderResult result;
+        rows[k] = one_run(options, scene, &again, estimate, estimator_settings, name,
+                          settings_text, reference, 0, &result);
+        render_result_free(&result);
+    }
+    TableRow combined;
+    if (measure_combine_runs(rows, runs, &combined) != 0)
+        cli_fail(1, "out of memory");
+    return combined;
+}
+
+#if CHAPTER >= 6
+/* The largest reflectance (any channel) of the scene's diffuse materials. */
+static double largest_diffuse_reflectance(const Scene *scene)
+{
+    double largest = 0.0;
+    for (int i = 0; i < scene->material_count; i++)
+        if (material_is_diffuse(&scene->materials[i]))
+            largest = fmax(largest, vec3_max_component(scene->materials[i].reflectance));
+    return largest;
+}
+
+int experiment_infinite_variance(const Scene *scene, const PathSettings *path)
+{
+    return measure_roulette_variance_infinite(path->rr_survival > 0.0 ? path->rr_survival : 1.0,
+                                              largest_diffuse_reflectance(scene));
+}
+#endif
+
+TableRow experiment_path_row(const Options *options, const Scene *scene, Estimator estimate,
+                             const PathSettings *path, int spp, PixelSampling sampling,
+                             const char *name, const char *settings_text,
+                             const Reference *reference, Image *image)
+{
+    RenderSettings settings = experiment_render_settings(options, scene, spp, sampling, name);
+    RenderResult result;
+    TableRow row = experiment_runs(options, scene, &settings, estimate, path, name,
+                                   settings_text, reference, image != NULL, &result);
+#if CHAPTER >= 6
+    row.infinite_variance = experiment_infinite_variance(scene, path);
+#endif
+    image_free(&result.std_error);
+    image_free(&result.average_std_error);
+    if (image)
+        *image = result.image;
+    else
+        image_free(&result.image);
+    return row;
+}
+
+void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size)
+{
+    if (isnan(row->rmse))
+        snprintf(caption, size, "%s\n%s\n%.2f s", title, row->settings, row->seconds);
+    else
+        snprintf(caption, size, "%s\n%s\n%.2f s, RMSE %.4f", title, row->settings,
+                 row->seconds, row->rmse);
+}
+#endif /* CHAPTER >= 2 */
+
+#if CHAPTER >= 2
+/* Append printf-style text at text[*used], never past text[size - 1]. */
+static void append(char *text, int size, int *used, const char *format, ...)
+{
+    if (*used >= size - 1)
+        return;
+    va_list args;
+    va_start(args, format);
+    int n = vsnprintf(text + *used, (size_t)(size - *used), format, args);
+    va_end(args);
+    *used = n < 0 ? size : *used + n;
+}
+
+void describe_path(const PathSettings *s, char *text, int size)
+{
+    int used = 0;
+    text[0] = '\0';
+    append(text, size, &used, "depth=%d", s->max_depth);
+#if CHAPTER >= 3
+    append(text, size, &used, " M=%d", s->shadow_rays);
+#endif
+#if CHAPTER >= 4
+    append(text, size, &used, " %s", s->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
+#endif
+#if CHAPTER >= 6
+    if (s->rr_throughput > 0)
+        append(text, size, &used, " rr=throughput@%d", s->rr_throughput);
+    else
+        append(text, size, &used, " rr=%g", s->rr_survival > 0.0 ? s->rr_survival : 1.0);
+#endif
+#if CHAPTER >= 7
+    if (s->mis)
+        append(text, size, &used, " mis");
+    if (s->mirror_light > 0)
+        append(text, size, &used, " mirror-light@%d", s->mirror_light);
+    if (s->sphere_guide > 0.0)
+        append(text, size, &used, " sphere-guide=%g", s->sphere_guide);
+#endif
+}
+#endif

@@ -1,0 +1,147 @@
+/* experiment.h (bench, chapter 1): what every chapter program does around its renders.
+ *
+ * A chapter program is the experiment: which scene, which settings per panel, what is
+ * measured, how the figure is laid out. The chores they share live here, and unlike
+ * lib/ they may end the program: "PROGRAM: what is wrong" on stderr and exit status 2
+ * for bad input, 1 for a failure of the machine (memory, disk), 130 after an
+ * interruption. From chapter 2 on, panels are measured against references rendered by
+ * build/reference (bench/reference.c) from the final chapter's library and cached in
+ * build/references/ under a key that hashes the scene, what the reference estimates
+ * and the reference program itself, so a change to the code it links renders it again.
+ */
+#ifndef EXPERIMENT_H
+#define EXPERIMENT_H
+
+#include "cli.h"
+#include "renderer.h"
+#include "table.h"
+#if CHAPTER >= 2
+#include "measure.h"
+#include "path.h"
+#endif
+#if CHAPTER >= 4
+#include "plot.h"
+#endif
+
+typedef enum { NEEDS_POINT_LIGHT, NEEDS_AREA_LIGHT } LightNeed;
+
+/* Every chapter program's first lines: parse the command line (cli_parse), check that
+ * --out can be written (before any time is spent rendering), then read options->scene
+ * once (scene_file_read: a pipe or FIFO works) and parse it, or exit
+ * with status 2 and the reader's message. Also an error: a scene without the kind of
+ * light the chapter needs, or with a material this chapter does not have yet. Without
+ * the figures' font, exit with status 1 (before any rendering), as
+ * experiment_write_figure would. At its exit the program then prints its total time. */
+void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
+                      Options *options, Scene *scene);
+
+/* Width from --size, height from the image plane's aspect ratio, rounded (exit 2 if
+ * the rounded image's aspect ratio is more than 1% off the plane's). */
+void experiment_image_size(const Options *options, const Scene *scene, int *width, int *height);
+
+/* Render settings from the options: size, threads, seed, progress. */
+#if CHAPTER >= 2
+RenderSettings experiment_render_settings(const Options *options, const Scene *scene, int spp,
+                                          PixelSampling sampling, const char *label);
+#else
+RenderSettings experiment_render_settings(const Options *options, const Scene *scene, int spp,
+                                          const char *label);
+#endif
+
+/* Render, or exit with status 1 when memory runs out. Announces dropped non-finite
+ * samples. */
+void experiment_render(const Scene *scene, const RenderSettings *settings, Estimator estimate,
+                       const void *estimator_settings, RenderResult *result);
+
+/* The path of `file_name` in the output directory, which is created if needed. */
+void experiment_path(const Options *options, const char *file_name, char *path, size_t size);
+
+/* The options for a chapter's sweep on a quarter-size image: a quarter of --size (at
+ * least 16 pixels), and a reference with twice the samples per pixel (at most 2^20), for
+ * an eighth of the cost of the full-size reference. The sweeps' panels have few samples,
+ * so its noise stays a small share of their error (at most 4% in `make figures`, chapter
+ * 5's sweep). */
+Options experiment_quarter_size(const Options *options);
+
+/* Exposure of every panel's PNG: radiance 1 is white. */
+#define PANEL_EXPOSURE 1.0
+
+/* Write NAME.png and NAME.pfm in the output directory (exit 1 on failure). */
+void experiment_write_image(const Options *options, const char *name, const Image *image,
+                            double exposure);
+
+/* Write the side-by-side figure NAME.png. Without the figures' font (FONT_PATH), exit
+ * with status 1 and a message naming the Debian package that ships it. */
+void experiment_write_figure(const Options *options, const char *name, const Image *panels,
+                             const char *const *captions, int count, double exposure);
+
+/* Print the table and write it as NAME.csv. */
+void experiment_write_table(const Options *options, const char *name, const TableRow *rows,
+                            int count);
+
+/* A table row with the cost columns of a render filled in and no error measured. */
+TableRow experiment_row(const char *panel, const char *settings, const RenderResult *result);
+
+/* After a render was interrupted (SIGINT): say what was saved and exit with status 130.
+ * `saved` names what was written of it, or is NULL when nothing was. */
+void experiment_exit_if_interrupted(const RenderResult *result, const char *saved);
+
+#if CHAPTER >= 4
+/* The plot drawn on a width x height image (exit 1 without the font or memory); show
+ * it with experiment_write_figure. */
+Image experiment_plot(const Plot *plot, int width, int height);
+#endif
+
+#if CHAPTER >= 2
+/* Samples per pixel of the full-size references (their default --reference-spp):
+ * REFERENCE_SPP for chapters 4-8 (chapter 5 takes twice as many), DEPTH8_REFERENCE_SPP
+ * for the depth-8 image of chapters 2 and 3, whose panels are much noisier than it.
+ * docs/chapter2.md gives the references' noise and time measured at each setting. */
+#define REFERENCE_SPP 128
+#define DEPTH8_REFERENCE_SPP 64
+
+/* The reference for the image that the path tracer with settings `path` estimates (its
+ * depth and, from chapter 4, its Fresnel mode; shadow rays and roulette do not change the
+ * expectation), of the scene as loaded, with the roughness of the material named
+ * `rough_material` (or none, NULL) set to `rough_sigma` (chapter 5's sweep), at the
+ * options' size and --reference-spp samples per pixel (rounded up to whole batches of
+ * sub-pixels, bench/reference.c), with a seed independent of the panels'. Read from the
+ * cache, or rendered by the reference program first. Prints a line with its noise. */
+void experiment_path_reference(const Options *options, const Scene *scene,
+                               const PathSettings *path, const char *rough_material,
+                               double rough_sigma, Reference *reference);
+
+/* The path tracer at `spp` samples per pixel as one table row (experiment_runs), marked
+ * when its variance is infinite. With `image`, a panel: the first run written as
+ * NAME.png/.pfm and kept in *image; without, only measured. */
+TableRow experiment_path_row(const Options *options, const Scene *scene, Estimator estimate,
+                             const PathSettings *path, int spp, PixelSampling sampling,
+                             const char *name, const char *settings_text,
+                             const Reference *reference, Image *image);
+
+/* One setting measured over options->runs independent runs (seeds options->seed + k;
+ * one run without a reference), combined into one table row (measure_combine_runs):
+ * the mean error over the runs and its spread. The first run's render stays in *first;
+ * with `write_panel`, its image is written as NAME.png/.pfm. An interruption saves
+ * the first run's panel if it was being rendered and has a sample in every pixel, and
+ * exits (experiment_exit_if_interrupted). */
+TableRow experiment_runs(const Options *options, const Scene *scene,
+                         const RenderSettings *settings, Estimator estimate,
+                         const void *estimator_settings, const char *name,
+                         const char *settings_text, const Reference *reference, int write_panel,
+                         RenderResult *first);
+
+#if CHAPTER >= 6
+/* Whether the path tracer with these settings has infinite variance in this scene:
+ * roulette with alpha <= rho^2 of its brightest diffuse surface. */
+int experiment_infinite_variance(const Scene *scene, const PathSettings *path);
+#endif
+
+/* The settings as text for tables and captions, e.g. "depth=16 M=1 schlick rr=0.25". */
+void describe_path(const PathSettings *settings, char *text, int size);
+
+/* A figure caption from a table row: its settings, then time and error. */
+void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size);
+#endif /* CHAPTER >= 2 */
+
+#endif

@@ -1,0 +1,224 @@
+/* ppm.c (bench, chapter 8): progressive photon mapping, pass by pass. See ppm.h. */
+#include "ppm.h"
+
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* One thread's share: photons [first, end), stored into its own growing array. The
+ * thread works on its own copy of its Worker and writes it back at the end, so that
+ * two threads never update counters in one cache line. */
+typedef struct {
+    const Scene *scene;
+    const PhotonMapSettings *settings;
+    int first, end;
+    Photon *photons;
+    int count, capacity;
+    RayCounts rays;
+    int failed;
+} Worker;
+
+static void shoot_share(Worker *w)
+{
+    for (int k = w->first; k < w->end; k++) {
+        Photon photon;
+        if (!photon_shoot(w->scene, w->settings, k, &photon, &w->rays))
+            continue;
+        if (w->count == w->capacity) {
+            int capacity = w->capacity ? 2 * w->capacity : 1024;
+            Photon *grown = realloc(w->photons, (size_t)capacity * sizeof *grown);
+            if (!grown) {
+                w->failed = 1;
+                return;
+            }
+            w->photons = grown;
+            w->capacity = capacity;
+        }
+        w->photons[w->count++] = photon;
+    }
+}
+
+static void *shoot_thread(void *argument)
+{
+    Worker *shared = argument, own = *shared;
+    shoot_share(&own);
+    *shared = own;
+    return NULL;
+}
+
+/* The workers' photons, in the order they were shot, made into the map. */
+static int gather(PhotonMap *map, const Worker *workers, int threads, int emitted)
+{
+    int count = 0;
+    for (int i = 0; i < threads; i++)
+        count += workers[i].count;
+    Photon *shot = malloc((size_t)(count > 0 ? count : 1) * sizeof *shot);
+    if (!shot)
+        return -1;
+    for (int i = 0, at = 0; i < threads; at += workers[i].count, i++)
+        if (workers[i].count > 0)
+            memcpy(shot + at, workers[i].photons, (size_t)workers[i].count * sizeof *shot);
+    int status = photon_map_build(map, shot, count, emitted);
+    free(shot);
+    return status;
+}
+
+int ppm_photon_map(PhotonMap *map, const Scene *scene, const PhotonMapSettings *settings,
+                   int threads, RayCounts *counts)
+{
+    memset(map, 0, sizeof *map);
+    if (threads <= 0)
+        threads = render_core_count();
+    Worker *workers = calloc((size_t)threads, sizeof *workers);
+    pthread_t *ids = calloc((size_t)threads, sizeof *ids);
+    int status = workers && ids ? 0 : -1;
+    for (int i = 0; status == 0 && i < threads; i++)
+        workers[i] = (Worker){scene, settings, (int)((long)settings->emitted * i / threads),
+                              (int)((long)settings->emitted * (i + 1) / threads), NULL, 0, 0,
+                              {0, 0, 0}, 0};
+    int started = 1;
+    for (int i = 1; status == 0 && i < threads; i++) {
+        if (pthread_create(&ids[i], NULL, shoot_thread, &workers[i]) != 0)
+            break; /* the rest are shot below, on this thread */
+        started = i + 1;
+    }
+    if (status == 0) {
+        shoot_thread(&workers[0]);
+        for (int i = 1; i < started; i++)
+            pthread_join(ids[i], NULL);
+        for (int i = started; i < threads; i++)
+            shoot_thread(&workers[i]);
+    }
+    for (int i = 0; status == 0 && i < threads; i++) {
+        status = workers[i].failed ? -1 : 0;
+        ray_counts_add(counts, workers[i].rays);
+    }
+    if (status == 0)
+        status = gather(map, workers, threads, settings->emitted);
+    for (int i = 0; workers && i < threads; i++)
+        free(workers[i].photons);
+    free(workers);
+    free(ids);
+    return status;
+}
+
+/* Two independent 64-bit seeds for pass `pass`: its camera samples and its photons. */
+static void pass_seeds(uint64_t seed, int pass, uint64_t *image_seed, uint64_t *photon_seed)
+{
+    Rng rng = rng_for_sample(seed, 0x70686f746f6eULL /* "photon" */, (uint64_t)pass);
+    uint64_t high = rng_next(&rng);
+    *image_seed = high << 32 | rng_next(&rng);
+    high = rng_next(&rng);
+    *photon_seed = high << 32 | rng_next(&rng);
+}
+
+/* One pass: a fresh caustic map, then the image with it. */
+static int render_pass(const Scene *scene, const RenderSettings *whole,
+                       const PpmSettings *settings, int pass, RenderResult *image,
+                       RayCounts *photon_rays, int *stored)
+{
+    uint64_t image_seed, photon_seed;
+    pass_seeds(whole->image.seed, pass, &image_seed, &photon_seed);
+    PhotonMapSettings photons = {settings->photons, PHOTON_CAUSTIC, settings->path.fresnel,
+                                 photon_seed};
+    PhotonMap map;
+    if (ppm_photon_map(&map, scene, &photons, whole->threads, photon_rays) != 0)
+        return -1;
+    *stored = map.count;
+    CausticPathSettings estimator = {settings->path, &map,
+                                     ppm_radius(settings->radius, settings->alpha, pass)};
+    RenderSettings pass_render = *whole;
+    pass_render.image.spp = settings->spp;
+    pass_render.image.seed = image_seed;
+    pass_render.progress = 0;
+    int status = render(scene, &pass_render, path_caustics_radiance, &estimator, image);
+    photon_map_free(&map);
+    return status;
+}
+
+/* The mean of the passes and its standard error, from per-pixel sums over passes. */
+static void finish(const double *sum, const double *sum_squares, int passes, RenderResult *r)
+{
+    long values = 3L * r->image.width * r->image.height;
+    for (long i = 0; i < values; i++) {
+        double mean = passes > 0 ? sum[i] / passes : 0.0, error = 0.0;
+        if (passes > 1)
+            error = sqrt(fmax(sum_squares[i] - passes * mean * mean, 0.0) / (passes - 1) / passes);
+        r->image.pixels[i] = (float)mean;
+        r->std_error.pixels[i] = (float)error;
+    }
+}
+
+/* Another pass, if one is left and the budget allows it: the total time with it (judged
+ * by the mean pass so far) ends nearer the budget than without it. */
+static int budget_allows(const PpmSettings *s, int done, double cpu_used)
+{
+    if (done >= s->passes)
+        return 0;
+    return s->cpu_seconds <= 0.0 || done == 0 || cpu_used + 0.5 * cpu_used / done <= s->cpu_seconds;
+}
+
+int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettings *settings,
+               PpmResult *result)
+{
+    PpmResult r = {0};
+    long values = 3L * render->image.width * render->image.height;
+    r.render.image = image_new(render->image.width, render->image.height);
+    r.render.std_error = image_new(render->image.width, render->image.height);
+    double *sum = calloc((size_t)values, sizeof *sum);
+    double *sum_squares = calloc((size_t)values, sizeof *sum_squares);
+    int status = r.render.image.pixels && r.render.std_error.pixels && sum && sum_squares ? 0 : -1;
+    int show = render->progress && isatty(STDERR_FILENO);
+    double start = stats_now(), cpu_start = stats_cpu_now();
+    long stored = 0;
+    while (status == 0 && budget_allows(settings, r.passes, stats_cpu_now() - cpu_start)) {
+        RenderResult pass;
+        int pass_stored;
+        if (render_pass(scene, render, settings, r.passes + 1, &pass, &r.render.rays, &pass_stored) != 0) {
+            status = -1;
+            break;
+        }
+        if (pass.interrupted) {
+            r.render.interrupted = 1;
+            render_result_free(&pass);
+            break;
+        }
+        for (long i = 0; i < values; i++) {
+            double v = pass.image.pixels[i];
+            sum[i] += v;
+            sum_squares[i] += v * v;
+        }
+        r.passes++;
+        stored += pass_stored;
+        r.render.threads = pass.threads;
+        r.render.samples += pass.samples;
+        r.render.nonfinite += pass.nonfinite;
+        ray_counts_add(&r.render.rays, pass.rays);
+        render_result_free(&pass);
+        if (show)
+            fprintf(stderr, "\r%s: pass %d, %.1f s   ", render->label ? render->label : "ppm",
+                    r.passes, stats_now() - start);
+    }
+    if (show)
+        fprintf(stderr, "\r%*s\r", 40, "");
+    r.render.seconds = stats_now() - start;
+    r.cpu_seconds = stats_cpu_now() - cpu_start;
+    if (status == 0) {
+        finish(sum, sum_squares, r.passes, &r.render);
+        r.radius = ppm_radius(settings->radius, settings->alpha, r.passes > 0 ? r.passes : 1);
+        r.stored = r.passes > 0 ? (double)stored / r.passes : 0.0;
+        *result = r;
+    } else {
+        ppm_result_free(&r);
+    }
+    free(sum);
+    free(sum_squares);
+    return status;
+}
+
+void ppm_result_free(PpmResult *result)
+{
+    render_result_free(&result->render);
+}

@@ -1,0 +1,52 @@
+/* ppm.h (bench, chapter 8): rendering with progressive photon mapping, pass by pass
+ * (Knaus and Zwicker 2011), on every core.
+ *
+ * Pass i shoots a fresh caustic photon map (photon.h) on the threads, renders the image
+ * with it (path_caustics.h) at radius ppm_radius(r_1, alpha, i), and the result is the
+ * mean of the pass images. Each pass's photons and camera samples have their own seeds,
+ * derived from the render's seed and the pass number, so the image is the same for any
+ * thread count; the spread between the independent passes gives each pixel's standard
+ * error. A budget of processor time can end the passes (docs/chapter8.md).
+ */
+#ifndef PPM_H
+#define PPM_H
+
+#include "path_caustics.h"
+#include "photon_estimate.h"
+#include "renderer.h"
+
+typedef struct {
+    PathSettings path;    /* the path tracer's settings (its fresnel also for photons) */
+    int photons;          /* emitted per pass */
+    double radius;        /* r_1 */
+    double alpha;         /* of the radius schedule */
+    int spp;              /* camera samples per pixel per pass */
+    int passes;           /* passes to render */
+    double cpu_seconds;   /* > 0: a budget of processor time (stats_cpu_now): passes are
+                           * rendered while one more would end nearer the budget than
+                           * stopping (judged by the mean pass so far); at least one */
+} PpmSettings;
+
+typedef struct {
+    RenderResult render; /* the mean of the passes and its standard error; time, rays */
+    int passes;          /* passes rendered */
+    double cpu_seconds;  /* processor time used, all threads together */
+    double radius;       /* the last pass's radius */
+    double stored;       /* photons stored per pass, on average */
+} PpmResult;
+
+/* The map of settings->emitted photons, shot by `threads` threads (0: one per core);
+ * the same map for any count. Returns 0, or -1 when memory runs out. */
+int ppm_photon_map(PhotonMap *map, const Scene *scene, const PhotonMapSettings *settings,
+                   int threads, RayCounts *counts);
+
+/* Render with `render`'s size, threads, seed and progress (its spp and sampling are
+ * those of each pass: settings->spp, and render->sampling). A SIGINT stops after the
+ * pass in progress, which is dropped; result->render.interrupted says so. Returns 0,
+ * or -1 when memory runs out (nothing is then allocated). */
+int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettings *settings,
+               PpmResult *result);
+
+void ppm_result_free(PpmResult *result);
+
+#endif

@@ -1,0 +1,157 @@
+/* reference.c (bench, chapter 7): the reference renderer, build/reference.
+ *
+ * Every chapter measures its panels against a reference: the same expectation rendered
+ * with many more samples and the lowest-variance estimator we have (measure.h). A
+ * chapter's own library may not be able to render it well (chapter 2 has no shadow
+ * rays), so this program is built from the final chapter's library, and the chapter
+ * programs run it when their cache has no reference yet (experiment.h); a student never
+ * needs to run it by hand.
+ *
+ * It reads the scene from --scene (the chapter programs pipe the bytes they read into
+ * /dev/stdin), applies the one change a chapter may make to it (--sigma NAME=S: the
+ * roughness of one material, chapter 5's sweep), renders what the path tracer with the
+ * given depth and Fresnel mode estimates, with the most efficient unbiased estimator
+ * measured (chapter 7's levers table): one shadow ray, Russian roulette with bounded
+ * weights (finite variance for any reflectance) and the planar mirrors' images of the
+ * lamps at every diffuse hit (mirror_light.h; nothing where a scene has no planar
+ * mirror), bounces aimed at the mirror and glass spheres (sphere_guide.h), on jittered
+ * sub-pixels, in REFERENCE_BATCHES independent batches (render_batches.h): sub-pixels
+ * reach the same noise as random positions with about half the samples at 800 x 800,
+ * and the batches still give the per-pixel errors without bias, which the chapters
+ * subtract from their MSE. It stores the reference as --out/KEY.pfm, KEY-stderr.pfm
+ * and KEY.txt. An interrupted render stores nothing and exits with status 130.
+ */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "measure.h"
+#include "path_final.h"
+#include "render_batches.h"
+#include "scene_file.h"
+#include "sphere_guide.h"
+
+static const char *program = "reference";
+
+/* Batches of the reference (render_batches.h); --reference-spp is rounded up to a
+ * multiple of them. */
+#define REFERENCE_BATCHES 8
+
+static void fail(int status, const char *format, const char *detail)
+{
+    fprintf(stderr, "%s: ", program);
+    fprintf(stderr, format, detail);
+    fputc('\n', stderr);
+    exit(status);
+}
+
+typedef struct {
+    const char *scene, *name, *fresnel, *sigma, *out, *key;
+    long size, spp, depth;
+    unsigned long long seed;
+    int quiet;
+} Request;
+
+static long whole_number(const char *flag, const char *text, long min, long max)
+{
+    char *end;
+    errno = 0;
+    long value = strtol(text, &end, 10);
+    if (*text == '\0' || *end != '\0' || errno != 0 || value < min || value > max)
+        fail(2, "%s: expected a whole number in range", flag);
+    return value;
+}
+
+static Request parse(int argc, char **argv)
+{
+    Request r = {.scene = NULL, .name = NULL, .fresnel = "schlick", .sigma = "=0"};
+    for (int i = 1; i < argc; i++) {
+        const char *flag = argv[i];
+        if (strcmp(flag, "--quiet") == 0) {
+            r.quiet = 1;
+            continue;
+        }
+        if (i + 1 >= argc)
+            fail(2, "%s: missing value", flag);
+        const char *value = argv[++i];
+        if (strcmp(flag, "--scene") == 0) r.scene = value;
+        else if (strcmp(flag, "--name") == 0) r.name = value;
+        else if (strcmp(flag, "--fresnel") == 0) r.fresnel = value;
+        else if (strcmp(flag, "--sigma") == 0) r.sigma = value;
+        else if (strcmp(flag, "--out") == 0) r.out = value;
+        else if (strcmp(flag, "--key") == 0) r.key = value;
+        else if (strcmp(flag, "--size") == 0) r.size = whole_number(flag, value, 1, 16384);
+        else if (strcmp(flag, "--reference-spp") == 0) r.spp = whole_number(flag, value, 1, 1 << 24);
+        else if (strcmp(flag, "--depth") == 0) r.depth = whole_number(flag, value, 1, 1000);
+        else if (strcmp(flag, "--seed") == 0) r.seed = strtoull(value, NULL, 10);
+        else fail(2, "unknown option '%s' (this program is run by the chapter programs)", flag);
+    }
+    if (!r.scene || !r.out || !r.key || r.size == 0 || r.spp == 0 || r.depth == 0)
+        fail(2, "%s", "needs --scene, --size, --reference-spp, --depth, --out and --key");
+    if (strcmp(r.fresnel, "schlick") != 0 && strcmp(r.fresnel, "exact") != 0)
+        fail(2, "--fresnel: expected 'schlick' or 'exact', got '%s'", r.fresnel);
+    return r;
+}
+
+/* --sigma NAME=S: set the roughness of the Oren-Nayar material NAME (none if NAME is
+ * empty). */
+static void apply_sigma(Scene *scene, const char *sigma)
+{
+    const char *equals = strchr(sigma, '=');
+    if (!equals)
+        fail(2, "--sigma: expected NAME=SIGMA, got '%s'", sigma);
+    if (equals == sigma)
+        return;
+    char name[MATERIAL_NAME_MAX];
+    snprintf(name, sizeof name, "%.*s", (int)(equals - sigma), sigma);
+    int material = scene_file_material(scene, name);
+    if (material < 0 || scene->materials[material].kind != MATERIAL_OREN_NAYAR)
+        fail(2, "--sigma: no oren_nayar material '%s'", name);
+    scene->materials[material].sigma = strtod(equals + 1, NULL);
+}
+
+int main(int argc, char **argv)
+{
+    Request request = parse(argc, argv);
+    Scene scene;
+    char error[4400];
+    if (scene_load(request.scene, &scene, error, sizeof error) != 0)
+        fail(2, "%s", error);
+    apply_sigma(&scene, request.sigma);
+    MirrorPlanes mirrors;
+    if (mirror_light_find_planes(&scene, &mirrors) != 0)
+        fail(1, "%s", "out of memory");
+
+    PathSettings path = {.max_depth = (int)request.depth, .shadow_rays = 1,
+                         .fresnel = strcmp(request.fresnel, "exact") == 0 ? FRESNEL_EXACT
+                                                                         : FRESNEL_SCHLICK,
+                         .rr_throughput = 1, .mirror_light = (int)request.depth,
+                         .mirrors = &mirrors, .sphere_guide = SPHERE_GUIDE_STRENGTH};
+    RenderSettings settings = {0};
+    settings.image.width = (int)request.size;
+    settings.image.height = (int)lround(request.size / camera_aspect(&scene.camera));
+    settings.image.spp = (int)((request.spp + REFERENCE_BATCHES - 1) / REFERENCE_BATCHES * REFERENCE_BATCHES);
+    settings.image.sampling = PIXEL_SUBPIXELS;
+    settings.image.seed = request.seed;
+    settings.progress = !request.quiet;
+    settings.label = "reference";
+    render_install_interrupt();
+    RenderResult result;
+    if (render_batches(&scene, &settings, REFERENCE_BATCHES, path_final_radiance, &path, &result) != 0)
+        fail(1, "%s", "out of memory");
+    if (result.interrupted)
+        fail(130, "%s", "interrupted; nothing was cached");
+    Reference reference = {result.image, result.std_error, measure_rms(&result.std_error),
+                           render_samples_per_pixel(&result), result.seconds, 0, 0.0, 0.0};
+    measure_image_mean(&result.image, &result.average_std_error, &reference.mean,
+                       &reference.mean_std_error);
+    image_free(&result.average_std_error);
+    uint64_t key = strtoull(request.key, NULL, 16);
+    if (measure_save_reference(request.out, key, &reference) != 0)
+        fail(1, "cannot write the reference into %s", request.out);
+    render_result_free(&result);
+    mirror_planes_free(&mirrors);
+    scene_free(&scene);
+    return 0;
+}

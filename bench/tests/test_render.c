@@ -1,0 +1,261 @@
+/* test_render.c (bench, chapter 1): Tests of the pixel loop (lib/render.c).
+ *
+ * - Determinism: the room rendered with 1, 2 and 7 threads is the same image bit for
+ *   bit, with random positions and with sub-pixels (every sample has its own
+ *   generator, every pixel its own stratum start, and every pixel sums its samples in
+ *   order; SPEC §9). Chapter 1 renders it with Whitted; from chapter 6 on, with the path
+ *   tracer and every option it has.
+ * - Estimates: with an estimator that returns a known value per sample, each pixel is
+ *   the mean of its samples and its standard errors (per channel, and of the channel
+ *   mean) are the textbook ones, also for a bright pixel of small spread, where only a
+ *   numerically stable update (Welford's, chapter 1) keeps them.
+ * - Non-finite samples (SPEC §7) are dropped and counted; the pixel is the mean of
+ *   the others.
+ * - An interrupted render (SIGINT) stops early, and every pixel is still the mean of
+ *   the samples it actually received.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <signal.h>
+#include <string.h>
+
+#include "scene_file.h"
+#if CHAPTER >= 6
+#include "path.h"
+#else
+#include "whitted.h"
+#endif
+
+/* Render the room with 1, 2 and 7 threads: the same images bit for bit, and the same
+ * ray counts: one camera ray per sample, and bounce and shadow rays (the room has
+ * mirrors and a light), counted in full whichever thread traced them. The one-thread
+ * result is left in *first. */
+static void assert_same_for_any_thread_count(const Scene *scene, Estimator estimate,
+                                             const void *estimator_settings,
+                                             PixelSampling sampling, RenderResult *first)
+{
+    const int threads[] = {1, 2, 7};
+    size_t bytes = 3 * 48 * 48 * sizeof(float);
+    RenderResult results[3];
+    for (int i = 0; i < 3; i++) {
+        RenderSettings settings = {48, 48, 3, sampling, threads[i], 2019, 0, "test"};
+        assert_int_equal(render(scene, &settings, estimate, estimator_settings, &results[i]), 0);
+        assert_int_equal(results[i].threads, threads[i]);
+        assert_true(results[i].samples == 48 * 48 * 3 && results[i].rays.camera == 48 * 48 * 3);
+    }
+    assert_true(results[0].rays.bounce > 0 && results[0].rays.shadow > 0);
+    for (int i = 1; i < 3; i++) {
+        assert_memory_equal(results[0].image.pixels, results[i].image.pixels, bytes);
+        assert_memory_equal(results[0].std_error.pixels, results[i].std_error.pixels, bytes);
+        assert_memory_equal(results[0].average_std_error.pixels,
+                            results[i].average_std_error.pixels, bytes);
+        assert_true(results[0].rays.bounce == results[i].rays.bounce);
+        assert_true(results[0].rays.shadow == results[i].rays.shadow);
+        render_result_free(&results[i]);
+    }
+    *first = results[0];
+}
+
+static void test_same_image_for_any_thread_count(void **state)
+{
+    (void)state;
+    Scene scene;
+    char error[256];
+#if CHAPTER >= 6
+    const char *scene_file = "scenes/room.scene";
+    Estimator estimate = path_radiance;
+    PathSettings path = {.max_depth = 64, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
+                         .rr_survival = 0.5};
+#else
+    const char *scene_file = "scenes/room_whitted.scene";
+    Estimator estimate = whitted_radiance;
+    WhittedSettings path = {10};
+#endif
+    assert_int_equal(scene_load(scene_file, &scene, error, sizeof error), 0);
+    RenderResult random, subpixels;
+    assert_same_for_any_thread_count(&scene, estimate, &path, PIXEL_RANDOM, &random);
+    assert_same_for_any_thread_count(&scene, estimate, &path, PIXEL_SUBPIXELS, &subpixels);
+    /* A different seed gives a different image: the test above is not vacuous. */
+    size_t bytes = 3 * 48 * 48 * sizeof(float);
+    RenderSettings other = {48, 48, 3, PIXEL_RANDOM, 2, 2020, 0, "test"};
+    RenderResult different;
+    assert_int_equal(render(&scene, &other, estimate, &path, &different), 0);
+    assert_true(memcmp(random.image.pixels, different.image.pixels, bytes) != 0);
+    render_result_free(&random);
+    render_result_free(&subpixels);
+    render_result_free(&different);
+    scene_free(&scene);
+}
+
+/* (u, 2u, 1) with u the sample's first random number. */
+static Vec3 sample_number(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                          RayCounts *counts)
+{
+    (void)scene, (void)ray, (void)settings, (void)counts;
+    double u = rng_uniform(rng);
+    return vec3(u, 2.0 * u, 1.0);
+}
+
+/* Each pixel's value and standard errors against the same samples drawn by hand. The
+ * channel mean (u + 2u + 1) / 3 = u + 1/3 has the standard error of u itself, which the
+ * three channels' errors, taken as independent, would put at sqrt(1 + 4 + 0) / 3 =
+ * 0.75 of it. */
+static void test_pixel_is_mean_of_samples(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
+    RenderSettings settings = {4, 4, 5, PIXEL_CENTRE, 2, 77, 0, "test"};
+    RenderResult result;
+    assert_int_equal(render(&scene, &settings, sample_number, NULL, &result), 0);
+    for (int pixel = 0; pixel < 16; pixel++) {
+        double sum = 0, sum_squares = 0;
+        for (int s = 0; s < 5; s++) {
+            Rng rng = rng_for_sample(77, (uint64_t)pixel, (uint64_t)s);
+            double u = rng_uniform(&rng);
+            sum += u;
+            sum_squares += u * u;
+        }
+        double mean = sum / 5, std_error = sqrt((sum_squares - 5 * mean * mean) / 4 / 5);
+        Vec3 value = image_get(&result.image, pixel % 4, pixel / 4);
+        Vec3 error = image_get(&result.std_error, pixel % 4, pixel / 4);
+        assert_true(fabs(value.x - mean) < 1e-6 && fabs(value.y - 2 * mean) < 1e-6);
+        assert_true(value.z == 1.0f && error.z == 0.0f);
+        assert_true(fabs(error.x - std_error) < 1e-6);
+        assert_true(fabs(error.y - 2 * std_error) < 1e-6);
+        Vec3 average_error = image_get(&result.average_std_error, pixel % 4, pixel / 4);
+        assert_true(fabs(average_error.x - std_error) < 1e-6);
+        assert_true(average_error.x == average_error.y && average_error.x == average_error.z);
+    }
+    assert_true(result.samples == 80 && result.nonfinite == 0 && !result.interrupted);
+    render_result_free(&result);
+}
+
+/* A bright pixel of small spread: 10^9 + u, with u the sample's first random number;
+ * channel 1 is u alone. */
+#define BRIGHT 1e9
+
+static Vec3 bright_sample(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                          RayCounts *counts)
+{
+    (void)scene, (void)ray, (void)settings, (void)counts;
+    double u = rng_uniform(rng);
+    return vec3(BRIGHT + u, u, BRIGHT + u);
+}
+
+/* Welford's method (render.h) keeps the spread of a bright pixel: its standard error
+ * is that of u, within 0.1%, computed here by the two-pass formula (mean first, then
+ * squared deviations from it). The textbook sum of squares, sum x^2 - n mean^2 with
+ * x = 10^9 + u, subtracts numbers near 10^20 whose rounding (about 10^4 each) swamps
+ * the variance 1/12: with it the test fails. 200 samples per pixel. */
+static void test_variance_of_a_bright_pixel(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
+    const int spp = 200;
+    RenderSettings settings = {4, 4, spp, PIXEL_CENTRE, 2, 31, 0, "test"};
+    RenderResult result;
+    assert_int_equal(render(&scene, &settings, bright_sample, NULL, &result), 0);
+    for (int pixel = 0; pixel < 16; pixel++) {
+        double u[200], mean = 0.0, squares = 0.0;
+        for (int s = 0; s < spp; s++) {
+            Rng rng = rng_for_sample(31, (uint64_t)pixel, (uint64_t)s);
+            u[s] = rng_uniform(&rng);
+            mean += u[s] / spp;
+        }
+        for (int s = 0; s < spp; s++)
+            squares += (u[s] - mean) * (u[s] - mean);
+        double expected = sqrt(squares / (spp - 1) / spp);
+        Vec3 error = image_get(&result.std_error, pixel % 4, pixel / 4);
+        Vec3 average_error = image_get(&result.average_std_error, pixel % 4, pixel / 4);
+        if (pixel == 0)
+            print_message("    standard error %.6f, expected %.6f (u alone: %.6f)\n", error.x,
+                          expected, error.y);
+        assert_true(fabs(error.x - expected) < 1e-3 * expected);
+        assert_true(fabs(error.z - expected) < 1e-3 * expected);
+        assert_true(fabs(error.y - expected) < 1e-6 * expected);
+        assert_true(fabs(average_error.x - expected) < 1e-3 * expected);
+    }
+    render_result_free(&result);
+}
+
+/* Every third sample is NaN or infinite. */
+static Vec3 sometimes_nonfinite(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                                RayCounts *counts)
+{
+    (void)scene, (void)ray, (void)settings, (void)counts;
+    uint32_t r = rng_next(rng) % 3;
+    return r == 0 ? vec3(NAN, 1, 1) : r == 1 ? vec3(1, INFINITY, 1) : vec3(0.5, 0.5, 0.5);
+}
+
+static void test_nonfinite_samples_dropped_and_counted(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
+    RenderSettings settings = {8, 8, 30, PIXEL_CENTRE, 2, 5, 0, "test"};
+    RenderResult result;
+    assert_int_equal(render(&scene, &settings, sometimes_nonfinite, NULL, &result), 0);
+    uint64_t expected = 0;
+    for (int pixel = 0; pixel < 64; pixel++)
+        for (int s = 0; s < 30; s++) {
+            Rng rng = rng_for_sample(5, (uint64_t)pixel, (uint64_t)s);
+            expected += rng_next(&rng) % 3 != 2;
+        }
+    assert_true(result.nonfinite == expected && expected > 0);
+    for (int i = 0; i < 3 * 64; i++)
+        assert_true(result.image.pixels[i] == 0.5f || result.image.pixels[i] == 0.0f);
+    render_result_free(&result);
+}
+
+/* Returns 1 per sample, and raises SIGINT during pass 3. */
+static Vec3 interrupt_midway(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                             RayCounts *counts)
+{
+    (void)scene, (void)ray, (void)rng, (void)counts;
+    const int *pass_to_interrupt = settings;
+    static int calls;
+    if (++calls == 64 * 64 * *pass_to_interrupt + 100)
+        raise(SIGINT);
+    return vec3(1, 1, 1);
+}
+
+static void test_interrupt_keeps_a_normalised_image(void **state)
+{
+    (void)state;
+    Scene scene;
+    scene_init(&scene);
+    scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
+    render_install_interrupt();
+    RenderSettings settings = {64, 64, 1000, PIXEL_CENTRE, 1, 5, 0, "test"};
+    int pass_to_interrupt = 3;
+    RenderResult result;
+    assert_int_equal(render(&scene, &settings, interrupt_midway, &pass_to_interrupt, &result), 0);
+    assert_true(result.interrupted);
+    double spp = render_samples_per_pixel(&result);
+    print_message("    stopped after %.3f of 1000 samples per pixel\n", spp);
+    assert_true(spp > 3.0 && spp < 4.0); /* the row in progress finished, then it stopped */
+    for (int i = 0; i < 3 * 64 * 64; i++)
+        assert_true(result.image.pixels[i] == 1.0f); /* each pixel: its sum / its count */
+    render_result_free(&result);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_same_image_for_any_thread_count),
+        cmocka_unit_test(test_pixel_is_mean_of_samples),
+        cmocka_unit_test(test_variance_of_a_bright_pixel),
+        cmocka_unit_test(test_nonfinite_samples_dropped_and_counted),
+        cmocka_unit_test(test_interrupt_keeps_a_normalised_image),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

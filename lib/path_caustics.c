@@ -1,0 +1,47 @@
+/* path_caustics.c (chapter 8): the path tracer with caustics from a photon map. See
+ * path_caustics.h. */
+#include "path_caustics.h"
+
+#include "area_light.h"
+#include "photon_estimate.h"
+#include "roulette.h"
+
+Vec3 path_caustics_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                            RayCounts *counts)
+{
+    const CausticPathSettings *c = settings;
+    const PathSettings *s = &c->path;
+    Vec3 radiance = vec3(0, 0, 0), throughput = vec3(1, 1, 1);
+    int add_emission = 1, diffuse_vertices = 0;
+    Vertex x;
+    for (int segment = 1; path_vertex(scene, ray, &x); segment++) {
+        if (x.front && add_emission)
+            radiance = vec3_add(radiance, vec3_mul(throughput, x.material->emission));
+        if (x.material->kind == MATERIAL_LIGHT || segment >= s->max_depth)
+            break;
+        Vec3 direction, weight;
+        if (material_is_diffuse(x.material)) {
+            if (s->shadow_rays > 0) {
+                Vec3 direct = area_light_direct(scene, x.hit.point, x.normal, x.wo, x.material,
+                                                s->shadow_rays, rng, counts);
+                radiance = vec3_add(radiance, vec3_mul(throughput, direct));
+            }
+            Vec3 caustic = photon_estimate_radiance(c->caustics, c->radius, x.hit.point,
+                                                    x.normal, x.wo, x.material);
+            radiance = vec3_add(radiance, vec3_mul(throughput, caustic));
+            add_emission = s->shadow_rays == 0;
+            if (!roulette_continues(s, segment, &throughput, rng))
+                break;
+            weight = path_diffuse_bounce(&x, rng, &direction);
+            diffuse_vertices++;
+        } else {
+            weight = path_specular(&x, ray.dir, s, rng, &direction);
+            /* After a diffuse bounce, light through mirrors and glass is the map's. */
+            add_emission = diffuse_vertices == 0;
+        }
+        throughput = vec3_mul(throughput, weight);
+        counts->bounce++;
+        ray = ray_spawn(x.hit.point, x.normal, direction, scene->scale);
+    }
+    return radiance;
+}
