@@ -1,4 +1,4 @@
-/* atomic_file.h (bench, chapter 1): writing an output file whole or not at all (SPEC §9).
+/* atomic_file.h (bench, chapter 1): writing an output file whole or not at all.
  *
  * Introduced in chapter 1. The data goes to "PATH.tmp.PID" in the same directory; only
  * when every byte is written and the file closed without error is it renamed over

@@ -1,5 +1,5 @@
-/* bench.c (bench, chapter 7): the speed benchmark (`make bench`; chapter 7). A benchmark, not a test: it
- * asserts nothing and prints what it measures.
+/* bench.c (bench, chapter 7): the speed benchmark (`make bench`). A benchmark, not a
+ * test: it asserts nothing and prints what it measures.
  *
  * The workload is Table 1's first row, the report's cheapest full image: the room at
  * 800 x 800, 16 samples per pixel on sub-pixels, 1 shadow ray, roulette alpha 0.25.
@@ -7,15 +7,15 @@
  * rays per second (camera, bounce and shadow rays together), per core, samples per
  * second, and the rays per CPU second, which is the per-core speed even on a machine
  * that other programs share (wall time then counts their turns too). Then the
- * speed-up and issue 11's target: at least 15 M rays/s per core. The image is the
- * same for any thread count (tests/test_render.c), so the two runs do exactly the
- * same work.
+ * speed-up and the target: at least 15 M rays/s per core. The image is the same for
+ * any thread count (bench/tests/test_render.c), so the two runs do exactly the same
+ * work.
  *
  * Then the room's efficiency, 1 / (relative MSE x seconds), of chapter 7's final
  * estimator (Figure 7's: one shadow ray, bounded-weight roulette, the lamp's mirror
  * image, exact Fresnel, depth 64) at a quarter of the size and 64 spp on all cores,
  * measured over 3 runs against the reference that chapter 7 uses at that size
- * (build/reference, cached in build/references: rendered once, about a minute), with
+ * (build/reference, cached in build/references: rendered once), with
  * independent numbers and with the stratified pairs (sobol.h).
  */
 #include <stdio.h>
@@ -69,7 +69,7 @@ int main(int argc, char **argv)
            results[0].seconds / results[1].seconds, results[1].threads,
            1e-6 * results[1].rays.camera, 1e-6 * results[1].rays.bounce, 1e-6 * results[1].rays.shadow);
     double per_core = 1e-6 * rays / cpu[1];
-    printf("target (issue 11): at least 15 Mrays/s per core: %s (%.2f Mrays per CPU second)\n",
+    printf("target: at least 15 Mrays/s per core: %s (%.2f Mrays per CPU second)\n",
            per_core >= 15.0 ? "met" : "NOT met", per_core);
     for (int i = 0; i < 2; i++)
         render_result_free(&results[i]);

@@ -1,5 +1,5 @@
 #!/bin/sh
-# browser_gallery.sh: the gallery page in a real browser (chapter 1; lib/gallery.h).
+# browser_gallery.sh: the gallery page in a real browser (bench/gallery.h).
 #
 # Opens DIR/index.html (default build/figures) from disk in headless Chromium (Debian's
 # chromium package) and checks that every image loaded (complete, naturalWidth > 0), that
@@ -16,7 +16,7 @@
 # The same check runs first on a copy with one image's name spoiled and a console.error
 # added: unless it reports both, the check itself is broken and the test fails.
 #
-#   usage: sh tests/browser_gallery.sh [DIR]      (make browser-test)
+#   usage: sh bench/browser_gallery.sh [DIR]      (make browser-test)
 set -eu
 dir=${1:-build/figures}
 page=$dir/index.html

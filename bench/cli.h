@@ -1,4 +1,4 @@
-/* cli.h (bench, chapter 1): the command line every chapter program shares (SPEC §9).
+/* cli.h (bench, chapter 1): the command line every chapter program shares.
  *
  * Introduced in chapter 1. Each program declares which flags it takes (a chapter
  * accepts only what it uses) and its defaults, which reproduce the report. Values
@@ -34,9 +34,8 @@ enum {
     FLAG_STRATA = 1u << 14       /* --strata on|off: stratified pairs (chapter 7; sobol.h) */
 };
 
-/* --runs: at most; by default, two (at the report's 800 x 800 a run of Figure 7 takes
- * about a minute, and issue 10 allowed fewer runs at full size where time demands: issue
- * 11's time for `make figures`); and with --quick (small images, so more runs for the
+/* --runs: at most; by default, two (at the report's 800 x 800 a run of Figure 7 is long,
+ * so full size keeps few runs); and with --quick (small images, so more runs for the
  * same time). */
 #define CLI_RUNS_MAX 100
 #define CLI_RUNS 2

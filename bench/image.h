@@ -11,7 +11,7 @@
  *     rounded to 8 bits.
  *
  * Files are written whole or not at all: into "PATH.tmp.PID" first, renamed over PATH
- * only when complete (SPEC §9).
+ * only when complete.
  */
 #ifndef IMAGE_H
 #define IMAGE_H

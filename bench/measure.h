@@ -1,5 +1,5 @@
 /* measure.h (bench, chapter 2): how far an image is from the truth, and the reference that stands for it
- * (SPEC §6).
+ * (docs/chapter2.md).
  *
  * Introduced in chapter 2. The truth is unknown, so each experiment renders a reference:
  * the same scene and quantity at many more samples, usually with a lower-variance

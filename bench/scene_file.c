@@ -24,7 +24,7 @@
  * camera's image plane) at least SIZE_MIN across. The geometry computes up to fourth
  * powers of a shape's size (the squared length of a cross product of two edges), and
  * those must stay well inside double precision's range, 1e-308 to 1e308: 1e77 already
- * overflowed (issue 9, case 11), 1e-80 underflows. Within this range the renderer works
+ * overflows, 1e-80 underflows. Within this range the renderer works
  * at any scale (the ray offset is relative to the scene, ray.h). */
 #define NUMBER_MAX 1e50
 #define SIZE_MIN 1e-50
@@ -37,7 +37,7 @@
 /* Emitted radiance, and point lights' intensity, above this are refused. A sample is
  * the emission times a gain (reflectances <= 1, a light's area over a squared
  * distance); 1e20 leaves that gain 18 orders of magnitude before the images' 32-bit
- * floats (at most 3.4e38) overflow, where 1e100 gave +inf pixels (issue 9, case 12). */
+ * floats (at most 3.4e38) overflow; 1e100 gave +inf pixels. */
 #define EMISSION_MAX 1e20
 
 /* A scene file larger than this is refused, before more is read (/dev/zero gives up
@@ -88,7 +88,7 @@ struct Form {
 
 /* Write "NAME:LINE: reason" into error[size]. A name too long to leave room for the
  * rest is shortened in its middle, "start...end", so that the line and the reason are
- * always there (a 609-character path used to cut them off: issue 9, case 16). */
+ * always there, however long the path. */
 static void write_message(char *error, size_t size, const char *name, int line,
                           const char *reason)
 {

@@ -1,4 +1,4 @@
-/* table.h (bench, chapter 1): one row per rendered panel: what it cost and what it bought (SPEC §6).
+/* table.h (bench, chapter 1): one row per rendered panel: what it cost and what it bought.
  *
  * Introduced in chapter 1 (cost columns); chapter 2 fills the error columns from a
  * reference image (measure.h). Printed as an aligned table on stdout and written as a
@@ -13,7 +13,7 @@
  *   efficiency         1 / (rel_mse * seconds): higher is better; doubling the samples
  *                      of an unbiased estimator halves rel_mse and doubles the time, so
  *                      efficiency compares estimators independently of sample count
- *   nonfinite          samples dropped for being NaN or infinite (SPEC §7)
+ *   nonfinite          samples dropped for being NaN or infinite
  * An error column is "-" (empty in the CSV) when no reference was used.
  */
 #ifndef TABLE_H

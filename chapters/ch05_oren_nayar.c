@@ -1,6 +1,6 @@
-/* ch05_oren_nayar.c (chapter 5): the Oren-Nayar reflector (report §3.5.4, §4.5; Figure 10; SPEC §8.1).
+/* ch05_oren_nayar.c (chapter 5): the Oren-Nayar reflector (report §3.5.4, §4.5; Figure 10).
  *
- * New concepts (lib/): oren_nayar (eqs. 13-14 with the corrections of SPEC §8.1:
+ * New concepts (lib/): oren_nayar (eqs. 13-14 with their corrections:
  * A = 1 - sigma^2 / (2 (sigma^2 + 0.33)), and tan(beta) where the report has sin(beta)).
  *
  * The experiment, on scenes/oren_nayar.scene: a rough sphere (material `rough`) beside a

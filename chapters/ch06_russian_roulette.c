@@ -1,4 +1,4 @@
-/* ch06_russian_roulette.c (chapter 6): Russian roulette (report §2.2, §4.7; Figure 12; SPEC §8.5).
+/* ch06_russian_roulette.c (chapter 6): Russian roulette (report §2.2, §4.7; Figure 12).
  *
  * New concepts (lib/): roulette (a path survives each diffuse hit with probability
  * alpha, its weight divided by alpha; alpha is the SURVIVAL probability, erratum §8.5).
@@ -21,7 +21,7 @@
  * that (here: rho^2 of the brightest diffuse surface), the mean is still right in
  * expectation, but a run of finite length usually falls short of it (it has not met
  * the rare, huge samples that make up the difference) and its standard error is not
- * to be trusted: such rows are marked. The reference (chapters/reference.c) uses
+ * to be trusted: such rows are marked. The reference (bench/reference.c) uses
  * bounded weights, whose variance is finite.
  */
 #include <stdio.h>
@@ -64,7 +64,7 @@ static TableRow measure_alpha(const Options *options, const Scene *scene,
 }
 
 /* Every alpha estimates the same image; the reference program renders it with its own
- * estimator (chapters/reference.c): only the depth is taken from here. */
+ * estimator (bench/reference.c): only the depth is taken from here. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
 {
     PathSettings estimator = {.max_depth = options->depth, .shadow_rays = 1, .rr_survival = 0.75};

@@ -80,7 +80,7 @@ static const struct {
 enum { ESTIMATOR_COUNT = sizeof ESTIMATORS / sizeof ESTIMATORS[0], CONVERGENCE_STEPS = 5 };
 
 /* Every setting estimates the same image; the reference program renders it with its
- * own estimator (chapters/reference.c): only the depth and Fresnel mode are taken from
+ * own estimator (bench/reference.c): only the depth and Fresnel mode are taken from
  * here. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
 {

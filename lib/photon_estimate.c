@@ -15,7 +15,6 @@ typedef struct {
 
 static void add_photon(int index, double distance2, void *context)
 {
-    (void)distance2;
     Gather *g = context;
     const Photon *p = &g->map->photons[index];
     if (vec3_dot(p->normal, g->n) < PHOTON_NORMAL_COS || vec3_dot(p->incoming, g->n) <= 0.0)

@@ -1,5 +1,5 @@
 /* agreement.h (chapter 3): per-pixel agreement of two renders. Do two images estimate
- * the same expectation, pixel by pixel? (SPEC §7; used by the tests of chapters 3-6.)
+ * the same expectation, pixel by pixel? (Used by the tests of chapters 3-7.)
  * Include after cmocka.h.
  *
  * After Mitsuba 3's render tests (src/render/tests/test_renders.py), which compare each

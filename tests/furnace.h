@@ -1,5 +1,5 @@
 /* furnace.h (chapter 1): the closed boxes of the white-furnace tests (test_path.c,
- * test_glass_furnace.c; SPEC §7). Include after cmocka.h.
+ * test_glass_furnace.c). Include after cmocka.h.
  *
  * In a closed box whose every surface sends out L = Le + rho L whatever arrives, the
  * radiance is L = Le / (1 - rho) at every point in every direction. Two such boxes,
@@ -17,7 +17,6 @@
  *     for alpha >= 0.75: a bounce multiplies it on average by (0.36 * 1 + 0.64 * 0.25) /
  *     0.75 < 1 (border, middle). The transport's decay per bounce is about
  *     0.36 * 1 + 0.64 * 0.5 = 0.68, so a depth of 40 truncates only ~1e-7 of the series.
- * furnace_box_mirrored (chapter 7) is the bordered box with one wall a mirror.
  * None calls scene_prepare: add anything else first.
  */
 #ifndef FURNACE_H
@@ -55,8 +54,8 @@ static inline void furnace_wall_piece(Scene *scene, int axis, int side, double u
 static inline void furnace_box_uniform(Scene *scene, double rho, double emission)
 {
     scene_init(scene);
-    Material m = {"furnace", MATERIAL_LAMBERT, vec3(rho, rho, rho),
-                  vec3(emission, emission, emission), 0.0, 1.0};
+    Material m = {.name = "furnace", .kind = MATERIAL_LAMBERT, .reflectance = vec3(rho, rho, rho),
+                  .emission = vec3(emission, emission, emission)};
     int material = scene_add_material(scene, m);
     for (int axis = 0; axis < 3; axis++)
         for (int side = -1; side <= 1; side += 2)
@@ -66,8 +65,8 @@ static inline void furnace_box_uniform(Scene *scene, double rho, double emission
 static inline void furnace_box_bordered(Scene *scene)
 {
     scene_init(scene);
-    Material light = {"light", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(1, 1, 1), 0.0, 1.0};
-    Material border = {"border", MATERIAL_LAMBERT, vec3(1, 1, 1), vec3(0, 0, 0), 0.0, 1.0};
+    Material light = {.name = "light", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5), .emission = vec3(1, 1, 1)};
+    Material border = {.name = "border", .kind = MATERIAL_LAMBERT, .reflectance = vec3(1, 1, 1)};
     int light_index = scene_add_material(scene, light);
     int border_index = scene_add_material(scene, border);
     const double cuts[4] = {-1.0, -FURNACE_LIGHT_HALF_WIDTH, FURNACE_LIGHT_HALF_WIDTH, 1.0};
@@ -79,20 +78,5 @@ static inline void furnace_box_bordered(Scene *scene)
                                        cuts[j + 1], i == 1 && j == 1 ? light_index : border_index);
 }
 
-#if CHAPTER >= 7
-/* The bordered box with its wall at x = +1 a perfect mirror (reflectance 1): a mirror
- * sends out the radiance that arrives, so the radiance is still 2 everywhere, and the
- * lights of the other walls are also seen in the mirror (mirror_light.h). */
-static inline void furnace_box_mirrored(Scene *scene)
-{
-    furnace_box_bordered(scene);
-    Material mirror = {"mirror", MATERIAL_MIRROR, vec3(1, 1, 1), vec3(0, 0, 0), 0.0, 1.0};
-    int mirror_index = scene_add_material(scene, mirror);
-    assert_true(mirror_index >= 0);
-    for (int i = 0; i < scene->triangle_count; i++)
-        if (scene->triangles[i].normal.x < -0.5)
-            scene->triangles[i].material = mirror_index;
-}
-#endif
 
 #endif

@@ -1,7 +1,7 @@
 /* test_agreement.c (chapter 3): per-pixel agreement of the path tracer's estimators.
  * Every chapter's estimator agrees, pixel by pixel, with an independent estimator of the
  * same image rendered with more samples (agreement.h: per-pixel z-tests at a Sidak-
- * corrected 1% level, after Mitsuba 3's render tests; SPEC §7). Chapters 2-6:
+ * corrected 1% level, after Mitsuba 3's render tests). Chapters 2-6:
  *   - shadow rays (chapter 3): M = 1 against chapter 2's M = 0, which finds light only
  *     by hitting it, on the report's room;
  *   - exact Fresnel (chapter 4): the same pair with the exact Fresnel reflectance at
@@ -37,9 +37,13 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include "renderer.h"
 #include "agreement.h"
-#include "path.h"
+#include "path_direct.h"
 #include "scene_file.h"
+#if CHAPTER >= 6
+#include "path_roulette.h"
+#endif
 
 #define LEVEL 0.01
 #define ROOM_SIDE 12
@@ -55,12 +59,12 @@ static Scene load(const char *path)
 
 /* The path tracer's image of `scene` at side x side pixels; a tiny image on one thread
  * (render.c starts its threads once per pass). */
-static RenderResult render_path(const Scene *scene, int side, const PathSettings *path, int spp,
-                                uint64_t seed)
+static RenderResult render_path(const Scene *scene, int side, Estimator estimate,
+                                const PathSettings *path, int spp, uint64_t seed)
 {
-    RenderSettings settings = {side, side, spp, PIXEL_RANDOM, side < 8 ? 1 : 0, seed, 0, "test"};
+    RenderSettings settings = {{side, side, spp, PIXEL_RANDOM, seed}, side < 8 ? 1 : 0, 0, "test"};
     RenderResult result;
-    assert_int_equal(render(scene, &settings, path_radiance, path, &result), 0);
+    assert_int_equal(render(scene, &settings, estimate, path, &result), 0);
     return result;
 }
 
@@ -73,11 +77,12 @@ static Agreement agree(const char *what, const RenderResult *a, const RenderResu
 
 #if CHAPTER >= 4
 /* Render `a` and `b` with independent seeds and test their agreement. */
-static Agreement compare(const char *what, const Scene *scene, int side, const PathSettings *a,
-                         int spp_a, const PathSettings *b, int spp_b)
+static Agreement compare(const char *what, const Scene *scene, int side, Estimator estimate_a,
+                         const PathSettings *a, int spp_a, Estimator estimate_b,
+                         const PathSettings *b, int spp_b)
 {
-    RenderResult ra = render_path(scene, side, a, spp_a, 1);
-    RenderResult rb = render_path(scene, side, b, spp_b, 2);
+    RenderResult ra = render_path(scene, side, estimate_a, a, spp_a, 1);
+    RenderResult rb = render_path(scene, side, estimate_b, b, spp_b, 2);
     Agreement agreement = agree(what, &ra, &rb);
     render_result_free(&ra);
     render_result_free(&rb);
@@ -89,11 +94,10 @@ static Agreement compare(const char *what, const Scene *scene, int side, const P
  * same M = 0 image (hitting never looks at the light list). */
 static void test_shadow_rays_agree_with_hitting(void **state)
 {
-    (void)state;
     Scene scene = load("scenes/room.scene");
     PathSettings shadow = {.max_depth = DEPTH, .shadow_rays = 1}, hitting = {.max_depth = DEPTH};
-    RenderResult reference = render_path(&scene, ROOM_SIDE, &hitting, 8192, 2);
-    RenderResult image = render_path(&scene, ROOM_SIDE, &shadow, 1024, 1);
+    RenderResult reference = render_path(&scene, ROOM_SIDE, path_radiance, &hitting, 8192, 2);
+    RenderResult image = render_path(&scene, ROOM_SIDE, path_direct_radiance, &shadow, 1024, 1);
     Agreement agreement = agree("M=1 against M=0", &image, &reference);
     assert_true(agreement_holds(&agreement));
     render_result_free(&image);
@@ -101,7 +105,7 @@ static void test_shadow_rays_agree_with_hitting(void **state)
     assert_int_equal(scene.light_count, 2); /* the lamp quad */
     scene.light_count = 1;
     scene.light_area = scene.light_cumulative[0];
-    image = render_path(&scene, ROOM_SIDE, &shadow, 1024, 1);
+    image = render_path(&scene, ROOM_SIDE, path_direct_radiance, &shadow, 1024, 1);
     agreement = agree("half the lamp in the light list: M=1 against M=0", &image, &reference);
     assert_false(agreement_holds(&agreement));
     render_result_free(&image);
@@ -123,12 +127,12 @@ static void look_at_the_glass(Scene *scene)
 #if CHAPTER >= 4
 static void test_exact_fresnel(void **state)
 {
-    (void)state;
     Scene scene = load("scenes/room.scene");
     look_at_the_glass(&scene);
     PathSettings shadow = {.max_depth = DEPTH, .shadow_rays = 1, .fresnel = FRESNEL_EXACT}, hitting = {.max_depth = DEPTH, .fresnel = FRESNEL_EXACT};
     Agreement agreement =
-        compare("exact Fresnel, M=1 against M=0", &scene, ROOM_SIDE, &shadow, 1024, &hitting, 8192);
+        compare("exact Fresnel, M=1 against M=0", &scene, ROOM_SIDE, path_direct_radiance,
+                &shadow, 1024, path_radiance, &hitting, 8192);
     assert_true(agreement_holds(&agreement));
     scene_free(&scene);
 }
@@ -148,12 +152,12 @@ static void look_at_the_rough_sphere(Scene *scene)
 #if CHAPTER >= 5
 static void test_oren_nayar(void **state)
 {
-    (void)state;
     Scene scene = load("scenes/oren_nayar.scene");
     look_at_the_rough_sphere(&scene);
     PathSettings shadow = {.max_depth = DEPTH, .shadow_rays = 1}, hitting = {.max_depth = DEPTH};
     Agreement agreement =
-        compare("Oren-Nayar, M=1 against M=0", &scene, 6, &shadow, 4096, &hitting, 65536);
+        compare("Oren-Nayar, M=1 against M=0", &scene, 6, path_direct_radiance, &shadow, 4096,
+                path_radiance, &hitting, 65536);
     assert_true(agreement_holds(&agreement));
     scene_free(&scene);
 }
@@ -162,11 +166,11 @@ static void test_oren_nayar(void **state)
 #if CHAPTER >= 6
 static void test_roulette_agrees_with_none(void **state)
 {
-    (void)state;
     Scene scene = load("scenes/room.scene");
     PathSettings roulette = {.max_depth = 8, .shadow_rays = 1, .rr_survival = 0.75}, none = {.max_depth = 8, .shadow_rays = 1};
     Agreement agreement =
-        compare("roulette alpha=0.75 against none", &scene, ROOM_SIDE, &roulette, 1024, &none, 2048);
+        compare("roulette alpha=0.75 against none", &scene, ROOM_SIDE, path_roulette_radiance,
+                &roulette, 1024, path_direct_radiance, &none, 2048);
     assert_true(agreement_holds(&agreement));
     scene_free(&scene);
 }

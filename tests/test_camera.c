@@ -1,16 +1,8 @@
-/* test_camera.c (chapter 1): pixel-to-ray mapping and where in a pixel the samples go (camera.h,
- * SPEC §4, report §3.3.1 and §4.1, chapter 1).
+/* test_camera.c (chapter 1): the pixel-to-ray mapping (camera.h; report §3.3, §4.1).
  *
  * The mapping is a contract with the scene format: pixel (col, row), row 0 at the top,
  * covers BL + (col+u)/W (BR-BL) + (1-(row+v)/H) (TL-BL). We check its corners and
- * centre on the report's camera and on a tilted, off-origin one, and that sub-pixel
- * and random positions stay inside the pixel.
- *
- * Sub-pixels (chapter 2; camera.h): the layout tiles the pixel with n cells of equal
- * area for any n, the visit order is a permutation from any start, each sample lies
- * jittered in its cell, and the positions are uniform over the pixel for every sample
- * count and every prefix of the samples (chi-square), so an interrupted render is
- * unbiased.
+ * centre on the report's camera and on a tilted, off-origin one.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -22,11 +14,10 @@
 
 #include "check.h"
 #include "camera.h"
-#include "chi_square.h"
 
 typedef struct { Vec3 eye, bl, br, tl; } Corners;
 
-/* The camera of scenes/room.scene (SPEC §5): a 2 x 2 plane at x = 0 seen from
+/* The camera of scenes/room.scene: a 2 x 2 plane at x = 0 seen from
  * (-1,0,0), its left at +y. */
 static const Corners room = {{-1, 0, 0}, {0, 1, -1}, {0, -1, -1}, {0, 1, 1}};
 /* A 4 x 2 plane, tilted and far from the origin: BR - BL = 4 (0.36, 0.48, 0.8),
@@ -55,7 +46,6 @@ static void assert_through(Ray ray, const Corners *c, Vec3 point)
  * the middle pixel of an odd-sized image goes through the plane's centre. */
 static void test_corners_and_centre(void **state)
 {
-    (void)state;
     const Corners *cameras[2] = {&room, &tilted};
     const int widths[2] = {5, 9}, heights[2] = {5, 3};
     double almost_one = nextafter(1.0, 0.0);
@@ -72,11 +62,10 @@ static void test_corners_and_centre(void **state)
     }
 }
 
-/* Every pixel corner lands where SPEC §4 says, and row 0 is the top: on the room
+/* Every pixel corner lands where the scene format says, and row 0 is the top: on the room
  * camera the first row looks up (+z) and the first column left (+y). */
 static void test_mapping(void **state)
 {
-    (void)state;
     Camera camera = make(&tilted);
     const int w = 8, h = 4;
     Vec3 right = vec3_sub(tilted.br, tilted.bl), up = vec3_sub(tilted.tl, tilted.bl);
@@ -94,7 +83,6 @@ static void test_mapping(void **state)
 /* Unit directions over a whole image at random positions in each pixel. */
 static void test_unit_directions(void **state)
 {
-    (void)state;
     Camera camera = make(&tilted);
     Rng rng = rng_for_sample(1, 1, 1);
     for (int row = 0; row < 60; row++)
@@ -107,232 +95,9 @@ static void test_unit_directions(void **state)
 /* camera_aspect is |BR - BL| / |TL - BL|: 1 for the room, 2 for the tilted plane. */
 static void test_aspect(void **state)
 {
-    (void)state;
     Camera r = make(&room), t = make(&tilted);
     assert_close(camera_aspect(&r), 1, 1e-15);
     assert_close(camera_aspect(&t), 2, 1e-14);
-}
-
-/* The sub-pixel layout of camera.h for n cells: every cell has area 1/n, lies inside
- * the pixel, and no two overlap, so together they tile it; cells are nearly square
- * (sides within a factor 3 of each other: n = 3 is the worst). n = 16 is the 4 x 4 grid numbered row by
- * row; n = 5 a row of two above a row of three; n = 3 one cell above two. */
-static void test_strata_tile_the_pixel(void **state)
-{
-    (void)state;
-    for (int n = 1; n <= 64; n++) {
-        double u0[64], v0[64], w[64], h[64], area = 0.0;
-        for (int m = 0; m < n; m++) {
-            camera_stratum_bounds(m, n, &u0[m], &v0[m], &w[m], &h[m]);
-            assert_close(w[m] * h[m], 1.0 / n, 1e-15);
-            assert_true(u0[m] >= 0 && v0[m] >= 0);
-            assert_true(u0[m] + w[m] <= 1 + 1e-15 && v0[m] + h[m] <= 1 + 1e-15);
-            assert_true(w[m] <= 3 * h[m] * (1 + 1e-12) && h[m] <= 3 * w[m] * (1 + 1e-12));
-            for (int j = 0; j < m; j++) {
-                double overlap_u = fmin(u0[m] + w[m], u0[j] + w[j]) - fmax(u0[m], u0[j]);
-                double overlap_v = fmin(v0[m] + h[m], v0[j] + h[j]) - fmax(v0[m], v0[j]);
-                assert_false(overlap_u > 1e-12 && overlap_v > 1e-12);
-            }
-            area += w[m] * h[m];
-        }
-        assert_close(area, 1.0, 1e-13);
-    }
-    for (int m = 0; m < 16; m++) {
-        double u0, v0, w, h;
-        camera_stratum_bounds(m, 16, &u0, &v0, &w, &h);
-        assert_true(u0 == (m % 4) / 4.0 && v0 == (m / 4) / 4.0 && w == 0.25 && h == 0.25);
-    }
-    const double u5[] = {0, 0.5, 0, 1 / 3.0, 2 / 3.0}, v5[] = {0, 0, 0.4, 0.4, 0.4};
-    for (int m = 0; m < 5; m++) {
-        double u0, v0, w, h;
-        camera_stratum_bounds(m, 5, &u0, &v0, &w, &h);
-        assert_close(u0, u5[m], 1e-15);
-        assert_close(v0, v5[m], 1e-15);
-    }
-    double u0, v0, w, h;
-    camera_stratum_bounds(0, 3, &u0, &v0, &w, &h);
-    assert_true(u0 == 0 && v0 == 0 && w == 1);
-    assert_close(h, 1 / 3.0, 1e-15);
-}
-
-/* The visit order is a permutation of the cells, from any start: n samples take one
- * cell each. Checked for every n up to 64 and every start, and for n = 1000 and
- * 2^20 = 1048576 (issue 9's run) from three starts. */
-static void assert_permutation(int n, int start)
-{
-    static unsigned char seen[1 << 20];
-    memset(seen, 0, (size_t)n);
-    for (int i = 0; i < n; i++) {
-        int cell = camera_stratum(i, n, start);
-        assert_true(cell >= 0 && cell < n);
-        assert_false(seen[cell]);
-        seen[cell] = 1;
-    }
-}
-
-static void test_strata_order_is_a_permutation(void **state)
-{
-    (void)state;
-    for (int n = 1; n <= 64; n++)
-        for (int start = 0; start < n; start++)
-            assert_permutation(n, start);
-    const int large[] = {1000, 1 << 20}, starts[] = {0, 1, 777};
-    for (int k = 0; k < 2; k++)
-        for (int s = 0; s < 3; s++)
-            assert_permutation(large[k], starts[s]);
-}
-
-/* Each sub-pixel sample lies in its own cell (camera_stratum) and strictly inside the
- * pixel; the jitter moves it: over 1000 generators no two positions of one sample
- * coincide, and none is the cell's centre (the planted bug of the uniformity test). At
- * one sample per pixel, sub-pixels and random positions are the same positions, so
- * Figure 8's 1-spp panel and a random 1-spp panel are the same image. */
-static void test_subpixel_sample_in_its_cell(void **state)
-{
-    (void)state;
-    const int ns[] = {1, 2, 3, 5, 16, 30};
-    for (int k = 0; k < 6; k++) {
-        int n = ns[k];
-        for (int i = 0; i < n; i++) {
-            double first_u = -1;
-            int all_same = 1;
-            for (int g = 0; g < 1000; g++) {
-                Rng rng = rng_for_sample(3, (uint64_t)g, (uint64_t)i);
-                int start = g % n;
-                double u, v, u0, v0, w, h;
-                camera_pixel_position(PIXEL_SUBPIXELS, i, n, start, &rng, &u, &v);
-                camera_stratum_bounds(camera_stratum(i, n, start), n, &u0, &v0, &w, &h);
-                assert_true(u >= u0 && u < u0 + w + 1e-15 && v >= v0 && v < v0 + h + 1e-15);
-                assert_true(u >= 0 && u < 1 && v >= 0 && v < 1);
-                assert_false(u == u0 + w / 2 && v == v0 + h / 2);
-                if (g == 0)
-                    first_u = u;
-                all_same &= g % n != 0 || u == first_u;
-            }
-            assert_false(all_same);
-        }
-    }
-    /* One sample: one cell, the whole pixel, so sub-pixels are random positions, drawn
-     * the same way: the same (u, v) from the same generator. */
-    for (int g = 0; g < 100; g++) {
-        Rng a = rng_for_sample(8, (uint64_t)g, 0), b = a;
-        double ua, va, ub, vb;
-        camera_pixel_position(PIXEL_SUBPIXELS, 0, 1, 0, &a, &ua, &va);
-        camera_pixel_position(PIXEL_RANDOM, 0, 1, 0, &b, &ub, &vb);
-        assert_true(ua == ub && va == vb);
-    }
-    /* Jitter up to the last representable value stays below 1 in the last cell. */
-    double u, v;
-    Rng rng = rng_for_sample(0, 0, 0);
-    for (int n = 1; n <= 40; n++)
-        for (int i = 0; i < n; i++) {
-            camera_pixel_position(PIXEL_SUBPIXELS, i, n, 0, &rng, &u, &v);
-            assert_true(u < 1 && v < 1);
-        }
-}
-
-/* camera_first_stratum is uniform over [0, n): chi-square over the n values, 1%
- * level, 70,000 draws each for n = 7 and 30 (from the pixels' own generators, as the
- * renderer draws it). One cell needs no start and draws nothing. */
-static void test_first_stratum_uniform(void **state)
-{
-    (void)state;
-    const int ns[] = {7, 30};
-    for (int k = 0; k < 2; k++) {
-        double observed[30] = {0}, expected[30];
-        const int draws = 70000;
-        for (int p = 0; p < draws; p++) {
-            Rng pixel_rng = rng_for_sample(11, (uint64_t)p, UINT64_MAX);
-            int s = camera_first_stratum(&pixel_rng, ns[k]);
-            assert_true(s >= 0 && s < ns[k]);
-            observed[s] += 1;
-        }
-        for (int j = 0; j < ns[k]; j++)
-            expected[j] = (double)draws / ns[k];
-        int dof;
-        double x2 = chi_square_statistic(observed, expected, ns[k], &dof);
-        print_message("    n = %d: X^2 = %.1f, %d dof, p = %.3f\n", ns[k], x2, dof,
-                      chi_square_p_value(x2, dof));
-        assert_true(chi_square_p_value(x2, dof) > 0.01);
-    }
-    Rng rng = rng_for_sample(1, 2, 3), before = rng;
-    assert_int_equal(camera_first_stratum(&rng, 1), 0);
-    assert_true(rng.state == before.state);
-}
-
-/* Sub-pixel positions are uniform over the pixel, for every sample count and after
- * every number of samples: an unbiased estimate of the pixel's integral however many
- * of its samples a render took before it stopped (issue 9, case 1).
- * For n = 1, 2, 3, 4, 5, 7, 16, 30 and each prefix k = 1 ... n, the first k samples of
- * each of PIXELS pixels (each pixel with its own start and jitter, as render.c draws
- * them) are counted in a 6 x 6 grid over the pixel and compared with the uniform
- * density by Pearson's chi-square. 68 tests, each at level 0.01 / 68 (Bonferroni: 1%
- * for the family); fixed seeds.
- * Planted bugs, each rejected with p = 0 at the first prefix (see the report): samples at
- * the cells' centres without jitter, and cells visited from cell 0 for every pixel
- * (no random start), so that a stopped render samples only part of the pixel. */
-#define PIXELS 2000
-#define GRID 6
-
-static double prefix_p_value(int n, int k)
-{
-    double observed[GRID * GRID] = {0}, expected[GRID * GRID];
-    for (int p = 0; p < PIXELS; p++) {
-        Rng pixel_rng = rng_for_sample(2024, (uint64_t)p, UINT64_MAX);
-        int start = camera_first_stratum(&pixel_rng, n);
-        for (int i = 0; i < k; i++) {
-            Rng rng = rng_for_sample(2024, (uint64_t)p, (uint64_t)i);
-            double u, v;
-            camera_pixel_position(PIXEL_SUBPIXELS, i, n, start, &rng, &u, &v);
-            observed[(int)(v * GRID) * GRID + (int)(u * GRID)] += 1;
-        }
-    }
-    for (int b = 0; b < GRID * GRID; b++)
-        expected[b] = (double)PIXELS * k / (GRID * GRID);
-    int dof;
-    double x2 = chi_square_statistic(observed, expected, GRID * GRID, &dof);
-    return chi_square_p_value(x2, dof);
-}
-
-static void test_subpixels_uniform_for_every_prefix(void **state)
-{
-    (void)state;
-    const int ns[] = {1, 2, 3, 4, 5, 7, 16, 30};
-    const int tests = 1 + 2 + 3 + 4 + 5 + 7 + 16 + 30;
-    double smallest = 1.0;
-    for (int j = 0; j < 8; j++)
-        for (int k = 1; k <= ns[j]; k++) {
-            double p = prefix_p_value(ns[j], k);
-            if (p < 0.01 / tests)
-                fail_msg("n = %d, first %d samples: p = %.3g", ns[j], k, p);
-            smallest = fmin(smallest, p);
-        }
-    print_message("    %d prefixes, smallest p = %.4f\n", tests, smallest);
-}
-
-/* PIXEL_CENTRE is always (1/2, 1/2); PIXEL_RANDOM stays in [0,1)^2, varies, and
- * averages to the centre (10^5 draws, within 5 standard errors sqrt(1/12/N)). */
-static void test_centre_and_random(void **state)
-{
-    (void)state;
-    double u, v, sum_u = 0, sum_v = 0;
-    camera_pixel_position(PIXEL_CENTRE, 3, 16, 0, NULL, &u, &v);
-    assert_true(u == 0.5 && v == 0.5);
-    Rng rng = rng_for_sample(2, 3, 4);
-    const int n = 100000;
-    double first_u;
-    camera_pixel_position(PIXEL_RANDOM, 0, n, 0, &rng, &first_u, &v);
-    int all_same = 1;
-    for (int i = 0; i < n; i++) {
-        camera_pixel_position(PIXEL_RANDOM, i, n, 0, &rng, &u, &v);
-        assert_true(u >= 0 && u < 1 && v >= 0 && v < 1);
-        all_same &= u == first_u;
-        sum_u += u;
-        sum_v += v;
-    }
-    assert_false(all_same);
-    assert_true(fabs(sum_u / n - 0.5) < 5 * sqrt(1.0 / 12 / n));
-    assert_true(fabs(sum_v / n - 0.5) < 5 * sqrt(1.0 / 12 / n));
 }
 
 int main(void)
@@ -342,12 +107,6 @@ int main(void)
         cmocka_unit_test(test_mapping),
         cmocka_unit_test(test_unit_directions),
         cmocka_unit_test(test_aspect),
-        cmocka_unit_test(test_strata_tile_the_pixel),
-        cmocka_unit_test(test_strata_order_is_a_permutation),
-        cmocka_unit_test(test_subpixel_sample_in_its_cell),
-        cmocka_unit_test(test_first_stratum_uniform),
-        cmocka_unit_test(test_subpixels_uniform_for_every_prefix),
-        cmocka_unit_test(test_centre_and_random),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

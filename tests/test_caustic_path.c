@@ -1,5 +1,5 @@
 /* test_caustic_path.c (chapter 8): Tests of the path tracer with caustics from photon maps (lib/path.c's chapter 8
- * option, and progressive photon mapping, lib/ppm.c): the two estimators together
+ * option, and progressive photon mapping, bench/ppm.c): the two estimators together
  * count every light path exactly once, so they estimate chapter 7's image.
  *
  * 1. A room without mirrors or glass (the report's room with both made white Lambert):
@@ -42,8 +42,10 @@
 
 #include <string.h>
 
+#include "renderer.h"
 #include "chi_square.h"
 #include "measure.h"
+#include "path_roulette.h"
 #include "ppm.h"
 #include "scene_file.h"
 
@@ -104,19 +106,18 @@ static double block_p_value(const RenderResult *a, const RenderResult *b)
 
 static void test_room_without_specular_is_chapter7(void **state)
 {
-    (void)state;
     Scene scene;
     load_room(&scene, 0);
     RayCounts counts = {0, 0, 0};
-    PhotonMapSettings photons = {20000, PHOTON_CAUSTIC, FRESNEL_EXACT, 3, 0};
+    PhotonMapSettings photons = {20000, PHOTON_CAUSTIC, FRESNEL_EXACT, 3};
     PhotonMap map;
-    assert_int_equal(photon_map_build(&map, &scene, &photons, &counts), 0);
+    assert_int_equal(ppm_photon_map(&map, &scene, &photons, 0, &counts), 0);
     assert_int_equal(map.count, 0);
     CausticPathSettings with_map = {CHAPTER7, &map, 0.2};
-    RenderSettings settings = {SIDE, SIDE, 64, PIXEL_RANDOM, 0, 5, 0, "test"};
+    RenderSettings settings = {{SIDE, SIDE, 64, PIXEL_RANDOM, 5}, 0, 0, "test"};
     RenderResult a, b;
-    assert_int_equal(render(&scene, &settings, path_radiance, &CHAPTER7, &a), 0);
-    assert_int_equal(render(&scene, &settings, path_radiance_caustics, &with_map, &b), 0);
+    assert_int_equal(render(&scene, &settings, path_roulette_radiance, &CHAPTER7, &a), 0);
+    assert_int_equal(render(&scene, &settings, path_caustics_radiance, &with_map, &b), 0);
     assert_int_equal(memcmp(a.image.pixels, b.image.pixels, sizeof(float) * 3 * SIDE * SIDE), 0);
     photon_map_free(&map);
     render_result_free(&b);
@@ -157,16 +158,15 @@ static void masked_mean(const RenderResult *r, const Image *mask, double *mean, 
 
 static void test_room_converges_and_counts_once(void **state)
 {
-    (void)state;
     Scene scene;
     load_room(&scene, 1);
     PathSettings one_shadow_ray = CHAPTER7;
     one_shadow_ray.shadow_rays = 1; /* the same expectation, cheaper per sample */
-    RenderSettings many = {SIDE, SIDE, 4000, PIXEL_RANDOM, 0, 11, 0, "test"};
+    RenderSettings many = {{SIDE, SIDE, 4000, PIXEL_RANDOM, 11}, 0, 0, "test"};
     RenderResult reference;
-    assert_int_equal(render(&scene, &many, path_radiance, &one_shadow_ray, &reference), 0);
+    assert_int_equal(render(&scene, &many, path_roulette_radiance, &one_shadow_ray, &reference), 0);
 
-    RenderSettings passes = {SIDE, SIDE, 1, PIXEL_RANDOM, 0, 12, 0, "test"};
+    RenderSettings passes = {{SIDE, SIDE, 1, PIXEL_RANDOM, 12}, 0, 0, "test"};
     PpmSettings ppm = {CHAPTER7, 20000, 0.1, PPM_ALPHA, 16, 64, 0.0};
     PpmResult combined;
     assert_int_equal(ppm_render(&scene, &passes, &ppm, &combined), 0);
@@ -178,12 +178,12 @@ static void test_room_converges_and_counts_once(void **state)
     /* The path tracer's own share: caustic option on, the map empty. */
     PhotonMap empty;
     RayCounts counts = {0, 0, 0};
-    PhotonMapSettings none = {0, PHOTON_CAUSTIC, FRESNEL_EXACT, 1, 0};
-    assert_int_equal(photon_map_build(&empty, &scene, &none, &counts), 0);
+    PhotonMapSettings none = {0, PHOTON_CAUSTIC, FRESNEL_EXACT, 1};
+    assert_int_equal(ppm_photon_map(&empty, &scene, &none, 0, &counts), 0);
     CausticPathSettings without = {CHAPTER7, &empty, 0.15};
-    RenderSettings path_only = {SIDE, SIDE, 1024, PIXEL_RANDOM, 0, 13, 0, "test"};
+    RenderSettings path_only = {{SIDE, SIDE, 1024, PIXEL_RANDOM, 13}, 0, 0, "test"};
     RenderResult path_part;
-    assert_int_equal(render(&scene, &path_only, path_radiance_caustics, &without, &path_part), 0);
+    assert_int_equal(render(&scene, &path_only, path_caustics_radiance, &without, &path_part), 0);
 
     /* Leave out the lamp and its images in the mirrors (the path tracer's own image
      * says where): the same in every estimator, and the noisiest pixels. */

@@ -1,6 +1,6 @@
-/* test_diffuse.c (chapter 2): the diffuse BRDFs and their sampling in world space (diffuse.h,
- * chapter 2: Lambert, eq. 8, cosine sampling, eqs. 9-12; chapter 5: Oren-Nayar,
- * eqs. 13-14 with erratum SPEC §8.1).
+/* test_diffuse.c (chapter 2): the diffuse BRDFs and their sampling in world space
+ * (diffuse.h: Lambert, eq. 8, cosine sampling, eqs. 9-12; from chapter 5 Oren-Nayar,
+ * eqs. 13-14 corrected).
  *
  * diffuse.c only moves directions into the local frame around the normal n and back,
  * so what can go wrong is the frame: a BRDF evaluated in a wrong or tilted frame, or
@@ -37,9 +37,9 @@
 
 static const Vec3 RHO = {0.75, 0.4, 0.15};
 
-static Material diffuse_material(MaterialKind kind, double sigma)
+static Material lambert_material(void)
 {
-    Material m = {"test", kind, RHO, {0, 0, 0}, sigma, 1.0};
+    Material m = {.name = "lambert", .kind = MATERIAL_LAMBERT, .reflectance = RHO};
     return m;
 }
 
@@ -65,6 +65,12 @@ static Vec3 random_above(Rng *rng, Vec3 n)
 }
 
 #if CHAPTER >= 5
+static Material rough_material(double sigma)
+{
+    Material m = {.name = "rough", .kind = MATERIAL_OREN_NAYAR, .reflectance = RHO, .sigma = sigma};
+    return m;
+}
+
 /* v turned by angle phi about the unit axis n (Rodrigues' formula). */
 static Vec3 rotate_about(Vec3 v, Vec3 n, double phi)
 {
@@ -84,8 +90,7 @@ static void assert_colour_close(Vec3 a, Vec3 b, double relative)
  * directions, on either side: it does not depend on direction at all. */
 static void test_lambert_is_rho_over_pi_everywhere(void **state)
 {
-    (void)state;
-    Material m = diffuse_material(MATERIAL_LAMBERT, 0.0);
+    Material m = lambert_material();
     Rng rng = rng_for_sample(1, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng), wi = random_unit_vector(&rng);
@@ -101,11 +106,10 @@ static void test_lambert_is_rho_over_pi_everywhere(void **state)
  * angles and fails this. */
 static void test_oren_nayar_matches_own_local_frame(void **state)
 {
-    (void)state;
     const double sigmas[] = {0.0, 0.2, 0.5, 1.0, 10.0};
     Rng rng = rng_for_sample(2, 0, 0);
     for (int k = 0; k < 5; k++) {
-        Material m = diffuse_material(MATERIAL_OREN_NAYAR, sigmas[k]);
+        Material m = rough_material(sigmas[k]);
         for (int i = 0; i < PAIRS / 5; i++) {
             Vec3 n = random_unit_vector(&rng), t, b;
             Vec3 wi = random_above(&rng, n), wo = random_above(&rng, n);
@@ -125,8 +129,7 @@ static void test_oren_nayar_matches_own_local_frame(void **state)
  * (test_oren_nayar.c works the same numbers in the local frame). */
 static void test_oren_nayar_value_by_hand_around_tilted_normal(void **state)
 {
-    (void)state;
-    Material m = diffuse_material(MATERIAL_OREN_NAYAR, 0.5);
+    Material m = rough_material(0.5);
     Vec3 n = vec3_normalize(vec3(0.3, -0.8, 0.5)), t, b;
     own_frame(n, &t, &b);
     Vec3 wi = vec3_from_local(vec3(sqrt(3.0) / 2.0, 0.0, 0.5), t, b, n);
@@ -143,8 +146,7 @@ static void test_oren_nayar_value_by_hand_around_tilted_normal(void **state)
  * BRDF unchanged (only theta_i, theta_o and phi_i - phi_o enter eq. 13). */
 static void test_oren_nayar_invariant_under_rotation_about_normal(void **state)
 {
-    (void)state;
-    Material m = diffuse_material(MATERIAL_OREN_NAYAR, 0.7);
+    Material m = rough_material(0.7);
     Rng rng = rng_for_sample(3, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng);
@@ -156,46 +158,63 @@ static void test_oren_nayar_invariant_under_rotation_about_normal(void **state)
 }
 #endif
 
+/* The sample numbers of the next two tests: the extreme corners of [0, 1)^2 first. */
+static void sample_numbers(int i, Rng *rng, Vec3 *n, Vec3 *wo, double *u1, double *u2)
+{
+    const double top = 1.0 - 0x1p-32;
+    *n = i == 0 ? vec3(0, 0, -1) : random_unit_vector(rng);
+    *wo = random_above(rng, *n);
+    *u1 = i < 4 ? (i & 1) * top : rng_uniform(rng);
+    *u2 = i < 4 ? (i >> 1) * top : rng_uniform(rng);
+}
+
 /* A sample is a unit direction on n's side (never on or below the surface, even for the
- * extreme random numbers), the same direction for both materials (the sampling does not
- * depend on the BRDF), and its weight is f(wi, wo) cos / pdf with pdf = cos / pi: rho
- * exactly for Lambert, rho * oren_nayar_factor for Oren-Nayar. */
+ * extreme random numbers), and its weight is f(wi, wo) cos / pdf with pdf = cos / pi:
+ * rho exactly for Lambert. diffuse_pdf is that pdf. */
 static void test_sample_direction_and_weight(void **state)
 {
-    (void)state;
-    const double top = 1.0 - 0x1p-32;
-    Material lambert = diffuse_material(MATERIAL_LAMBERT, 0.0);
-#if CHAPTER >= 5
-    Material rough = diffuse_material(MATERIAL_OREN_NAYAR, 0.6);
-#endif
+    Material lambert = lambert_material();
     Rng rng = rng_for_sample(4, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
-        Vec3 n = i == 0 ? vec3(0, 0, -1) : random_unit_vector(&rng);
-        Vec3 wo = random_above(&rng, n);
-        double u1 = i < 4 ? (i & 1) * top : rng_uniform(&rng);
-        double u2 = i < 4 ? (i >> 1) * top : rng_uniform(&rng);
-        Vec3 wi;
+        Vec3 n, wo, wi;
+        double u1, u2;
+        sample_numbers(i, &rng, &n, &wo, &u1, &u2);
         Vec3 weight = diffuse_sample(&lambert, n, wo, u1, u2, &wi);
         assert_close(vec3_length(wi), 1.0, 1e-15);
         double cos_theta = vec3_dot(wi, n);
         assert_true(cos_theta > 0.0);
         double pdf = cos_theta / PI;
+        assert_close(diffuse_pdf(n, wi), pdf, 1e-15);
         Vec3 f = diffuse_brdf(&lambert, n, wi, wo);
         assert_true(weight.x == RHO.x && weight.y == RHO.y && weight.z == RHO.z);
         assert_colour_close(weight, vec3_scale(f, cos_theta / pdf), RELATIVE);
+    }
+}
+
 #if CHAPTER >= 5
-        Vec3 wi_rough, t, b;
+/* An Oren-Nayar sample takes the Lambertian sample's direction (the sampling does not
+ * depend on the BRDF), and its weight is f(wi, wo) cos / pdf = rho * oren_nayar_factor. */
+static void test_oren_nayar_sample_weight(void **state)
+{
+    Material lambert = lambert_material(), rough = rough_material(0.6);
+    Rng rng = rng_for_sample(4, 0, 0);
+    for (int i = 0; i < PAIRS; i++) {
+        Vec3 n, wo, wi, wi_rough, t, b;
+        double u1, u2;
+        sample_numbers(i, &rng, &n, &wo, &u1, &u2);
+        diffuse_sample(&lambert, n, wo, u1, u2, &wi);
         Vec3 weight_rough = diffuse_sample(&rough, n, wo, u1, u2, &wi_rough);
         assert_true(wi.x == wi_rough.x && wi.y == wi_rough.y && wi.z == wi_rough.z);
+        double cos_theta = vec3_dot(wi, n), pdf = cos_theta / PI;
         Vec3 f_rough = diffuse_brdf(&rough, n, wi, wo);
         assert_colour_close(weight_rough, vec3_scale(f_rough, cos_theta / pdf), RELATIVE);
         own_frame(n, &t, &b);
         Vec3 wi_local = to_own_frame(wi, t, b, n), wo_local = to_own_frame(wo, t, b, n);
         double factor = oren_nayar_factor(0.6, wi_local, wo_local);
         assert_colour_close(weight_rough, vec3_scale(RHO, factor), RELATIVE);
-#endif
     }
 }
+#endif
 
 /* Counts SAMPLES directions from diffuse_sample around the normal n, binned about the
  * axis `axis` (n itself, or a wrong one) in the test's own frame, and returns the
@@ -213,7 +232,7 @@ static double cosine_fit_p_value(Vec3 n, Vec3 axis, double *statistic, int *dof)
         observed[j] = 0.0;
         expected[j] = (double)SAMPLES / (COS_BINS * PHI_BINS);
     }
-    Material m = diffuse_material(MATERIAL_LAMBERT, 0.0);
+    Material m = lambert_material();
     Vec3 t, b, wi, wo = n;
     own_frame(axis, &t, &b);
     Rng rng = rng_for_sample(5, 0, 0);
@@ -239,7 +258,6 @@ static double cosine_fit_p_value(Vec3 n, Vec3 axis, double *statistic, int *dof)
  * X^2 = 190.1 (p = 0.66). */
 static void test_chi_square_cosine_about_tilted_normal(void **state)
 {
-    (void)state;
     const Vec3 normals[] = {vec3_normalize(vec3(0.3, -0.8, 0.5)), vec3(0, 0, -1)};
     for (int k = 0; k < 2; k++) {
         double statistic;
@@ -256,7 +274,6 @@ static void test_chi_square_cosine_about_tilted_normal(void **state)
  * 199 degrees of freedom, p = 2e-114 (half a degree still gives X^2 = 399, p = 2e-15). */
 static void test_chi_square_rejects_axis_one_degree_off(void **state)
 {
-    (void)state;
     Vec3 n = vec3_normalize(vec3(0.3, -0.8, 0.5)), t, b;
     own_frame(n, &t, &b);
     double tilt = 1.0 * PI / 180.0;
@@ -278,6 +295,9 @@ int main(void)
         cmocka_unit_test(test_oren_nayar_invariant_under_rotation_about_normal),
 #endif
         cmocka_unit_test(test_sample_direction_and_weight),
+#if CHAPTER >= 5
+        cmocka_unit_test(test_oren_nayar_sample_weight),
+#endif
         cmocka_unit_test(test_chi_square_cosine_about_tilted_normal),
         cmocka_unit_test(test_chi_square_rejects_axis_one_degree_off),
     };

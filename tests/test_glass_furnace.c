@@ -1,5 +1,5 @@
-/* test_glass_furnace.c (chapter 4): Glass furnace test of the path tracer (lib/path.c with glass; chapter 4's must-show,
- * SPEC §7).
+/* test_glass_furnace.c (chapter 4): the glass furnace: a glass sphere in a closed box
+ * of uniform radiance is invisible (lib/glass.c through the path tracers).
  *
  * In a closed box where every surface sends out L = Le + rho L, whatever arrives, the
  * radiance is L at every point and in every direction (the white furnace of
@@ -27,11 +27,10 @@
  * ray had 7 runs fail the criteria below, one giving 2.37 +- 0.35; with the border, the
  * z-scores had mean 0.06 and spread 1.01, all within 2.2).
  *
- * Roulette alpha = 0.75 with depth 200, practically unlimited (furnace.h: finite second
- * moment). Each estimate averages
- * SAMPLES independent rays and requires |mean - 2| < 4 standard errors (a false failure
- * about once in 16,000 runs; the seed is fixed, so a run is reproducible) and a standard
- * error below 1% of 2, so that a bias of a few percent would be seen.
+ * Each estimate averages many independent rays and requires |mean - 2| < 4 standard
+ * errors (a false failure about once in 16,000 runs; the seed is fixed, so a run is
+ * reproducible) and a standard error below 1% of 2, so that a bias of a few percent
+ * would be seen.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -40,18 +39,11 @@
 #include <cmocka.h>
 
 #include "furnace.h"
-#include "path.h"
-
+#include "path_direct.h"
 #if CHAPTER >= 6
-#define SAMPLES 100000
-#define TRUNCATION 0.0
-#else
-#define SAMPLES 20000 /* every path runs to the depth limit without roulette */
-/* What the depth limit of 60 leaves out: a ray trapped inside the sphere spends many
- * segments there (total internal reflection), so about 2e-7, which the nearly exact
- * light-by-hitting estimate (standard error 2e-8) would otherwise see. */
-#define TRUNCATION 1e-6
+#include "path_roulette.h"
 #endif
+
 #define TOLERANCE_SIGMAS 4.0
 #define EXPECTED FURNACE_BORDERED_RADIANCE
 
@@ -65,7 +57,7 @@ static const Vec3 INSIDE_POINT = {-0.1, 0.15, -0.1}; /* in the sphere, off its c
 static void glass_furnace_box(Scene *scene)
 {
     furnace_box_bordered(scene);
-    Material glass = {"glass", MATERIAL_GLASS, vec3(0, 0, 0), vec3(0, 0, 0), 0.0, 1.5};
+    Material glass = {.name = "glass", .kind = MATERIAL_GLASS, .ior = 1.5};
     Sphere sphere = {SPHERE_CENTRE, SPHERE_RADIUS, scene_add_material(scene, glass)};
     assert_true(scene_add_sphere(scene, sphere) >= 0);
     assert_int_equal(scene_prepare(scene), 0);
@@ -95,75 +87,98 @@ static Ray ray_of_kind(RayKind kind, Rng *rng)
     return (Ray){OUTSIDE_POINT, vec3_normalize(vec3_sub(target, OUTSIDE_POINT))};
 }
 
-/* The mean radiance (average of the channels) along SAMPLES rays of one kind, with its
- * standard error, checked against Le / (1 - rho). */
-static void assert_furnace_radiance(const Scene *scene, const PathSettings *settings,
-                                    RayKind kind, uint64_t seed)
+/* How an estimator is checked: how many rays of each kind, and how far below
+ * Le / (1 - rho) its depth limit may leave the mean. */
+typedef struct {
+    Estimator estimate;
+    int samples;
+    double truncation;
+} Check;
+
+/* Without roulette, every path runs to the depth limit of 60 (40 left a bias of 5e-5,
+ * five standard errors of the light-by-hitting estimate, whose variance is tiny in the
+ * furnace). A ray trapped inside the sphere by total internal reflection can still
+ * reach it: about 2e-7 is left out. */
+static const Check DEPTH_60 = {path_direct_radiance, 20000, 1e-6};
+
+/* The mean radiance (average of the channels) along the check's rays of one kind, with
+ * its standard error, checked against Le / (1 - rho). */
+static void assert_furnace_radiance(const Scene *scene, const Check *check,
+                                    const PathSettings *settings, RayKind kind, uint64_t seed)
 {
     double sum = 0.0, sum_squares = 0.0;
     RayCounts counts = {0, 0, 0};
-    for (int i = 0; i < SAMPLES; i++) {
+    for (int i = 0; i < check->samples; i++) {
         Rng rng = rng_for_sample(seed, (uint64_t)kind, (uint64_t)i);
-        double value = vec3_average(path_radiance(scene, ray_of_kind(kind, &rng), &rng,
-                                                  settings, &counts));
+        double value = vec3_average(check->estimate(scene, ray_of_kind(kind, &rng), &rng,
+                                                    settings, &counts));
         sum += value;
         sum_squares += value * value;
     }
-    double mean = sum / SAMPLES;
-    double std_error = sqrt((sum_squares / SAMPLES - mean * mean) / (SAMPLES - 1));
+    double mean = sum / check->samples;
+    double std_error = sqrt((sum_squares / check->samples - mean * mean) / (check->samples - 1));
     print_message("    %-30s M=%d %-7s: %.9f +- %.9f (expected %.1f)\n", KIND_NAMES[kind],
                   settings->shadow_rays, settings->fresnel == FRESNEL_EXACT ? "exact" : "schlick",
                   mean, std_error, EXPECTED);
-    assert_true(fabs(mean - EXPECTED) < TOLERANCE_SIGMAS * std_error + TRUNCATION);
+    assert_true(fabs(mean - EXPECTED) < TOLERANCE_SIGMAS * std_error + check->truncation);
     assert_true(std_error < 0.01 * EXPECTED);
 }
 
-/* Every kind of ray sees Le / (1 - rho) with this estimator. */
-static void glass_furnace(int shadow_rays, FresnelMode fresnel)
+/* Every kind of ray sees Le / (1 - rho) with these settings. */
+static void glass_furnace(const Check *check, const PathSettings *settings)
 {
     Scene scene;
     glass_furnace_box(&scene);
-#if CHAPTER >= 6
-    PathSettings settings = {.max_depth = 200, .shadow_rays = shadow_rays, .fresnel = fresnel,
-                             .rr_survival = 0.75};
-#else
-    /* Without roulette, a depth of 60: 40 left a bias of 5e-5, five standard errors of
-     * the light-by-hitting estimate (its variance is tiny in the furnace). */
-    PathSettings settings = {.max_depth = 60, .shadow_rays = shadow_rays, .fresnel = fresnel};
-#endif
     for (RayKind kind = FROM_OUTSIDE; kind <= FROM_INSIDE; kind++)
-        assert_furnace_radiance(&scene, &settings, kind, 17);
+        assert_furnace_radiance(&scene, check, settings, kind, 17);
     scene_free(&scene);
 }
 
-/* Chapter 2's estimator (M = 0: light found only by hitting it), Schlick's R. */
+/* Chapter 2's way of finding light (M = 0: only by hitting it), Schlick's R. */
 static void test_glass_invisible_hitting_schlick(void **state)
 {
-    (void)state;
-    glass_furnace(0, FRESNEL_SCHLICK);
+    PathSettings settings = {.max_depth = 60, .fresnel = FRESNEL_SCHLICK};
+    glass_furnace(&DEPTH_60, &settings);
 }
 
-/* The same with the exact Fresnel R (chapter 4). */
+/* The same with the exact Fresnel R. */
 static void test_glass_invisible_hitting_exact(void **state)
 {
-    (void)state;
-    glass_furnace(0, FRESNEL_EXACT);
+    PathSettings settings = {.max_depth = 60, .fresnel = FRESNEL_EXACT};
+    glass_furnace(&DEPTH_60, &settings);
 }
 
 /* One shadow ray per diffuse hit (chapter 3), some of them blocked by the sphere: the
  * light behind it arrives through the paths that cross the glass instead. Schlick. */
 static void test_glass_invisible_shadow_rays_schlick(void **state)
 {
-    (void)state;
-    glass_furnace(1, FRESNEL_SCHLICK);
+    PathSettings settings = {.max_depth = 60, .shadow_rays = 1, .fresnel = FRESNEL_SCHLICK};
+    glass_furnace(&DEPTH_60, &settings);
 }
 
 /* The same with the exact Fresnel R. */
 static void test_glass_invisible_shadow_rays_exact(void **state)
 {
-    (void)state;
-    glass_furnace(1, FRESNEL_EXACT);
+    PathSettings settings = {.max_depth = 60, .shadow_rays = 1, .fresnel = FRESNEL_EXACT};
+    glass_furnace(&DEPTH_60, &settings);
 }
+
+#if CHAPTER >= 6
+/* Chapter 6's estimator, roulette alpha = 0.75 with depth 200, practically unlimited
+ * (furnace.h: finite second moment): nothing is left out. Both ways of finding light,
+ * both reflectances. */
+static void test_glass_invisible_with_roulette(void **state)
+{
+    const Check roulette = {path_roulette_radiance, 100000, 0.0};
+    const FresnelMode modes[2] = {FRESNEL_SCHLICK, FRESNEL_EXACT};
+    for (int m = 0; m <= 1; m++)
+        for (int k = 0; k < 2; k++) {
+            PathSettings settings = {.max_depth = 200, .shadow_rays = m, .fresnel = modes[k],
+                                     .rr_survival = 0.75};
+            glass_furnace(&roulette, &settings);
+        }
+}
+#endif
 
 int main(void)
 {
@@ -172,6 +187,9 @@ int main(void)
         cmocka_unit_test(test_glass_invisible_hitting_exact),
         cmocka_unit_test(test_glass_invisible_shadow_rays_schlick),
         cmocka_unit_test(test_glass_invisible_shadow_rays_exact),
+#if CHAPTER >= 6
+        cmocka_unit_test(test_glass_invisible_with_roulette),
+#endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

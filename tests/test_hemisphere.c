@@ -29,7 +29,6 @@ typedef Vec3 (*Sampler)(double u1, double u2);
  * random numbers 0 and 1 - 2^-32 (u1 = 0 is the normal itself). */
 static void test_samples_unit_and_above_surface(void **state)
 {
-    (void)state;
     const double top = 1.0 - 0x1p-32;
     const double extremes[][2] = {{0.0, 0.0}, {0.0, top}, {top, 0.0}, {top, top}};
     for (int k = 0; k < 4; k++) {
@@ -50,7 +49,6 @@ static void test_samples_unit_and_above_surface(void **state)
  * theta = 30 degrees; phi = 2 pi u2, so u2 = 1/4 points along +y. */
 static void test_inverse_cdf_by_hand(void **state)
 {
-    (void)state;
     Vec3 w = hemisphere_sample_cosine(0.25, 0.25);
     assert_float_equal(w.x, 0.0, 1e-15);
     assert_float_equal(w.y, 0.5, 1e-15);
@@ -62,7 +60,6 @@ static void test_inverse_cdf_by_hand(void **state)
  * (theta, phi) with dw = sin(theta) dtheta dphi, error O(h^2) ~ 1e-7. */
 static void test_pdf_integrates_to_one(void **state)
 {
-    (void)state;
     const int n_theta = 2000, n_phi = 16;
     const double d_theta = PI / n_theta, d_phi = 2.0 * PI / n_phi;
     double integral = 0.0;
@@ -141,7 +138,6 @@ static double cosine_fit_p_value(Sampler sampler, double *statistic, int *dof)
  * Observed with seed 2019: X^2 = 183.1 with 199 degrees of freedom, p = 0.78. */
 static void test_chi_square_accepts_cosine_sampler(void **state)
 {
-    (void)state;
     double statistic;
     int dof;
     double p = cosine_fit_p_value(hemisphere_sample_cosine, &statistic, &dof);
@@ -155,7 +151,6 @@ static void test_chi_square_accepts_cosine_sampler(void **state)
  * (p = 0 in double precision); exponent 0.49 X^2 = 494.4 (p = 4e-27). */
 static void test_chi_square_rejects_wrong_samplers(void **state)
 {
-    (void)state;
     const Sampler wrong[] = {sample_uniform_by_mistake, sample_slightly_wrong_exponent};
     for (int k = 0; k < 2; k++) {
         double statistic;

@@ -71,7 +71,6 @@ static void build(KdTree *tree, const Vec3 *points, int count)
  * radii: every query has points at exactly its radius. */
 static void test_grid_ties_at_the_radius(void **state)
 {
-    (void)state;
     static Vec3 points[1000];
     int n = 0;
     for (int x = 0; x < 10; x++)
@@ -102,7 +101,6 @@ static void test_grid_ties_at_the_radius(void **state)
 /* Many copies of a few points: the median selection must cope with equal keys. */
 static void test_duplicates(void **state)
 {
-    (void)state;
     static Vec3 points[3000];
     for (int i = 0; i < 3000; i++)
         points[i] = i % 3 == 0 ? vec3(1, 2, 3) : i % 3 == 1 ? vec3(1, 2, 4) : vec3(0, 0, 0);
@@ -126,7 +124,6 @@ static void test_duplicates(void **state)
  * it and below it. */
 static void test_points_on_a_plane(void **state)
 {
-    (void)state;
     static Vec3 points[MAX_POINTS];
     for (int i = 0; i < MAX_POINTS; i++) {
         Rng rng = rng_for_sample(5, 0, (uint64_t)i);
@@ -146,7 +143,6 @@ static void test_points_on_a_plane(void **state)
  * away find nothing, and the empty tree finds nothing. */
 static void test_empty_regions(void **state)
 {
-    (void)state;
     static Vec3 points[2000];
     for (int i = 0; i < 2000; i++) {
         Rng rng = rng_for_sample(7, 0, (uint64_t)i);
@@ -173,7 +169,6 @@ static void test_empty_regions(void **state)
 /* Random clouds of every size up to MAX_POINTS, random centres and radii. */
 static void test_random_clouds(void **state)
 {
-    (void)state;
     static Vec3 points[MAX_POINTS];
     for (int cloud = 0; cloud < 20; cloud++) {
         Rng rng = rng_for_sample(8, 1, (uint64_t)cloud);

@@ -26,7 +26,6 @@ static double channel_difference(Vec3 a, Vec3 b)
  * and rho = 1 (white: 1 / pi). */
 static void test_brdf_is_rho_over_pi(void **state)
 {
-    (void)state;
     const Vec3 rho = vec3(0.75, 0.15, 0.3), black = vec3(0, 0, 0), white = vec3(1, 1, 1);
     Vec3 expected = vec3(0.75 / PI, 0.15 / PI, 0.3 / PI);
     assert_float_equal(channel_difference(lambert_brdf(rho), expected), 0.0, 1e-15);
@@ -40,7 +39,6 @@ static void test_brdf_is_rho_over_pi(void **state)
  * ring's solid angle 2 pi sin(theta) dtheta, by the midpoint rule, equals rho. */
 static void test_albedo_by_quadrature_is_rho(void **state)
 {
-    (void)state;
     const Vec3 rho = vec3(0.8, 0.35, 0.6);
     const int rings = 10000;
     const double d_theta = 0.5 * PI / rings;
@@ -57,7 +55,6 @@ static void test_albedo_by_quadrature_is_rho(void **state)
  * f cos(theta) / pdf is exactly rho (to rounding), so the estimate has no variance. */
 static void test_albedo_per_cosine_sample_is_rho(void **state)
 {
-    (void)state;
     const Vec3 rho = vec3(0.75, 0.15, 0.15);
     Rng rng = rng_for_sample(8, 0, 0);
     for (int i = 0; i < 100000; i++) {

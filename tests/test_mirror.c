@@ -29,7 +29,6 @@ static double distance(Vec3 a, Vec3 b)
  * up at 45 degrees, keeping its forward component. */
 static void test_example_by_hand(void **state)
 {
-    (void)state;
     Vec3 d = vec3_normalize(vec3(1, -1, 0));
     Vec3 r = mirror_reflect(d, vec3(0, 1, 0));
     assert_close(distance(r, vec3_normalize(vec3(1, 1, 0))), 0.0, ROUNDING);
@@ -39,7 +38,6 @@ static void test_example_by_hand(void **state)
  * neither creates nor loses length, so a unit ray direction stays unit). */
 static void test_keeps_length(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(1, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng);
@@ -54,7 +52,6 @@ static void test_keeps_length(void **state)
  * plane of incidence: R . (d x n) = 0. */
 static void test_angle_in_equals_angle_out_in_plane_of_incidence(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(2, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng), d = random_unit_vector(&rng);
@@ -72,7 +69,6 @@ static void test_angle_in_equals_angle_out_in_plane_of_incidence(void **state)
  * no front side, and the renderer may pass either normal. */
 static void test_independent_of_normal_orientation(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(3, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng), d = random_unit_vector(&rng);
@@ -85,7 +81,6 @@ static void test_independent_of_normal_orientation(void **state)
  * walked backwards, which is why tracing from the eye is legitimate). */
 static void test_reflecting_twice_gives_d_back(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(4, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng), d = random_unit_vector(&rng);
@@ -97,7 +92,6 @@ static void test_reflecting_twice_gives_d_back(void **state)
  * (d perpendicular to n) leaves it unchanged, R(d) = d (exactly, since d . n = 0). */
 static void test_normal_and_grazing_incidence(void **state)
 {
-    (void)state;
     const Vec3 normals[] = {vec3(0, 0, 1), vec3(1, 0, 0), vec3(0, -1, 0)};
     for (int k = 0; k < 3; k++) {
         Vec3 n = normals[k];

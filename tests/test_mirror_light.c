@@ -38,46 +38,56 @@ static void add_quad(Scene *scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, int material)
     assert_true(scene_add_triangle(scene, triangle_make(a, c, d, material)) >= 0);
 }
 
+/* The scene's mirror planes, found afresh. */
+static MirrorPlanes planes_of(const Scene *scene)
+{
+    MirrorPlanes planes;
+    assert_int_equal(mirror_light_find_planes(scene, &planes), 0);
+    return planes;
+}
+
 static void test_planes_of_the_room(void **state)
 {
-    (void)state;
     Scene scene;
     char error[256];
     assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
-    assert_int_equal(scene.mirror_plane_count, 1);
+    MirrorPlanes planes = planes_of(&scene);
+    assert_int_equal(planes.count, 1);
     /* The mirror wall runs from (13, 0) to (10, 6): normal +-(2, 1, 0) / sqrt(5). */
-    const MirrorPlane *plane = &scene.mirror_planes[0];
+    const MirrorPlane *plane = &planes.planes[0];
     assert_close(fabs(plane->normal.x), 2.0 / sqrt(5.0), 1e-12);
     assert_close(fabs(plane->normal.y), 1.0 / sqrt(5.0), 1e-12);
     assert_close(plane->normal.z, 0.0, 1e-12);
     assert_close(fabs(plane->offset), 26.0 / sqrt(5.0), 1e-12);
+    mirror_planes_free(&planes);
     scene_free(&scene);
 }
 
 static void test_planes_are_shared_and_distinct(void **state)
 {
-    (void)state;
     Scene scene;
     scene_init(&scene);
-    Material mirror = {"mirror", MATERIAL_MIRROR, vec3(1, 1, 1), vec3(0, 0, 0), 0.0, 1.0};
-    Material white = {"white", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
+    Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
+    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     int m = scene_add_material(&scene, mirror), w = scene_add_material(&scene, white);
-    assert_int_equal(scene_prepare(&scene), 0);
-    assert_int_equal(scene.mirror_plane_count, 0);
+    MirrorPlanes planes = planes_of(&scene);
+    assert_int_equal(planes.count, 0);
     /* Two quads in the plane z = 2, one of them facing down, and a white one there. */
     add_quad(&scene, vec3(0, 0, 2), vec3(1, 0, 2), vec3(1, 1, 2), vec3(0, 1, 2), m);
     add_quad(&scene, vec3(5, 5, 2), vec3(5, 6, 2), vec3(6, 6, 2), vec3(6, 5, 2), m);
     add_quad(&scene, vec3(0, 0, 3), vec3(1, 0, 3), vec3(1, 1, 3), vec3(0, 1, 3), w);
     Sphere ball = {vec3(0, 0, 0), 1.0, m};
     assert_true(scene_add_sphere(&scene, ball) >= 0);
-    assert_int_equal(scene_prepare(&scene), 0);
-    assert_int_equal(scene.mirror_plane_count, 1);
-    assert_close(fabs(scene.mirror_planes[0].normal.z), 1.0, 1e-15);
-    assert_close(fabs(scene.mirror_planes[0].offset), 2.0, 1e-12);
+    planes = planes_of(&scene);
+    assert_int_equal(planes.count, 1);
+    assert_close(fabs(planes.planes[0].normal.z), 1.0, 1e-15);
+    assert_close(fabs(planes.planes[0].offset), 2.0, 1e-12);
+    mirror_planes_free(&planes);
     /* A parallel mirror at z = 2.001 is a plane of its own. */
     add_quad(&scene, vec3(0, 0, 2.001), vec3(1, 0, 2.001), vec3(1, 1, 2.001), vec3(0, 1, 2.001), m);
-    assert_int_equal(scene_prepare(&scene), 0);
-    assert_int_equal(scene.mirror_plane_count, 2);
+    planes = planes_of(&scene);
+    assert_int_equal(planes.count, 2);
+    mirror_planes_free(&planes);
     scene_free(&scene);
 }
 
@@ -89,9 +99,9 @@ static void test_planes_are_shared_and_distinct(void **state)
 static void lamp_beside_mirror(Scene *scene, int moved, Vec3 reflectance)
 {
     scene_init(scene);
-    Material white = {"white", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
-    Material lamp = {"lamp", MATERIAL_LIGHT, vec3(0, 0, 0), vec3(2, 2, 2), 0.0, 1.0};
-    Material mirror = {"mirror", MATERIAL_MIRROR, reflectance, vec3(0, 0, 0), 0.0, 1.0};
+    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(2, 2, 2)};
+    Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = reflectance};
     assert_int_equal(scene_add_material(scene, white), 0);
     int l = scene_add_material(scene, lamp), m = scene_add_material(scene, mirror);
     Vec3 corners[4] = {{0.3, -0.3, 0.9}, {0.3, 0.3, 0.9}, {0.7, 0.3, 1.1}, {0.7, -0.3, 1.1}};
@@ -148,18 +158,19 @@ static Estimate mirror_light_mean(const Scene *scene, Vec3 x, Vec3 n, long n_sam
 {
     double sum[3] = {0}, squares[3] = {0};
     RayCounts counts = {0, 0, 0};
+    MirrorPlanes planes = planes_of(scene);
     for (long i = 0; i < n_samples; i++) {
         Rng rng = rng_for_sample(seed, 0, (uint64_t)i);
-        add_sample(mirror_light_shadow_ray(scene, &scene->mirror_planes[0], x, n, n,
+        add_sample(mirror_light_shadow_ray(scene, &planes.planes[0], x, n, n,
                                            &scene->materials[0], &rng, &counts).value,
                    sum, squares);
     }
+    mirror_planes_free(&planes);
     return finish(sum, squares, n_samples);
 }
 
 static void test_image_is_the_lamp_moved(void **state)
 {
-    (void)state;
     const Vec3 tint = vec3(0.5, 0.7, 0.9);
     Scene with_mirror, moved;
     lamp_beside_mirror(&with_mirror, 0, tint);
@@ -211,13 +222,12 @@ static Estimate hitting_mean(const Scene *scene, Vec3 x, Vec3 n, long n_samples,
 
 static void test_same_light_as_hitting_the_lamp_in_the_room(void **state)
 {
-    (void)state;
     Scene scene;
     char error[256];
     assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
-    int mirror = scene_find_material(&scene, "mirror");
+    int mirror = scene_file_material(&scene, "mirror");
     scene.materials[mirror].reflectance = vec3(0.5, 0.7, 0.9);
-    assert_int_equal(scene_find_material(&scene, "white"), 0);
+    assert_int_equal(scene_file_material(&scene, "white"), 0);
     /* On the floor near the mirror, and on the floor under the lamp. */
     const Vec3 points[2] = {{9, 2, -5}, {3, 0, -5}};
     for (int p = 0; p < 2; p++)
@@ -228,7 +238,6 @@ static void test_same_light_as_hitting_the_lamp_in_the_room(void **state)
 
 static void test_where_the_image_gives_nothing(void **state)
 {
-    (void)state;
     Scene scene;
     lamp_beside_mirror(&scene, 0, vec3(1, 1, 1));
     Estimate behind = mirror_light_mean(&scene, vec3(1.5, 0, 0), vec3(0, 0, 1), 10000, 7);
@@ -239,9 +248,9 @@ static void test_where_the_image_gives_nothing(void **state)
      * at x = 1.4: from (0, 3, 0) the lamp's image at y in [-0.3, 0.3] is seen beside
      * the mirror, where the wall is. */
     scene_init(&scene);
-    Material white = {"white", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
-    Material lamp = {"lamp", MATERIAL_LIGHT, vec3(0, 0, 0), vec3(2, 2, 2), 0.0, 1.0};
-    Material mirror = {"mirror", MATERIAL_MIRROR, vec3(1, 1, 1), vec3(0, 0, 0), 0.0, 1.0};
+    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(2, 2, 2)};
+    Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
     scene_add_material(&scene, white);
     int l = scene_add_material(&scene, lamp), m = scene_add_material(&scene, mirror);
     add_quad(&scene, vec3(0.3, -0.3, 1), vec3(0.3, 0.3, 1), vec3(0.7, 0.3, 1), vec3(0.7, -0.3, 1), l);

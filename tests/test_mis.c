@@ -19,7 +19,6 @@
 
 static void test_weights_sum_to_one(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(1, 0, 0);
     for (int i = 0; i < 100000; i++) {
         int count_f = 1 + (int)(8 * rng_uniform(&rng)), count_g = 1 + (int)(8 * rng_uniform(&rng));
@@ -33,7 +32,6 @@ static void test_weights_sum_to_one(void **state)
 
 static void test_values(void **state)
 {
-    (void)state;
     assert_close(mis_power_heuristic(1, 2.0, 1, 2.0), 0.5, 1e-15);
     assert_close(mis_power_heuristic(1, 3.0, 1, 1.0), 0.9, 1e-15);   /* 9 / (9 + 1) */
     assert_close(mis_power_heuristic(4, 1.0, 1, 1.0), 16.0 / 17.0, 1e-15); /* counts */
@@ -43,7 +41,6 @@ static void test_values(void **state)
 
 static void test_zero_and_huge_densities(void **state)
 {
-    (void)state;
     assert_true(mis_power_heuristic(1, 0.0, 1, 1.0) == 0.0);
     assert_true(mis_power_heuristic(1, 1.0, 1, 0.0) == 1.0);
     assert_true(mis_power_heuristic(1, 0.0, 1, 0.0) == 0.0);

@@ -33,11 +33,12 @@
 #include "chi_square.h"
 #include "furnace.h"
 #include "photon.h"
+#include "ppm.h"
 
 /* A lamp quad of radiance le: corner p, edges e1, e2 (front normal e1 x e2). */
 static void add_lamp(Scene *scene, Vec3 p, Vec3 e1, Vec3 e2, Vec3 le)
 {
-    Material lamp = {"lamp", MATERIAL_LIGHT, vec3(0, 0, 0), le, 0.0, 1.0};
+    Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = le};
     int m = scene_add_material(scene, lamp);
     Vec3 p1 = vec3_add(p, e1), p2 = vec3_add(p1, e2), p3 = vec3_add(p, e2);
     assert_true(scene_add_triangle(scene, triangle_make(p, p1, p2, m)) >= 0);
@@ -60,7 +61,6 @@ static double emitted_power(const Scene *scene, int n)
 
 static void test_emitted_power_adds_to_phi(void **state)
 {
-    (void)state;
     Scene scene;
     scene_init(&scene);
     add_lamp(&scene, vec3(0, 0, 2), vec3(0, 1.5, 0), vec3(2, 0, 0), vec3(25, 25, 25)); /* A = 3 */
@@ -87,7 +87,6 @@ static void test_emitted_power_adds_to_phi(void **state)
  * wall, so the direct map stores them all and the caustic map none. */
 static void test_closed_box_stores_all_power(void **state)
 {
-    (void)state;
     Scene scene;
     furnace_box_uniform(&scene, 0.5, 0.0);
     add_lamp(&scene, vec3(-0.5, -0.5, 0.99), vec3(0, 0.8, 0), vec3(1, 0, 0), vec3(3, 2, 1));
@@ -95,9 +94,9 @@ static void test_closed_box_stores_all_power(void **state)
     const int n = 20000;
     double phi_red = PI * 3 * 0.8;
     RayCounts counts = {0, 0, 0};
-    PhotonMapSettings direct = {n, PHOTON_DIRECT, FRESNEL_EXACT, 5, 2};
+    PhotonMapSettings direct = {n, PHOTON_DIRECT, FRESNEL_EXACT, 5};
     PhotonMap map;
-    assert_int_equal(photon_map_build(&map, &scene, &direct, &counts), 0);
+    assert_int_equal(ppm_photon_map(&map, &scene, &direct, 2, &counts), 0);
     assert_int_equal(map.count, n);
     assert_int_equal(counts.bounce, (uint64_t)n);
     double red = 0.0, blue = 0.0;
@@ -109,8 +108,8 @@ static void test_closed_box_stores_all_power(void **state)
     assert_close(blue, phi_red / 3, 1e-9 * phi_red);
     photon_map_free(&map);
 
-    PhotonMapSettings caustic = {n, PHOTON_CAUSTIC, FRESNEL_EXACT, 5, 2};
-    assert_int_equal(photon_map_build(&map, &scene, &caustic, &counts), 0);
+    PhotonMapSettings caustic = {n, PHOTON_CAUSTIC, FRESNEL_EXACT, 5};
+    assert_int_equal(ppm_photon_map(&map, &scene, &caustic, 2, &counts), 0);
     assert_int_equal(map.count, 0);
     photon_map_free(&map);
     scene_free(&scene);
@@ -181,13 +180,11 @@ static double direction_p_value(Emitter emit)
 
 static void test_directions_are_cosine_weighted(void **state)
 {
-    (void)state;
     assert_true(direction_p_value(photon_emit) > 0.01);
 }
 
 static void test_wrong_directions_are_rejected(void **state)
 {
-    (void)state;
     assert_true(direction_p_value(uniform_emit) < 0.01);
     assert_true(direction_p_value(backwards_emit) < 0.01);
 }
@@ -195,7 +192,6 @@ static void test_wrong_directions_are_rejected(void **state)
 /* The photon starts on the lamp (off it by the ray offset), in front of it. */
 static void test_emission_starts_on_the_lamp(void **state)
 {
-    (void)state;
     Scene scene;
     scene_init(&scene);
     add_lamp(&scene, vec3(0, 0, 2), vec3(0, 1.5, 0), vec3(2, 0, 0), vec3(1, 1, 1));
@@ -211,8 +207,8 @@ static void test_emission_starts_on_the_lamp(void **state)
 static void mirror_scene(Scene *scene)
 {
     scene_init(scene);
-    Material white = {"white", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
-    Material mirror = {"mirror", MATERIAL_MIRROR, vec3(0.5, 0.8, 1.0), vec3(0, 0, 0), 0.0, 1.0};
+    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(0.5, 0.8, 1.0)};
     int w = scene_add_material(scene, white), m = scene_add_material(scene, mirror);
     Vec3 f0 = vec3(-5, -5, 0), f1 = vec3(5, -5, 0), f2 = vec3(5, 5, 0), f3 = vec3(-5, 5, 0);
     scene_add_triangle(scene, triangle_make(f0, f1, f2, w));
@@ -226,7 +222,6 @@ static void mirror_scene(Scene *scene)
 
 static void test_mirror_photon(void **state)
 {
-    (void)state;
     Scene scene;
     mirror_scene(&scene);
     /* From (0, 0, 3) to the mirror at (2, 0, 1.5), direction (0.8, 0, -0.6); reflected
@@ -262,10 +257,9 @@ static void test_mirror_photon(void **state)
  * (1 - R) / (1 + R), R = 0.04 (both Fresnel modes agree at normal incidence). */
 static void test_glass_photons_follow_fresnel(void **state)
 {
-    (void)state;
     Scene scene;
     mirror_scene(&scene);
-    Material glass = {"glass", MATERIAL_GLASS, vec3(0, 0, 0), vec3(0, 0, 0), 0.0, 1.5};
+    Material glass = {.name = "glass", .kind = MATERIAL_GLASS, .ior = 1.5};
     scene_add_sphere(&scene, (Sphere){vec3(0, 0, 2), 0.5, scene_add_material(&scene, glass)});
     assert_int_equal(scene_prepare(&scene), 0);
     const double r = 0.04, expected = (1 - r) / (1 + r);
@@ -293,15 +287,14 @@ static void test_glass_photons_follow_fresnel(void **state)
 
 static void test_map_same_for_any_thread_count(void **state)
 {
-    (void)state;
     Scene scene;
     mirror_scene(&scene);
     PhotonMap one, three;
     RayCounts counts = {0, 0, 0};
-    PhotonMapSettings s1 = {30001, PHOTON_CAUSTIC, FRESNEL_EXACT, 9, 1};
-    PhotonMapSettings s3 = {30001, PHOTON_CAUSTIC, FRESNEL_EXACT, 9, 3};
-    assert_int_equal(photon_map_build(&one, &scene, &s1, &counts), 0);
-    assert_int_equal(photon_map_build(&three, &scene, &s3, &counts), 0);
+    PhotonMapSettings s1 = {30001, PHOTON_CAUSTIC, FRESNEL_EXACT, 9};
+    PhotonMapSettings s3 = {30001, PHOTON_CAUSTIC, FRESNEL_EXACT, 9};
+    assert_int_equal(ppm_photon_map(&one, &scene, &s1, 1, &counts), 0);
+    assert_int_equal(ppm_photon_map(&three, &scene, &s3, 3, &counts), 0);
     assert_true(one.count > 1000);
     assert_int_equal(one.count, three.count);
     assert_int_equal(memcmp(one.photons, three.photons, (size_t)one.count * sizeof *one.photons), 0);

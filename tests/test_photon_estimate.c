@@ -32,6 +32,7 @@
 #include "area_light.h"
 #include "configuration_factor.h"
 #include "photon_estimate.h"
+#include "ppm.h"
 
 #define LAMP_A 2.0
 #define LAMP_B 1.0
@@ -43,7 +44,7 @@
 static void lamp_over_floor(Scene *scene, Material floor)
 {
     scene_init(scene);
-    Material lamp = {"lamp", MATERIAL_LIGHT, vec3(0, 0, 0), vec3(LE, LE, LE), 0.0, 1.0};
+    Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(LE, LE, LE)};
     int light = scene_add_material(scene, lamp), diffuse = scene_add_material(scene, floor);
     Vec3 p0 = vec3(0, 0, LAMP_H), p1 = vec3(0, LAMP_B, LAMP_H), p2 = vec3(LAMP_A, LAMP_B, LAMP_H),
          p3 = vec3(LAMP_A, 0, LAMP_H);
@@ -58,8 +59,8 @@ static void lamp_over_floor(Scene *scene, Material floor)
 static void direct_map(const Scene *scene, PhotonMap *map)
 {
     RayCounts counts = {0, 0, 0};
-    PhotonMapSettings settings = {PHOTONS, PHOTON_DIRECT, FRESNEL_EXACT, 77, 0};
-    assert_int_equal(photon_map_build(map, scene, &settings, &counts), 0);
+    PhotonMapSettings settings = {PHOTONS, PHOTON_DIRECT, FRESNEL_EXACT, 77};
+    assert_int_equal(ppm_photon_map(map, scene, &settings, 0, &counts), 0);
 }
 
 /* F averaged over the disk of radius r around (x, y): midpoint rule in polar
@@ -93,9 +94,8 @@ static double estimate_sigma(double mean, double x, double y)
 
 static void test_lambert_matches_configuration_factor(void **state)
 {
-    (void)state;
     const double rho = 0.5;
-    Material white = {"white", MATERIAL_LAMBERT, vec3(rho, rho, rho), vec3(0, 0, 0), 0.0, 1.0};
+    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(rho, rho, rho)};
     Scene scene;
     lamp_over_floor(&scene, white);
     PhotonMap map;
@@ -128,8 +128,8 @@ static void test_lambert_matches_configuration_factor(void **state)
 
 static void test_oren_nayar_matches_shadow_rays(void **state)
 {
-    (void)state;
-    Material rough = {"rough", MATERIAL_OREN_NAYAR, vec3(0.6, 0.6, 0.6), vec3(0, 0, 0), 0.5, 1.0};
+    Material rough = {.name = "rough", .kind = MATERIAL_OREN_NAYAR,
+                      .reflectance = vec3(0.6, 0.6, 0.6), .sigma = 0.5};
     Scene scene;
     lamp_over_floor(&scene, rough);
     PhotonMap map;

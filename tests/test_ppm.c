@@ -1,4 +1,4 @@
-/* test_ppm.c (chapter 8): Tests of progressive photon mapping's pass loop (lib/ppm.c, chapter 8). Whether the
+/* test_ppm.c (chapter 8): Tests of progressive photon mapping's pass loop (bench/ppm.c, chapter 8). Whether the
  * passes converge to the path tracer's image is tested in test_caustic_path.c; here:
  *
  * - the radius schedule r_i^2 = r_1^2 i^(alpha - 1): with alpha = 2/3, r_8^2 = r_1^2 / 2
@@ -22,8 +22,10 @@
 
 #include <string.h>
 
+#include "renderer.h"
 #include "check.h"
 #include "measure.h"
+#include "path_roulette.h"
 #include "ppm.h"
 #include "scene_file.h"
 
@@ -38,7 +40,6 @@ static void load_room(Scene *scene)
 
 static void test_radius_schedule(void **state)
 {
-    (void)state;
     assert_close(ppm_radius(0.3, PPM_ALPHA, 1), 0.3, 1e-15);
     assert_close(pow(ppm_radius(0.3, PPM_ALPHA, 8), 2), 0.09 / 2, 1e-14);
     assert_close(pow(ppm_radius(0.3, PPM_ALPHA, 27), 2), 0.09 / 3, 1e-14);
@@ -47,14 +48,13 @@ static void test_radius_schedule(void **state)
 
 static void test_same_image_for_any_thread_count(void **state)
 {
-    (void)state;
     Scene scene;
     load_room(&scene);
     PpmSettings ppm = {CHAPTER7, 5000, 0.2, PPM_ALPHA, 2, 3, 0.0};
     PpmResult results[3];
     const int threads[] = {1, 2, 5};
     for (int i = 0; i < 3; i++) {
-        RenderSettings settings = {24, 24, 1, PIXEL_RANDOM, threads[i], 8, 0, "test"};
+        RenderSettings settings = {{24, 24, 1, PIXEL_RANDOM, 8}, threads[i], 0, "test"};
         assert_int_equal(ppm_render(&scene, &settings, &ppm, &results[i]), 0);
         assert_int_equal(results[i].passes, 3);
     }
@@ -66,7 +66,7 @@ static void test_same_image_for_any_thread_count(void **state)
     }
     assert_true(results[0].stored > 0.0);
     assert_close(results[0].radius, ppm_radius(0.2, PPM_ALPHA, 3), 1e-15);
-    RenderSettings other = {24, 24, 1, PIXEL_RANDOM, 2, 9, 0, "test"};
+    RenderSettings other = {{24, 24, 1, PIXEL_RANDOM, 9}, 2, 0, "test"};
     PpmResult different;
     assert_int_equal(ppm_render(&scene, &other, &ppm, &different), 0);
     assert_true(memcmp(results[0].render.image.pixels, different.render.image.pixels, bytes) != 0);
@@ -78,7 +78,6 @@ static void test_same_image_for_any_thread_count(void **state)
 
 static void test_standard_error_from_passes(void **state)
 {
-    (void)state;
     Scene scene;
     load_room(&scene);
     for (int i = 0; i < scene.material_count; i++)
@@ -86,15 +85,15 @@ static void test_standard_error_from_passes(void **state)
             scene.materials[i].kind = MATERIAL_LAMBERT;
             scene.materials[i].reflectance = vec3(0.75, 0.75, 0.75);
         }
-    RenderSettings passes = {20, 20, 1, PIXEL_RANDOM, 0, 3, 0, "test"};
+    RenderSettings passes = {{20, 20, 1, PIXEL_RANDOM, 3}, 0, 0, "test"};
     PpmSettings ppm = {CHAPTER7, 1000, 0.2, PPM_ALPHA, 4, 32, 0.0};
     PpmResult progressive;
     assert_int_equal(ppm_render(&scene, &passes, &ppm, &progressive), 0);
     assert_int_equal(progressive.passes, 32);
     assert_int_equal(progressive.render.samples, 32 * 4 * 20 * 20);
-    RenderSettings once = {20, 20, 128, PIXEL_RANDOM, 0, 4, 0, "test"};
+    RenderSettings once = {{20, 20, 128, PIXEL_RANDOM, 4}, 0, 0, "test"};
     RenderResult single;
-    assert_int_equal(render(&scene, &once, path_radiance, &CHAPTER7, &single), 0);
+    assert_int_equal(render(&scene, &once, path_roulette_radiance, &CHAPTER7, &single), 0);
     double ratio = measure_rms(&progressive.render.std_error) / measure_rms(&single.std_error);
     double mean_a, error_a, mean_b, error_b;
     measure_image_mean(&progressive.render.image, &progressive.render.std_error, &mean_a, &error_a);
@@ -110,10 +109,9 @@ static void test_standard_error_from_passes(void **state)
 
 static void test_time_budget(void **state)
 {
-    (void)state;
     Scene scene;
     load_room(&scene);
-    RenderSettings settings = {8, 8, 1, PIXEL_RANDOM, 0, 1, 0, "test"};
+    RenderSettings settings = {{8, 8, 1, PIXEL_RANDOM, 1}, 0, 0, "test"};
     PpmSettings ppm = {CHAPTER7, 1000, 0.2, PPM_ALPHA, 1, 1000, 1e-9};
     PpmResult result;
     assert_int_equal(ppm_render(&scene, &settings, &ppm, &result), 0);

@@ -40,7 +40,6 @@ static Rng rng_about_to_output(uint32_t bits)
  * one bits give 1 - 2^-32, never 1. */
 static void test_uniform_extremes(void **state)
 {
-    (void)state;
     Rng ones = rng_about_to_output(0xffffffffu), ones_copy = ones;
     assert_int_equal(rng_next(&ones_copy), 0xffffffffu);
     double top = rng_uniform(&ones);
@@ -53,7 +52,6 @@ static void test_uniform_extremes(void **state)
 /* A million draws of one stream all lie in [0, 1). */
 static void test_uniform_in_unit_interval(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(3, 14, 15);
     for (int i = 0; i < DRAWS; i++) {
         double x = rng_uniform(&rng);
@@ -65,7 +63,6 @@ static void test_uniform_in_unit_interval(void **state)
  * from other generators in between: an image does not depend on thread scheduling. */
 static void test_deterministic(void **state)
 {
-    (void)state;
     Rng a = rng_for_sample(42, 1234, 7);
     Rng other = rng_for_sample(42, 1235, 7);
     uint32_t first[1000];
@@ -82,7 +79,6 @@ static void test_deterministic(void **state)
  * outputs never all agree. */
 static void test_neighbours_differ(void **state)
 {
-    (void)state;
     for (uint64_t k = 0; k < 1000; k++) {
         Rng base = rng_for_sample(k, k, k);
         Rng neighbours[3] = {rng_for_sample(k + 1, k, k), rng_for_sample(k, k + 1, k),
@@ -103,7 +99,6 @@ static void test_neighbours_differ(void **state)
  * the sample correlation is within 5 standard errors (1 / sqrt(N)) of 0. */
 static void test_neighbouring_pixels_uncorrelated(void **state)
 {
-    (void)state;
     const int pairs = 100000;
     double sum_xy = 0, sum_x = 0, sum_y = 0, sum_xx = 0, sum_yy = 0;
     for (int i = 0; i < pairs; i++) {
@@ -128,7 +123,6 @@ static void test_neighbouring_pixels_uncorrelated(void **state)
  * sqrt(Var[(U - 1/2)^2] / N) with Var[(U - 1/2)^2] = 1/80 - 1/144 = 1/180. */
 static void test_mean_and_variance(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(2019, 0, 0);
     double sum = 0, sum_sq = 0;
     for (int i = 0; i < DRAWS; i++) {
@@ -163,7 +157,6 @@ static double uniformity_p_value(const double counts[BINS], const char *what)
  * significance 0.001. */
 static void test_chi_square_one_stream(void **state)
 {
-    (void)state;
     double counts[BINS] = {0};
     Rng rng = rng_for_sample(7, 77, 777);
     for (int i = 0; i < DRAWS; i++)
@@ -175,7 +168,6 @@ static void test_chi_square_one_stream(void **state)
  * seeding hash spreads neighbouring indices uniformly. Significance 0.001. */
 static void test_chi_square_across_streams(void **state)
 {
-    (void)state;
     double counts[BINS] = {0};
     for (int i = 0; i < DRAWS; i++) {
         Rng rng = rng_for_sample(1, (uint64_t)(i / 16), (uint64_t)(i % 16));

@@ -1,5 +1,5 @@
 /* test_roulette.c (chapter 6): Russian roulette with survival probability alpha (roulette.h,
- * report §2.2 and §4.7, chapter 6, erratum SPEC §8.5).
+ * report §2.2 and §4.7, with the erratum of roulette.h).
  *
  * A path that meets roulette survives with probability alpha and then carries X / alpha;
  * otherwise it carries 0. With B the survival indicator (a Bernoulli(alpha) variable)
@@ -41,7 +41,6 @@ static int same_state(Rng a, Rng b)
  * the rest of a path's random numbers, and so the image, exactly as without roulette. */
 static void test_alpha_at_least_one_always_survives_without_drawing(void **state)
 {
-    (void)state;
     const double alphas[] = {1.0, 1.5, 1e300, INFINITY};
     for (int k = 0; k < 4; k++) {
         Rng rng = rng_for_sample(1, 0, (uint64_t)k), before = rng;
@@ -55,7 +54,6 @@ static void test_alpha_at_least_one_always_survives_without_drawing(void **state
  * call the generator is where one rng_uniform takes it, and the decision agrees. */
 static void test_alpha_below_one_draws_exactly_one_number(void **state)
 {
-    (void)state;
     const double alphas[] = {0.0, 0.3, 0.999};
     for (int k = 0; k < 3; k++) {
         Rng rng = rng_for_sample(2, 0, (uint64_t)k);
@@ -68,10 +66,9 @@ static void test_alpha_below_one_draws_exactly_one_number(void **state)
     }
 }
 
-/* alpha = 0 (the limit "near 0" of SPEC §7) ends every path: u >= 0 is never < 0. */
+/* alpha = 0 (the limit "near 0") ends every path: u >= 0 is never < 0. */
 static void test_alpha_zero_never_survives(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(3, 0, 0);
     for (int i = 0; i < DRAWS / 10; i++)
         assert_false(roulette_survives(0.0, &rng));
@@ -80,10 +77,9 @@ static void test_alpha_zero_never_survives(void **state)
 /* The survival frequency over DRAWS calls is alpha: the count of survivors is
  * binomial(DRAWS, alpha), so the frequency is within SIGMAS binomial standard errors
  * sqrt(alpha (1 - alpha) / DRAWS) of alpha. Alpha is the probability of SURVIVAL, not
- * of termination (erratum SPEC §8.5): alpha = 0.01 keeps 1% of the paths. */
+ * of termination (the erratum): alpha = 0.01 keeps 1% of the paths. */
 static void test_survival_frequency_is_alpha(void **state)
 {
-    (void)state;
     for (int k = 0; k < ALPHA_COUNT; k++) {
         double alpha = ALPHAS[k];
         Rng rng = rng_for_sample(4, 0, (uint64_t)k);
@@ -106,7 +102,6 @@ static void test_survival_frequency_is_alpha(void **state)
  * so |delta| <= SIGMAS binomial standard errors bounds it; that is the tolerance. */
 static void test_constant_estimate_mean_and_variance(void **state)
 {
-    (void)state;
     const double x = 3.0;
     for (int k = 0; k < ALPHA_COUNT; k++) {
         double alpha = ALPHAS[k];
@@ -137,7 +132,6 @@ static void test_constant_estimate_mean_and_variance(void **state)
  * central moment from m_1..m_4. */
 static void test_random_estimate_mean_and_variance(void **state)
 {
-    (void)state;
     for (int k = 0; k < ALPHA_COUNT; k++) {
         double alpha = ALPHAS[k];
         Rng value_rng = rng_for_sample(6, 0, (uint64_t)k);
@@ -166,7 +160,6 @@ static void test_random_estimate_mean_and_variance(void **state)
  * at 1, so a survivor's weight T / q never exceeds 1 in that channel. */
 static void test_survival_from_throughput_bounds_the_weight(void **state)
 {
-    (void)state;
     assert_true(roulette_survival_from_throughput(vec3(0.2, 0.6, 0.1)) == 0.6);
     assert_true(roulette_survival_from_throughput(vec3(0.05, 0.01, 0.02)) == 0.05);
     assert_true(roulette_survival_from_throughput(vec3(0.3, 2.5, 1.0)) == 1.0);

@@ -27,15 +27,15 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include "renderer.h"
 #include "agreement.h"
 #include "chi_square.h"
-#include "path.h"
+#include "path_final.h"
 #include "scene_file.h"
 #include "sobol.h"
 
 static void test_every_elementary_interval_holds_one_point(void **state)
 {
-    (void)state;
     enum { M = 8, N = 1 << M };
     for (uint64_t key = 1; key <= 5; key++) {
         double u[N], v[N];
@@ -80,14 +80,12 @@ static double uniformity_p(uint32_t index)
 
 static void test_each_point_is_uniform_over_keys(void **state)
 {
-    (void)state;
     assert_true(uniformity_p(0) > 1e-3);
     assert_true(uniformity_p(37) > 1e-3);
 }
 
 static void test_the_pairs_of_a_sample_are_independent(void **state)
 {
-    (void)state;
     enum { CELLS = 4, BINS = CELLS * CELLS * CELLS * CELLS, SAMPLES = 51200 };
     double observed[BINS] = {0}, expected[BINS];
     for (int b = 0; b < BINS; b++)
@@ -121,17 +119,18 @@ enum { SIDE = 10, RUNS = 64, SPP = 16 };
 
 static void test_path_tracer_mean_unchanged(void **state)
 {
-    (void)state;
     Scene scene;
     char error[256];
     assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
-    PathSettings path = {.max_depth = 8, .shadow_rays = 1, .rr_throughput = 1, .mirror_light = 8};
+    MirrorPlanes mirrors;
+    assert_int_equal(mirror_light_find_planes(&scene, &mirrors), 0);
+    PathSettings path = {.max_depth = 8, .shadow_rays = 1, .rr_throughput = 1, .mirror_light = 8,
+                         .mirrors = &mirrors};
     Image sum = image_new(SIDE, SIDE), sum2 = image_new(SIDE, SIDE);
     for (int run = 0; run < RUNS; run++) {
-        RenderSettings settings = {SIDE, SIDE, SPP, PIXEL_STRATIFIED, 1, 100 + (uint64_t)run, 0,
-                                   "test"};
+        RenderSettings settings = {{SIDE, SIDE, SPP, PIXEL_STRATIFIED, 100 + (uint64_t)run}, 1, 0, "test"};
         RenderResult r;
-        assert_int_equal(render(&scene, &settings, path_radiance, &path, &r), 0);
+        assert_int_equal(render(&scene, &settings, path_final_radiance, &path, &r), 0);
         for (int i = 0; i < 3 * SIDE * SIDE; i++) {
             sum.pixels[i] += r.image.pixels[i];
             sum2.pixels[i] += r.image.pixels[i] * r.image.pixels[i];
@@ -144,9 +143,9 @@ static void test_path_tracer_mean_unchanged(void **state)
         mean.pixels[i] = (float)m;
         error_of_mean.pixels[i] = (float)sqrt(fmax(variance, 0.0) / RUNS);
     }
-    RenderSettings independent = {SIDE, SIDE, 4096, PIXEL_RANDOM, 1, 7, 0, "test"};
+    RenderSettings independent = {{SIDE, SIDE, 4096, PIXEL_RANDOM, 7}, 1, 0, "test"};
     RenderResult r;
-    assert_int_equal(render(&scene, &independent, path_radiance, &path, &r), 0);
+    assert_int_equal(render(&scene, &independent, path_final_radiance, &path, &r), 0);
     Agreement agreement = agreement_test(&mean, &error_of_mean, &r.image, &r.std_error, 0.01);
     agreement_print("stratified (64 runs) against independent", &agreement);
     assert_true(agreement_holds(&agreement));
@@ -155,6 +154,7 @@ static void test_path_tracer_mean_unchanged(void **state)
     image_free(&sum2);
     image_free(&mean);
     image_free(&error_of_mean);
+    mirror_planes_free(&mirrors);
     scene_free(&scene);
 }
 

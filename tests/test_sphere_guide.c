@@ -25,10 +25,11 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include "renderer.h"
 #include "agreement.h"
 #include "check.h"
 #include "furnace.h"
-#include "path.h"
+#include "path_final.h"
 #include "scene_file.h"
 #include "sphere_guide.h"
 
@@ -36,9 +37,9 @@
 static void two_spheres(Scene *scene)
 {
     scene_init(scene);
-    Material glass = {"glass", MATERIAL_GLASS, vec3(0, 0, 0), vec3(0, 0, 0), 0.0, 1.5};
-    Material mirror = {"mirror", MATERIAL_MIRROR, vec3(1, 1, 1), vec3(0, 0, 0), 0.0, 1.0};
-    Material white = {"white", MATERIAL_LAMBERT, vec3(0.5, 0.5, 0.5), vec3(0, 0, 0), 0.0, 1.0};
+    Material glass = {.name = "glass", .kind = MATERIAL_GLASS, .ior = 1.5};
+    Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
+    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     Sphere a = {vec3(0, 0, 1), 0.5, scene_add_material(scene, glass)};
     Sphere b = {vec3(2, 0, 0.4), 0.4, scene_add_material(scene, mirror)};
     Sphere c = {vec3(-3, 0, 1), 0.5, scene_add_material(scene, white)}; /* not specular */
@@ -96,7 +97,6 @@ static void integrates_to_one(const Place *place, const SphereGuide *guide, int 
 
 static void test_density_integrates_to_one(void **state)
 {
-    (void)state;
     for_each_place(integrates_to_one);
 }
 
@@ -139,18 +139,16 @@ static void draws_follow_the_density(const Place *place, const SphereGuide *guid
 
 static void test_draws_follow_the_density(void **state)
 {
-    (void)state;
     for_each_place(draws_follow_the_density);
 }
 
 /* The bordered furnace with a glass sphere and a perfect mirror sphere: radiance 2. */
 static void test_furnace_with_spheres(void **state)
 {
-    (void)state;
     Scene scene;
     furnace_box_bordered(&scene);
-    Material glass = {"glass", MATERIAL_GLASS, vec3(0, 0, 0), vec3(0, 0, 0), 0.0, 1.5};
-    Material mirror = {"mirror", MATERIAL_MIRROR, vec3(1, 1, 1), vec3(0, 0, 0), 0.0, 1.0};
+    Material glass = {.name = "glass", .kind = MATERIAL_GLASS, .ior = 1.5};
+    Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
     Sphere a = {vec3(-0.3, 0.2, -0.5), 0.35, scene_add_material(&scene, glass)};
     Sphere b = {vec3(0.5, -0.4, -0.6), 0.3, scene_add_material(&scene, mirror)};
     assert_true(scene_add_sphere(&scene, a) >= 0);
@@ -164,7 +162,7 @@ static void test_furnace_with_spheres(void **state)
     for (int i = 0; i < N; i++) {
         Rng rng = rng_for_sample(9, 0, (uint64_t)i);
         Ray ray = {vec3(0.1, 0.3, 0.4), random_unit_vector(&rng)};
-        double value = vec3_average(path_radiance(&scene, ray, &rng, &settings, &counts));
+        double value = vec3_average(path_final_radiance(&scene, ray, &rng, &settings, &counts));
         sum += value;
         sum2 += value * value;
     }
@@ -180,23 +178,26 @@ static void test_furnace_with_spheres(void **state)
  * numbers (PIXEL_RANDOM) so that both renders' per-pixel errors are exact. */
 static void test_room_agrees_without_the_guide(void **state)
 {
-    (void)state;
     Scene scene;
     char error[256];
     assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
-    PathSettings plain = {.max_depth = 8, .shadow_rays = 1, .rr_throughput = 1, .mirror_light = 8};
+    MirrorPlanes mirrors;
+    assert_int_equal(mirror_light_find_planes(&scene, &mirrors), 0);
+    PathSettings plain = {.max_depth = 8, .shadow_rays = 1, .rr_throughput = 1, .mirror_light = 8,
+                          .mirrors = &mirrors};
     PathSettings guided = plain;
     guided.sphere_guide = SPHERE_GUIDE_STRENGTH;
-    RenderSettings a = {12, 12, 4096, PIXEL_RANDOM, 0, 21, 0, "test"};
-    RenderSettings b = {12, 12, 4096, PIXEL_RANDOM, 0, 22, 0, "test"};
+    RenderSettings a = {{12, 12, 4096, PIXEL_RANDOM, 21}, 0, 0, "test"};
+    RenderSettings b = {{12, 12, 4096, PIXEL_RANDOM, 22}, 0, 0, "test"};
     RenderResult ra, rb;
-    assert_int_equal(render(&scene, &a, path_radiance, &guided, &ra), 0);
-    assert_int_equal(render(&scene, &b, path_radiance, &plain, &rb), 0);
+    assert_int_equal(render(&scene, &a, path_final_radiance, &guided, &ra), 0);
+    assert_int_equal(render(&scene, &b, path_final_radiance, &plain, &rb), 0);
     Agreement agreement = agreement_test(&ra.image, &ra.std_error, &rb.image, &rb.std_error, 0.01);
     agreement_print("room, guided against cosine only", &agreement);
     assert_true(agreement_holds(&agreement));
     render_result_free(&ra);
     render_result_free(&rb);
+    mirror_planes_free(&mirrors);
     scene_free(&scene);
 }
 

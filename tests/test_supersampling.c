@@ -13,10 +13,10 @@
  *    the same image. Significance level 0.1%, fixed seeds (p = 0.96; three other sets
  *    of seeds gave 0.07, 0.96, 0.51). Sub-pixels cut the variance of a pixel's 5-sample
  *    mean by 12% here (0.85 against 0.97). Samples at the cells' centres
- *    without jitter (the planted bug, and the code before issue 10) estimate the image
+ *    without jitter (the planted bug) estimate the image
  *    at fixed points instead, biased at every edge: rejected (sum of z^2 = 1418, largest
  *    |z| 22).
- * 2. An interrupted render (issue 9, case 1): an estimator returning the sample's
+ * 2. An interrupted render: an estimator returning the sample's
  *    position (u, v, u v) within its pixel has pixel integrals 1/2, 1/2, 1/4. A render of
  *    1000 sub-pixel samples per pixel stopped by SIGINT after about 3 of them must still
  *    average to those, within 4 standard errors over the 1024 pixels. Visiting every
@@ -32,6 +32,7 @@
 #include <signal.h>
 #include <stdlib.h>
 
+#include "renderer.h"
 #include "chi_square.h"
 #include "path.h"
 #include "scene_file.h"
@@ -43,7 +44,6 @@
 
 static void test_subpixels_and_random_estimate_the_same_image(void **state)
 {
-    (void)state;
     Scene scene;
     char error[256];
     assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
@@ -52,8 +52,7 @@ static void test_subpixels_and_random_estimate_the_same_image(void **state)
     assert_non_null(sum);
     assert_non_null(squares);
     for (int run = 0; run < RUNS; run++) {
-        RenderSettings settings = {SIDE, SIDE, STRATA, PIXEL_SUBPIXELS, 0, 100 + (uint64_t)run,
-                                   0, "test"};
+        RenderSettings settings = {{SIDE, SIDE, STRATA, PIXEL_SUBPIXELS, 100 + (uint64_t)run}, 0, 0, "test"};
         RenderResult result;
         assert_int_equal(render(&scene, &settings, path_radiance, &path, &result), 0);
         for (int p = 0; p < PIXELS; p++) {
@@ -63,7 +62,7 @@ static void test_subpixels_and_random_estimate_the_same_image(void **state)
         }
         render_result_free(&result);
     }
-    RenderSettings random = {SIDE, SIDE, RUNS * STRATA, PIXEL_RANDOM, 0, 99, 0, "test"};
+    RenderSettings random = {{SIDE, SIDE, RUNS * STRATA, PIXEL_RANDOM, 99}, 0, 0, "test"};
     RenderResult b;
     assert_int_equal(render(&scene, &random, path_radiance, &path, &b), 0);
     double sum_z2 = 0.0, largest = 0.0, stratified_variance = 0.0, random_variance = 0.0;
@@ -111,13 +110,11 @@ static Vec3 position_in_pixel(const Scene *scene, Ray ray, Rng *rng, const void 
 
 static void test_interrupted_subpixel_render_is_unbiased(void **state)
 {
-    (void)state;
     Scene scene;
     scene_init(&scene);
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
     render_install_interrupt();
-    RenderSettings settings = {POSITION_SIDE, POSITION_SIDE, 1000, PIXEL_SUBPIXELS, 1, 3, 0,
-                               "test"};
+    RenderSettings settings = {{POSITION_SIDE, POSITION_SIDE, 1000, PIXEL_SUBPIXELS, 3}, 1, 0, "test"};
     RenderResult result;
     assert_int_equal(render(&scene, &settings, position_in_pixel, NULL, &result), 0);
     assert_true(result.interrupted);

@@ -22,11 +22,10 @@ static double hit(const Triangle *tri, Ray ray)
 }
 
 /* triangle_make: area = |e1 x e2| / 2, unit normal along e1 x e2 (the front side of
- * SPEC §4), flipped by swapping two vertices; checked by hand and against Heron's
+ * the scene format), flipped by swapping two vertices; checked by hand and against Heron's
  * formula and perpendicularity for an awkward triangle. */
 static void test_make(void **state)
 {
-    (void)state;
     Triangle tri = triangle_make(vec3(0, 0, 0), vec3(2, 0, 0), vec3(0, 3, 0), 7);
     assert_close(tri.area, 3, 0);
     assert_close(tri.normal.z, 1, 0);
@@ -48,7 +47,6 @@ static void test_make(void **state)
  * at (1/3, 1/3). */
 static void test_point(void **state)
 {
-    (void)state;
     Vec3 a = vec3(1, 2, 3), b = vec3(4, -2, 0), c = vec3(-1, 0, 6);
     Triangle tri = triangle_make(a, b, c, 0);
     Vec3 centroid = vec3_scale(vec3_add(vec3_add(a, b), c), 1.0 / 3.0);
@@ -60,10 +58,9 @@ static void test_point(void **state)
 }
 
 /* A ray straight down onto the triangle at height 2 hits at t = 2, from the front and
- * from the back alike (two-sided surfaces, SPEC §4), and exactly at the aimed point. */
+ * from the back alike (two-sided surfaces), and exactly at the aimed point. */
 static void test_hit_both_sides(void **state)
 {
-    (void)state;
     Triangle tri = triangle_make(vec3(0, 0, 2), vec3(4, 0, 2), vec3(0, 4, 2), 0);
     Ray from_front = {vec3(1, 1, 4), vec3(0, 0, -1)};
     Ray from_back = {vec3(1, 1, 0), vec3(0, 0, 1)};
@@ -81,7 +78,6 @@ static void test_hit_both_sides(void **state)
  * from the triangle (hit at negative t) misses. */
 static void test_miss(void **state)
 {
-    (void)state;
     Triangle tri = triangle_make(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), 0);
     Vec3 outside[] = {vec3(0.5, -1e-6, 0), vec3(-1e-6, 0.5, 0), vec3(0.5 + 1e-6, 0.5 + 1e-6, 0),
                       vec3(-1e-6, -1e-6, 0), vec3(1 + 1e-6, 0, 0), vec3(0, 1 + 1e-6, 0)};
@@ -95,7 +91,6 @@ static void test_miss(void **state)
  * triangle's middle, where Cramer's rule would divide 0 by 0) and just above it. */
 static void test_parallel(void **state)
 {
-    (void)state;
     Triangle tri = triangle_make(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), 0);
     Ray in_plane = {vec3(-1, 0.25, 0), vec3(1, 0, 0)};
     Ray above = {vec3(-1, 0.25, 1e-9), vec3(1, 0, 0)};
@@ -109,7 +104,6 @@ static void test_parallel(void **state)
  * edge hit, from many directions. */
 static void test_vertex_and_edge(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(5, 0, 0);
     Vec3 a = vec3(0.3, -1.7, 2.2), b = vec3(2.9, 0.4, 1.1), c = vec3(-0.6, 1.3, 3.7);
     Triangle tri = triangle_make(a, b, c, 0);
@@ -172,7 +166,7 @@ static int count_holes(const Triangle *tris, int count, Vec3 (*target)(Rng *, vo
     return holes;
 }
 
-/* A quad P0 P1 P2 P3 split as SPEC §4 does, into (P0,P1,P2) and (P0,P2,P3). */
+/* A quad P0 P1 P2 P3 split as the scene format does, into (P0,P1,P2) and (P0,P2,P3). */
 typedef struct { Vec3 p[4]; Triangle tri[2]; } Quad;
 
 /* A random point of the shared diagonal P0-P2 as the renderer would compute one
@@ -194,7 +188,6 @@ static Vec3 on_diagonal(Rng *rng, void *context)
  * and however grazing. (With a fixed slack of 1e-12, about 1 in 1000 went through.) */
 static void test_watertight_quad(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(2024, 0, 0);
     const double scales[] = {1e-3, 1.0, 1e3};
     Vec3 corners[4] = {vec3(0, 0, 0), vec3(1.3, -0.2, 0), vec3(1.1, 0.9, 0), vec3(-0.1, 0.7, 0)};
@@ -236,7 +229,6 @@ static Vec3 on_spoke(Rng *rng, void *context)
  * shared spokes of six triangles of irregular shape all hit. */
 static void test_watertight_fan(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(2025, 0, 0);
     const double scales[] = {1e-3, 1.0, 1e3};
     for (int i = 0; i < 3; i++) {

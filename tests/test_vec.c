@@ -24,7 +24,6 @@ static void assert_vec_close(Vec3 a, Vec3 b, double tol)
 /* Arithmetic on hand-checked values. */
 static void test_arithmetic(void **state)
 {
-    (void)state;
     Vec3 a = vec3(1, 2, 3), b = vec3(-4, 5, 0.5);
     assert_vec_close(vec3_add(a, b), vec3(-3, 7, 3.5), 0);
     assert_vec_close(vec3_sub(a, b), vec3(5, -3, 2.5), 0);
@@ -43,7 +42,6 @@ static void test_arithmetic(void **state)
  * to both factors. */
 static void test_cross(void **state)
 {
-    (void)state;
     assert_vec_close(vec3_cross(vec3(1, 0, 0), vec3(0, 1, 0)), vec3(0, 0, 1), 0);
     assert_vec_close(vec3_cross(vec3(0, 1, 0), vec3(0, 0, 1)), vec3(1, 0, 0), 0);
     assert_vec_close(vec3_cross(vec3(0, 0, 1), vec3(1, 0, 0)), vec3(0, 1, 0), 0);
@@ -57,7 +55,6 @@ static void test_cross(void **state)
 /* Normalising gives unit length at any magnitude, from 1e-150 to 1e150. */
 static void test_normalize(void **state)
 {
-    (void)state;
     for (double scale = 1e-150; scale < 1e151; scale *= 1e10) {
         Vec3 n = vec3_normalize(vec3(3 * scale, -4 * scale, 12 * scale));
         assert_close(vec3_length(n), 1, 1e-15);
@@ -68,7 +65,6 @@ static void test_normalize(void **state)
 /* NaN and infinity in any component are caught. */
 static void test_is_finite(void **state)
 {
-    (void)state;
     assert_true(vec3_is_finite(vec3(1e308, -1e-308, 0)));
     assert_false(vec3_is_finite(vec3(NAN, 0, 0)));
     assert_false(vec3_is_finite(vec3(0, INFINITY, 0)));
@@ -94,7 +90,6 @@ static void assert_right_handed_frame(Vec3 n, double tol)
  * the construction's 1 / (sign + n.z) is closest to dividing by zero. */
 static void test_basis_special_normals(void **state)
 {
-    (void)state;
     Vec3 normals[] = {
         vec3(0, 0, 1), vec3(0, 0, -1), vec3(1, 0, 0), vec3(-1, 0, 0),
         vec3(0, 1, 0), vec3(0, -1, 0), vec3(1, 0, -0.0), vec3(0, 1, -0.0),
@@ -112,7 +107,6 @@ static void test_basis_special_normals(void **state)
  * many crowded within 1e-4 of each pole: all give right-handed orthonormal frames. */
 static void test_basis_random_normals(void **state)
 {
-    (void)state;
     Rng rng = rng_for_sample(11, 0, 0);
     for (int i = 0; i < 200000; i++) {
         double z = 2.0 * rng_uniform(&rng) - 1.0;
@@ -127,7 +121,6 @@ static void test_basis_random_normals(void **state)
  * dot products with the frame: the transform is a rotation. */
 static void test_from_local(void **state)
 {
-    (void)state;
     Vec3 n = vec3_normalize(vec3(0.3, -0.5, 0.8)), t, b;
     vec3_basis(n, &t, &b);
     assert_vec_close(vec3_from_local(vec3(1, 0, 0), t, b, n), t, 0);
