@@ -166,9 +166,10 @@ all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) $(CHAPTER_TESTS) $(FINAL_TESTS)
 # Every chapter's clean source: no chapter markers left; its lesson (lib/) compiles
 # with nothing but its own headers (it never includes the bench, nor a later chapter),
 # its program and tests with the bench built for that chapter; no placeholder statement "(void) x;" in its
-# lesson; at most 10 chapter markers in all of lib/*.c; no comment cites a document
-# outside the repository or an issue; each lesson file opens with at most 12 comment
-# lines.
+# lesson; chapter 1's lesson and program at most 1,500 lines, and at most 40 lines of
+# earlier lib/ files changed by any later chapter; at most 10 chapter markers in all of
+# lib/*.c; no comment cites a document outside the repository or an issue; each lesson
+# file opens with at most 12 comment lines.
 check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 	@for n in $(CHAPTERS); do \
 	    tree=$(BUILD)/source/chapter$$n; \
@@ -181,6 +182,15 @@ check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 	        $(CC) $(REQUIRED) -DCHAPTER=$$n -I$$tree/lib -Ibench $(PKG_CFLAGS) -fsyntax-only $$f || exit 1; \
 	    done; \
 	done; \
+	lines=$$(cat $(BUILD)/source/chapter1/lib/*.[ch] $(BUILD)/source/chapter1/chapters/ch01_*.c | wc -l); \
+	if [ $$lines -gt 1500 ]; then echo "chapter 1's lesson and program: $$lines lines (at most 1500)"; exit 1; fi; \
+	for n in $(wordlist 2,9,$(CHAPTERS)); do \
+	    old=$(BUILD)/source/chapter$$((n - 1))/lib; changed=0; \
+	    for f in $$old/*; do \
+	        changed=$$((changed + $$(diff $$f $(BUILD)/source/chapter$$n/lib/$${f##*/} | grep -c '^[<>]'))); \
+	    done; \
+	    if [ $$changed -gt 40 ]; then echo "chapter $$n changes $$changed lines of earlier lib/ files (at most 40)"; exit 1; fi; \
+	done; \
 	markers=$$(grep -c '^#if.*CHAPTER' lib/*.c | awk -F: '{ s += $$2 } END { print s }'); \
 	if [ $$markers -gt 10 ]; then echo "$$markers chapter markers in lib/*.c (at most 10)"; exit 1; fi; \
 	if grep -rnE '\bSPEC\b|[Ii]ssue [0-9]|\.\./shared' lib chapters tests bench; then \
@@ -189,7 +199,7 @@ check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 	    n=$$(awk 'NR == 1 && !/^\/\*/ { print 0; exit } /\*\// { print NR; exit }' $$f); \
 	    if [ "$$n" -gt 12 ]; then echo "$$f: its first comment has $$n lines (at most 12)"; exit 1; fi; \
 	done; \
-	echo "the clean source of chapters $(CHAPTERS) compiles; $$markers chapter markers in lib/*.c"
+	echo "the clean source of chapters $(CHAPTERS) compiles; chapter 1: $$lines lines; $$markers chapter markers in lib/*.c"
 
 # Each test program is run from the top directory (some read scenes/ and run the chapter
 # programs): first every chapter's own tests in its own snapshot, then all of them in the
@@ -244,7 +254,7 @@ sanitize:
 FUZZ_DIR       := $(BUILD)/fuzz
 FUZZ_SANITIZE  := address,undefined -fno-sanitize-recover=all
 FUZZ_FLAGS     := $(REQUIRED) -DCHAPTER=$(FINAL) -Ilib -Ibench -g -O1
-FUZZ_SCENE_SRC := bench/scene_file.c $(addprefix lib/,scene.c bvh.c triangle.c sphere.c camera.c ray.c vec.c rng.c)
+FUZZ_SCENE_SRC := bench/scene_file.c bench/material_names.c $(addprefix lib/,scene.c bvh.c triangle.c sphere.c camera.c ray.c vec.c rng.c)
 
 $(FUZZ_DIR)/fuzz_scene_file: bench/fuzz/fuzz_scene_file.c $(FUZZ_SCENE_SRC) | $(DEPS_OK)
 	@sh .ci/install-deps clang

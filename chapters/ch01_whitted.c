@@ -1,8 +1,8 @@
 /* ch01_whitted.c (chapter 1): Whitted ray tracing (report §2.1, Figure 1).
  *
- * New concepts (lib/): vec, rng, ray, camera, sphere, triangle, material, scene,
- * scene_file, mirror, snell, schlick, whitted, image, figure, atomic_file, render, stats,
- * table, cli, experiment.
+ * New concepts (lib/): vec, ray, rng, camera, sphere, triangle, bvh, material, scene,
+ * mirror, snell, schlick, whitted, render. What reads the scene file and writes the
+ * images, the figure and the table is the bench (bench/experiment.h).
  *
  * The experiment: the room lit by a point light, one ray through each pixel centre.
  * Diffuse surfaces are shaded by a single shadow ray, so shadows are hard and there is

@@ -1,9 +1,10 @@
 /* ch02_monte_carlo.c (chapter 2): Monte Carlo diffuse (report §2.2, §3.3, §3.5.3; Figures 2 and 8).
  *
  * New concepts (lib/): lambert (eq. 8), hemisphere (cosine-weighted sampling by
- * inverting the CDF, eqs. 9-12), diffuse, path (the path tracer, here with M = 0:
- * light is found only when a path happens to hit the lamp), measure (errors against a
- * reference), chi_square (tests only).
+ * inverting the CDF, eqs. 9-12), diffuse, pixel_sampling (sub-pixels and random
+ * positions), glass (reflect or refract, chosen by R), path (the path tracer that finds
+ * light only when a path happens to hit the lamp). The errors against a reference are
+ * the bench's (bench/measure.h).
  *
  * The experiment:
  *   - Figure 2: the room by Monte Carlo path tracing: colour bleeding (red tint on the

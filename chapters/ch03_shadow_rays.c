@@ -1,7 +1,7 @@
 /* ch03_shadow_rays.c (chapter 3): shadow rays (report §3.7, eq. 21; Figure 11).
  *
  * New concepts (lib/): area_light (uniform sampling of the lights' area, and the
- * direct-light estimator of eq. 21 with M shadow rays).
+ * direct light of eq. 21 with M shadow rays), path_direct (the path tracer with them).
  *
  * The experiment:
  *   - Figure 11: 1 vs 30 shadow rays per diffuse hit, with time and error for each;

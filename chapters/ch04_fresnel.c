@@ -1,9 +1,10 @@
 /* ch04_fresnel.c (chapter 4): Fresnel glass and ray depth (report §3.5.1-3.5.2, §4.4; Figure 9).
  *
  * New concepts (lib/): fresnel (the exact Fresnel reflectance, eqs. 3-5, with the
- * labels R_s and R_p corrected). The perfect mirror, Snell's law with total
- * internal reflection, and Schlick's approximation (eqs. 2, 6-7) came in chapter 1
- * (mirror, snell, schlick); the path tracer's glass has used Schlick since chapter 2.
+ * labels R_s and R_p corrected), chosen in glass.c by the path settings. The perfect
+ * mirror, Snell's law with total internal reflection, and Schlick's approximation
+ * (eqs. 2, 6-7) came in chapter 1; the path tracer's glass has used Schlick since
+ * chapter 2.
  *
  * The experiment:
  *   - Figure 9: maximum ray depth 3 vs 8, both measured against the full-depth image.

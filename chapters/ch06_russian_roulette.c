@@ -1,7 +1,8 @@
 /* ch06_russian_roulette.c (chapter 6): Russian roulette (report §2.2, §4.7; Figure 12).
  *
  * New concepts (lib/): roulette (a path survives each diffuse hit with probability
- * alpha, its weight divided by alpha; alpha is the SURVIVAL probability, erratum §8.5).
+ * alpha, its weight divided by alpha; alpha is the SURVIVAL probability, the report's
+ * erratum), path_roulette (the report's path tracer: shadow rays and roulette).
  *
  * The experiment:
  *   - Figure 12: alpha = 0.01 vs 0.5;

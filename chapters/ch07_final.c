@@ -1,15 +1,14 @@
 /* ch07_final.c (chapter 7): the final image and the benchmarks (report §4.2, §4.8, §5; Figure 7,
  * Table 1).
  *
- * New concepts (lib/): bvh (the bounding volume hierarchy that every chapter's ray
- * queries already go through), plot (the convergence plot), and five ways to spend
- * the samples where the error is: mis (multiple importance sampling of the lamps),
- * mirror_light (the lamp's image in the mirror wall as a light of its own),
- * sphere_guide (bounces aimed at the mirror and glass spheres, for their caustics),
- * sobol (stratified pairs of numbers across a pixel's samples) and, from chapter 6,
- * roulette with bounded weights. Multithreading (render.c, --threads) is
- * what the report's discussion asks for first: its final image took 311 minutes on one
- * thread.
+ * New concepts (lib/): ways to spend the samples where the error is: mis (multiple
+ * importance sampling of the lamps), mirror_light (the lamp's image in the mirror wall
+ * as a light of its own), direct_light (both, at a diffuse vertex), sphere_guide
+ * (bounces aimed at the mirror and glass spheres, for their caustics), sobol (stratified
+ * pairs of numbers across a pixel's samples), and path_final, the path tracer with them
+ * all; from chapter 6, roulette with bounded weights. The bench renders on every core
+ * (--threads), what the report's discussion asks for first: its final image took 311
+ * minutes on one thread.
  *
  * The experiment:
  *   - Figure 7: the room with everything on (sub-pixels, shadow rays, glass with

@@ -3,10 +3,10 @@
  *
  * New concepts (lib/): kdtree (points near a place, fast), photon (shooting photons
  * from the lamps, tracing them through mirrors and glass, the caustic map L S+ D),
- * photon_estimate (reflected radiance from the density of photons), ppm (probabilistic
- * progressive photon mapping: independent passes, a shrinking radius), and the path
- * tracer's caustic option (path.h), under which the photon map, not the path, supplies
- * the light that reaches a diffuse surface through mirrors and glass.
+ * photon_estimate (reflected radiance from the density of photons, and the progressive
+ * radius), and path_caustics, the path tracer under which the photon map, not the path,
+ * supplies the light that reaches a diffuse surface through mirrors and glass. The
+ * bench renders it in independent passes (bench/ppm.h).
  *
  * Why: chapter 7's image is covered in speckles. The mirror wall, the mirror sphere and
  * the glass sphere send the lamp's light onto the walls and the floor (light, specular,

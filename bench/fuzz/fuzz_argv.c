@@ -1,5 +1,5 @@
-/* fuzz_argv.c (bench, chapter 7): libFuzzer target for the command line of every chapter program (cli.h,
- * chapter 1; issue 9).
+/* fuzz_argv.c (bench, chapter 7): libFuzzer target for the command line of every chapter
+ * program (cli.h).
  *
  * The input is one byte choosing which flags beyond FLAGS_COMMON the program takes
  * (each chapter's set is one of the 64), then the argument words, separated by NUL

@@ -15,7 +15,6 @@ static Font font;
 
 static int load_font(void **state)
 {
-    (void)state;
     char error[4400];
     if (font_load(&font, FONT_PATH, error, sizeof error) != 0) {
         fprintf(stderr, "%s\n", error);
@@ -26,7 +25,6 @@ static int load_font(void **state)
 
 static int free_font(void **state)
 {
-    (void)state;
     font_free(&font);
     return 0;
 }

@@ -1,15 +1,15 @@
-/* test_atomic_file.c (bench, chapter 1): output files are written whole or not at all (atomic_file.h,
- * chapter 1, SPEC §9).
+/* test_atomic_file.c (bench, chapter 1): output files are written whole or not at all
+ * (atomic_file.h).
  *
  * Every way a write can go wrong is made to happen for real: the caller gives up, the
  * disk refuses the bytes (a file size limit, in a child process), the rename is
  * refused, the process dies halfway. Each time the file that was there before must be
  * intact, and, except after SIGKILL, no temporary file may be left beside it.
  *
- * Signals (issue 9, case 4) are raised by the writing child itself at each step of a
- * write, so the race is the same every run: SIGTERM, SIGHUP or a second SIGINT must
- * kill it by that signal and leave no temporary file (the handler of
- * render_install_interrupt, render.h); a first SIGINT alone must let the write finish.
+ * Signals are raised by the writing child itself at each step of a write, so the race
+ * is the same every run: SIGTERM, SIGHUP or a second SIGINT must kill it by that signal
+ * and leave no temporary file (the handler of render_install_interrupt, renderer.h); a
+ * first SIGINT alone must let the write finish.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -29,7 +29,7 @@
 #include <unistd.h>
 
 #include "atomic_file.h"
-#include "render.h"
+#include "renderer.h"
 
 #define OLD_CONTENT "the old file\n"
 #define BIG_WRITE 100000 /* bytes, far above the file size limit below */

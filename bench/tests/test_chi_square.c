@@ -1,4 +1,4 @@
-/* test_chi_square.c (bench, chapter 1): Pearson's chi-square test (chi_square.h, chapter 2).
+/* test_chi_square.c (bench, chapter 1): Pearson's chi-square test (chi_square.h).
  *
  * The statistic is checked by hand, the merging of sparse bins by hand, and the p-value
  * against tabulated quantiles and against the closed forms for 1 and for even degrees
@@ -20,7 +20,6 @@
  * freedom. */
 static void test_statistic_by_hand(void **state)
 {
-    (void)state;
     const double observed[] = {10, 20, 30}, expected[] = {20, 20, 20};
     int dof;
     assert_float_equal(chi_square_statistic(observed, expected, 3, &dof), 10.0, 1e-12);
@@ -33,7 +32,6 @@ static void test_statistic_by_hand(void **state)
  *     X^2 = (8 - 6)^2 / 6 + (13 - 14)^2 / 14 = 2/3 + 1/14. */
 static void test_sparse_bins_are_merged(void **state)
 {
-    (void)state;
     const double observed[] = {3, 1, 4, 9, 2, 2}, expected[] = {2, 2, 2, 10, 1, 3};
     int dof;
     double statistic = chi_square_statistic(observed, expected, 6, &dof);
@@ -45,7 +43,6 @@ static void test_sparse_bins_are_merged(void **state)
  * (dof 0, p = 1); a sample where none can occur is an infinite statistic (p = 0). */
 static void test_degenerate_inputs(void **state)
 {
-    (void)state;
     const double few_observed[] = {1, 2}, few_expected[] = {2, 1};
     int dof;
     double statistic = chi_square_statistic(few_observed, few_expected, 2, &dof);
@@ -63,7 +60,6 @@ static void test_degenerate_inputs(void **state)
 /* Tabulated quantiles of the chi-square distribution (upper 5% and 1% points). */
 static void test_p_value_at_tabulated_quantiles(void **state)
 {
-    (void)state;
     assert_float_equal(chi_square_p_value(3.841, 1), 0.05, 1e-3);
     assert_float_equal(chi_square_p_value(18.307, 10), 0.05, 1e-3);
     assert_float_equal(chi_square_p_value(124.342, 100), 0.05, 1e-3);
@@ -78,7 +74,6 @@ static void test_p_value_at_tabulated_quantiles(void **state)
  *     k = 2m degrees:        p = e^(-x/2) sum_{i < m} (x/2)^i / i!. */
 static void test_p_value_closed_forms(void **state)
 {
-    (void)state;
     const int even_dofs[] = {2, 10, 100};
     for (double x = 1e-3; x <= 1e3; x *= 1.1) {
         double exact = erfc(sqrt(0.5 * x));
@@ -100,7 +95,6 @@ static void test_p_value_closed_forms(void **state)
  * wrong p-value would reject far more or far fewer. Observed with this seed: 46. */
 static void test_rejects_fair_die_at_its_significance_level(void **state)
 {
-    (void)state;
     const int experiments = 1000, rolls = 600;
     int rejected = 0;
     for (int e = 0; e < experiments; e++) {

@@ -1,5 +1,5 @@
-/* test_cli.c (bench, chapter 1): Tests of the programs' command line and their handling of bad input (lib/cli.c,
- * lib/experiment.c; SPEC §4 and §9), run on the real chapter 1 program.
+/* test_cli.c (bench, chapter 1): the programs' command line and their handling of bad
+ * input (cli.h, experiment.h), run on the real chapter 1 program.
  *
  * Every bad flag value and every bad scene file must give a message on stderr that
  * names the flag, or has the form "PROGRAM: FILE:LINE: what is wrong", exit status 2,
@@ -68,7 +68,6 @@ static void expect_failure(const char *args, const char *message)
 
 static void test_bad_flags(void **state)
 {
-    (void)state;
     expect_failure("--size 0", "--size: expected a whole number from 1 to 16384, got '0'");
     expect_failure("--size -3", "--size: expected a whole number");
     expect_failure("--size abc", "--size: expected a whole number");
@@ -88,7 +87,6 @@ static void test_bad_flags(void **state)
  * begin with "--" can still be given after '='. */
 static void test_flag_value_is_not_a_flag(void **state)
 {
-    (void)state;
     expect_failure("--out --help", "--out: missing value (got the option '--help'");
     expect_failure("--scene --quiet", "--scene: missing value (got the option '--quiet'");
     expect_failure("--size --quick", "--size: missing value");
@@ -98,7 +96,6 @@ static void test_flag_value_is_not_a_flag(void **state)
  * names the flag (exit 2), found before the render (nothing else printed). */
 static void test_out_checked_first(void **state)
 {
-    (void)state;
     char path[600], args[800], output[4096];
     snprintf(path, sizeof path, "%s/a_file", out_dir);
     FILE *file = fopen(path, "w");
@@ -115,7 +112,6 @@ static void test_out_checked_first(void **state)
  * program's result) is a failure: exit 1 and a message, not exit 0. */
 static void test_standard_output_full(void **state)
 {
-    (void)state;
     char command[1200], message[512];
     snprintf(command, sizeof command, "%s --quiet --size 8 --out %s/full 2>&1 >/dev/full",
              program, out_dir);
@@ -148,10 +144,10 @@ static void expect_scene_failure(const char *text, int line, const char *message
     expect_error(args, where, message);
 }
 
-/* One case per error class of SPEC §4, each at the line where it is. */
+/* One case per class of error in a scene file (docs/scene-format.md), each reported at
+ * the line where it is. */
 static void test_bad_scenes(void **state)
 {
-    (void)state;
     expect_scene_failure(CAMERA MATERIAL "frobnicate 1 2 3\n", 3, "unknown keyword 'frobnicate'");
     expect_scene_failure(CAMERA MATERIAL "sphere white 1 2 3\n", 3, "expected 4 numbers, found 3");
     expect_scene_failure(CAMERA MATERIAL "sphere white 1 2 x3 1\n", 3, "'x3' is not a decimal number");
@@ -183,7 +179,6 @@ static void test_bad_scenes(void **state)
 /* An image size the image plane cannot have: a 2:1 plane needs an even width. */
 static void test_aspect_ratio_mismatch(void **state)
 {
-    (void)state;
     char args[700];
     snprintf(args, sizeof args, "--scene %s --size 3",
              scene_file("camera 0 0 0  -2 -1 1  2 -1 1  -2 1 1\n" MATERIAL LIGHT));
@@ -192,7 +187,6 @@ static void test_aspect_ratio_mismatch(void **state)
 
 static void test_help_and_a_good_run(void **state)
 {
-    (void)state;
     char output[8192];
     assert_int_equal(run("--help", output, sizeof output), 0);
     assert_non_null(strstr(output, "usage: ch01_whitted"));
@@ -245,7 +239,6 @@ static const char *unique_room(const char *name, int variant)
  * theirs. */
 static void test_piped_scenes_have_their_own_references(void **state)
 {
-    (void)state;
     char output[16384], command[700];
     const char *first = unique_room("first", 1);
     snprintf(command, sizeof command, "cat %s |", first);
@@ -263,7 +256,6 @@ static void test_piped_scenes_have_their_own_references(void **state)
 /* A FIFO can be read only once: the program must not wait to read it again. */
 static void test_scene_from_a_fifo(void **state)
 {
-    (void)state;
     char fifo[600], command[1400], output[16384];
     snprintf(fifo, sizeof fifo, "%s/scene.fifo", out_dir);
     assert_int_equal(mkfifo(fifo, 0600), 0);

@@ -1,5 +1,5 @@
 /* test_experiment.c (bench, chapter 2): what a chapter program does when it is interrupted
- * (chapters/experiment.h; SPEC §9: files are written whole or not at all).
+ * (experiment.h; its files are written whole or not at all).
  *
  * SIGINT asks a render to stop. A panel is then saved only if every pixel has at least
  * one sample (an image of zeros must never replace a good one), the message says what
@@ -35,7 +35,6 @@ typedef struct {
 static Vec3 interrupting(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                          RayCounts *counts)
 {
-    (void)scene, (void)ray, (void)rng, (void)counts;
     const Interrupting *s = settings;
     if ((*s->calls)++ == s->raise_at)
         raise(SIGINT);
@@ -102,7 +101,6 @@ static void not_at_all(void) {}
 /* SIGINT before the render: nothing is rendered or written, and the message says so. */
 static void test_interrupt_before_render(void **state)
 {
-    (void)state;
     Outcome outcome = run_panel(raise_now, -1);
     print_message("    %s", outcome.message);
     assert_int_equal(outcome.status, 130);
@@ -113,7 +111,6 @@ static void test_interrupt_before_render(void **state)
 /* Without SIGINT, the panel is written and the program goes on. */
 static void test_no_interrupt(void **state)
 {
-    (void)state;
     Outcome outcome = run_panel(not_at_all, -1);
     assert_int_equal(outcome.status, 0);
     assert_true(outcome.png_written);
@@ -123,7 +120,6 @@ static void test_no_interrupt(void **state)
  * (an image of zeros would replace a good one), and the message says nothing was saved. */
 static void test_interrupt_in_first_pass(void **state)
 {
-    (void)state;
     Outcome outcome = run_panel(not_at_all, 0);
     print_message("    %s", outcome.message);
     assert_int_equal(outcome.status, 130);
@@ -135,7 +131,6 @@ static void test_interrupt_in_first_pass(void **state)
  * message names it. */
 static void test_interrupt_in_second_pass(void **state)
 {
-    (void)state;
     Outcome outcome = run_panel(not_at_all, SIDE * SIDE);
     print_message("    %s", outcome.message);
     assert_int_equal(outcome.status, 130);

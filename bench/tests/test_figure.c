@@ -23,7 +23,7 @@
 
 #include <stb_image.h>
 
-#include "check.h"
+#include "assert_close.h"
 #include "figure.h"
 #include "font_fixture.h"
 
@@ -124,7 +124,6 @@ static int pitch_at(int size)
  * 800, 24 from 1175 up. */
 static void test_dimensions(void **state)
 {
-    (void)state;
     const struct {
         int width, size;
     } sizes[] = {{64, 12}, {200, 12}, {624, 12}, {625, 13}, {800, 16}, {1174, 23},
@@ -148,7 +147,6 @@ static void test_dimensions(void **state)
  * panel's radiance, at the documented place. */
 static void test_panels_are_tone_mapped(void **state)
 {
-    (void)state;
     const char *captions[] = {"left", "middle", "right"};
     const double exposure = 1.7;
     Decoded figure = figure_of(3, 200, 150, captions, exposure);
@@ -190,7 +188,6 @@ static Ink ink_under(const Decoded *figure, int top, int left, int right)
  * top margin are dark. The realistic captions of a chapter figure are used. */
 static void test_captions_are_drawn_in_their_band(void **state)
 {
-    (void)state;
     const char *captions[] = {"1 spp, sub-pixels\n0.21 s, RMSE 0.031",
                               "4 spp, random\n0.83 s, RMSE 0.016", ""};
     Decoded figure = figure_of(3, 200, 100, captions, 1.0);
@@ -220,7 +217,6 @@ static void test_captions_are_drawn_in_their_band(void **state)
  * not only the two. */
 static void test_captions_are_anti_aliased(void **state)
 {
-    (void)state;
     const char *captions[] = {"Figure 9, right: 4 spp, RMSE 0.4017"};
     Decoded figure = figure_of(1, 400, 20, captions, 1.0);
     int levels[256] = {0}, distinct = 0;
@@ -238,7 +234,6 @@ static void test_captions_are_anti_aliased(void **state)
  * one (12 per em, about 9). */
 static void test_text_grows_with_the_panel(void **state)
 {
-    (void)state;
     const char *captions[] = {"EHT"};
     Decoded small = figure_of(1, 200, 10, captions, 1.0);
     Decoded large = figure_of(1, 800, 10, captions, 1.0);
@@ -291,7 +286,6 @@ static int lines_wrapped_at_spaces(const char *caption, double width, int size)
  * 200 - 2 * 6 pixels (4 here; breaking inside words would pack them into 3). */
 static void test_long_caption_wraps(void **state)
 {
-    (void)state;
     const char *caption = "rendered_with_jitter shadow_rays_thirty russian_roulette_alpha "
                           "seconds_and_error";
     int lines = lines_wrapped_at_spaces(caption, 188, 12);
@@ -304,7 +298,6 @@ static void test_long_caption_wraps(void **state)
  * instead of breaking the word: one line at a smaller size. */
 static void test_long_word_shrinks_text(void **state)
 {
-    (void)state;
     int band = band_of_long_caption("supersampling_with_jittered_positions");
     assert_true(band - 12 < pitch_at(12));
     assert_true(band - 12 >= pitch_at(8));
@@ -316,7 +309,6 @@ static void test_long_word_shrinks_text(void **state)
  * character is never split. */
 static void test_tiny_panels_break_words(void **state)
 {
-    (void)state;
     const char *captions[] = {"unbreakable_word", "tab\there \x01\x7f\xff \xce\xb1\xce\xb1\xce\xb1", NULL};
     Decoded figure = figure_of(3, 20, 20, captions, 1.0);
     assert_int_equal(figure.width, 3 * 20 + 2 * 6);
@@ -341,7 +333,6 @@ static void test_tiny_panels_break_words(void **state)
 /* Panels of different sizes, none at all, or one without pixels: EINVAL, no file. */
 static void test_refuses_mismatched_panels(void **state)
 {
-    (void)state;
     const char *captions[] = {"a", "b"};
     Image panels[2] = {image_new(20, 10), image_new(10, 20)};
     char path[160];

@@ -19,7 +19,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "check.h"
+#include "assert_close.h"
 #include "font_fixture.h"
 #include "font.h"
 
@@ -50,7 +50,6 @@ static void draw(Image *image, const char *text, double x, double baseline, doub
  * some partly (0 < a < 1: anti-aliased edges). */
 static void test_glyph_draws_blended_pixels(void **state)
 {
-    (void)state;
     const Vec3 blue = {0, 0, 1}, red = {1, 0, 0};
     Image image = filled(64, 64, blue);
     const double x = 10.0, baseline = 44.0, size = 32.0;
@@ -79,7 +78,6 @@ static void test_glyph_draws_blended_pixels(void **state)
 /* A space lights nothing, and empty text leaves the image alone. */
 static void test_space_and_empty_text_draw_nothing(void **state)
 {
-    (void)state;
     const Vec3 white = {1, 1, 1};
     Image image = filled(40, 30, white);
     draw(&image, " ", 5, 20, 16, vec3(0, 0, 0));
@@ -95,7 +93,6 @@ static void test_space_and_empty_text_draw_nothing(void **state)
  * proportional to the size. The length argument counts bytes: a prefix is measured. */
 static void test_width_grows_with_text(void **state)
 {
-    (void)state;
     const char *text = "RMSE 0.031 at 4 spp";
     assert_close(font_width(&font, text, 0, 16), 0.0, 0.0);
     double previous = 0.0, letters = 0.0;
@@ -115,7 +112,6 @@ static void test_width_grows_with_text(void **state)
 /* The vertical sizes scale with the size, and a line is taller than its ascent. */
 static void test_line_height_scales(void **state)
 {
-    (void)state;
     assert_close(font_line_height(&font, 32), 2.0 * font_line_height(&font, 16), 1e-3);
     assert_close(font_ascent(&font, 32), 2.0 * font_ascent(&font, 16), 1e-3);
     assert_true(font_line_height(&font, 16) > font_ascent(&font, 16));
@@ -141,7 +137,6 @@ static int images_equal(const Image *a, const Image *b)
  * measured as '?'; a valid two-byte character (e acute) is its own glyph. */
 static void test_undrawable_characters_become_question_marks(void **state)
 {
-    (void)state;
     const struct {
         const char *text, *drawn_as;
     } odd[] = {{"\x01", "?"},         {"\n", "?"},           {"\x80", "?"},
@@ -166,7 +161,6 @@ static void test_undrawable_characters_become_question_marks(void **state)
  * drawn, nothing is written outside (the sanitizer run checks that). */
 static void test_text_off_the_image_is_cut(void **state)
 {
-    (void)state;
     const double places[][2] = {{-8, 15}, {30, 15}, {5, 4}, {5, 34}, {-500, 15}, {5, 500}};
     for (size_t i = 0; i < sizeof places / sizeof places[0]; i++) {
         Image image = filled(36, 30, vec3(1, 1, 1));
@@ -188,7 +182,6 @@ static void test_text_off_the_image_is_cut(void **state)
  * saying so. */
 static void test_missing_font_is_a_clear_error(void **state)
 {
-    (void)state;
     Font missing;
     char error[4400];
     const char *path = "/nonexistent/fonts/DejaVuSans.ttf";

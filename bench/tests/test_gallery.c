@@ -225,7 +225,6 @@ static int check_links(const char *page, const char *const *files, int file_coun
 
 static void test_links_resolve(void **state)
 {
-    (void)state;
     char *page = make_page();
     const char *const files[] = {"ch01_figure1.png", "ch01_panel.png", "ch01_panel.pfm",
                                  "ch01_table.csv", "ch01_settings.txt", "ch02_figure2.png",
@@ -278,7 +277,6 @@ static int table_cells(const char *page, const char *csv, int columns, char cell
 
 static void test_tables_carry_the_csv(void **state)
 {
-    (void)state;
     char *page = make_page();
     char cells[8][8][128], numeric[8][9];
     int rows = table_cells(page, "ch01_table.csv", TABLE_COLUMNS, cells, numeric, 8);
@@ -319,7 +317,6 @@ static int in_range(const char *start, const char *end, const char *text)
 
 static void test_missing_chapter_is_listed(void **state)
 {
-    (void)state;
     char *page = make_page();
     const char *previous = page, *end;
     for (int n = 1; n <= CHAPTER_COUNT; n++) {
@@ -339,7 +336,6 @@ static void test_missing_chapter_is_listed(void **state)
  * folded in chapter 2; QUICK and the run's numbers in the header. */
 static void test_layout(void **state)
 {
-    (void)state;
     char *page = make_page();
     const char *end, *one = section(page, 1, &end);
     assert_true(in_range(one, end, "<img src=\"ch01_figure1.png\""));
@@ -365,7 +361,6 @@ static void test_layout(void **state)
 
 static void test_text_is_escaped_and_no_script(void **state)
 {
-    (void)state;
     char *page = make_page();
     assert_non_null(strstr(page, "--size 200 &lt;script&gt;alert(1)&lt;/script&gt; &amp; more"));
     for (char *c = page; *c; c++)
@@ -381,7 +376,6 @@ static void test_text_is_escaped_and_no_script(void **state)
  * it, and no page is left behind. */
 static void test_no_run_and_errors(void **state)
 {
-    (void)state;
     empty_fixture();
     GalleryPage page = {"Test gallery", fixture, NULL, CHAPTERS, CHAPTER_COUNT, 0};
     char error[4400] = "";

@@ -32,7 +32,6 @@ static char scratch_dir[64], scratch_file[600];
 
 static int make_scratch(void **state)
 {
-    (void)state;
     strcpy(scratch_dir, "/tmp/test_image_XXXXXX");
     return mkdtemp(scratch_dir) ? 0 : -1;
 }
@@ -62,7 +61,6 @@ static int scratch_entries(int remove_them)
 
 static int remove_scratch(void **state)
 {
-    (void)state;
     scratch_entries(1);
     return rmdir(scratch_dir);
 }
@@ -102,7 +100,6 @@ static Image numbered_image(int width, int height)
 /* The tone map at chosen points, each line saying what it shows. */
 static void test_tonemap_values(void **state)
 {
-    (void)state;
     const struct {
         double value, exposure;
         int code;
@@ -139,7 +136,6 @@ static double srgb_decode(double e)
  * above maps to k + 1 (truncation would fail the first and the last). */
 static void test_tonemap_rounds_to_nearest(void **state)
 {
-    (void)state;
     for (int k = 0; k < 256; k++) {
         assert_int_equal(image_tonemap(srgb_decode(k / 255.0), 1.0), k);
         if (k < 255) {
@@ -153,7 +149,6 @@ static void test_tonemap_rounds_to_nearest(void **state)
  * (and no size), and freeing twice is harmless. */
 static void test_image_new(void **state)
 {
-    (void)state;
     Image image = image_new(3, 2);
     assert_non_null(image.pixels);
     assert_int_equal(image.width, 3);
@@ -195,7 +190,6 @@ static void assert_round_trip(const Image *image)
  * and values from denormal to huge, negative and negative zero. */
 static void test_pfm_round_trip_is_bit_exact(void **state)
 {
-    (void)state;
     const int sizes[][2] = {{3, 5}, {1, 1}, {7, 2}, {1, 4}};
     for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
         Image image = numbered_image(sizes[s][0], sizes[s][1]);
@@ -214,7 +208,6 @@ static void test_pfm_round_trip_is_bit_exact(void **state)
  * the bottom row first, and nothing else; nothing but the file is left in the directory. */
 static void test_pfm_layout(void **state)
 {
-    (void)state;
     Image image = numbered_image(3, 5);
     const char *path = in_scratch("layout.pfm");
     assert_int_equal(image_write_pfm(&image, path), 0);
@@ -238,7 +231,6 @@ static void test_pfm_layout(void **state)
  * puts the first stored row at the bottom. */
 static void test_pfm_reads_big_endian(void **state)
 {
-    (void)state;
     const char header[] = "PF\n1 2\n1.0\n";
     const float stored[6] = {1.0f, 2.0f, 3.0f, -0.5f, 1e-30f, 6.25f}; /* bottom, top */
     unsigned char data[sizeof header - 1 + 24];
@@ -265,7 +257,6 @@ static void test_pfm_reads_big_endian(void **state)
  * message names the path and contains the given words. */
 static void test_pfm_rejects_broken_files(void **state)
 {
-    (void)state;
     const struct {
         const char *header;
         long data_bytes; /* zero bytes of pixel data after the header */
@@ -309,7 +300,6 @@ static void test_pfm_rejects_broken_files(void **state)
  * reference with one would poison every error measured against it. */
 static void test_pfm_rejects_non_finite_pixels(void **state)
 {
-    (void)state;
     const char header[] = "PF\n1 1\n-1.0\n";
     unsigned char data[sizeof header - 1 + 12] = {0};
     memcpy(data, header, sizeof header - 1);
@@ -328,7 +318,6 @@ static void test_pfm_rejects_non_finite_pixels(void **state)
  * cut short, never overrun. */
 static void test_pfm_missing_file(void **state)
 {
-    (void)state;
     const char *path = in_scratch("does_not_exist.pfm");
     Image image;
     char error[256] = "";
@@ -345,7 +334,6 @@ static void test_pfm_missing_file(void **state)
  * channel, RGB; decoded, every pixel is the tone map of the radiance. */
 static void test_png_is_the_tone_mapped_image(void **state)
 {
-    (void)state;
     Image image = numbered_image(5, 3);
     const double exposure = 2.0;
     const char *path = in_scratch("image.png");
@@ -388,7 +376,6 @@ static void assert_writes_fail(const Image *image, const char *path, int expecte
 /* Writing into a directory that does not exist fails with ENOENT and creates nothing. */
 static void test_write_into_missing_directory(void **state)
 {
-    (void)state;
     Image image = numbered_image(4, 4);
     assert_writes_fail(&image, in_scratch("missing/image"), ENOENT, 0);
     image_free(&image);
@@ -399,7 +386,6 @@ static void test_write_into_missing_directory(void **state)
  * stays as it was. */
 static void test_failed_rename_leaves_nothing(void **state)
 {
-    (void)state;
     Image image = numbered_image(4, 4);
     assert_int_equal(mkdir(in_scratch("taken"), 0700), 0);
     assert_writes_fail(&image, in_scratch("taken"), EISDIR, 1);
@@ -412,7 +398,6 @@ static void test_failed_rename_leaves_nothing(void **state)
 /* An image without pixels (image_new failed) is refused with EINVAL, writing nothing. */
 static void test_write_without_pixels(void **state)
 {
-    (void)state;
     Image none = image_new(0, 0);
     assert_writes_fail(&none, in_scratch("none"), EINVAL, 0);
 }

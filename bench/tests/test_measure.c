@@ -1,5 +1,5 @@
-/* test_measure.c (bench, chapter 2): error metrics, the hash that names a reference, and the reference cache
- * (measure.h, SPEC §6, chapter 2).
+/* test_measure.c (bench, chapter 2): error metrics, the hash that names a reference, and
+ * the reference cache (measure.h).
  *
  * The metrics are checked against sums done by hand on images of a few pixels, and
  * statistically: the image mean's standard error against images of known variance and
@@ -24,9 +24,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "check.h"
+#include "assert_close.h"
 #include "measure.h"
 #include "path.h"
+#if CHAPTER >= 3
+#include "path_direct.h"
+#endif
+#include "renderer.h"
 #include "scene_file.h"
 
 /* An image whose values, channel by channel in reading order, are `values`. */
@@ -45,7 +49,6 @@ static Image image_of(int width, int height, const float *values)
  * A channel with no error adds nothing, whatever its reference. */
 static void test_error_by_hand(void **state)
 {
-    (void)state;
     const float values[] = {1.0f, 0.5f, 0.0f, 2.0f, 0.25f, 0.0f};
     const float truth[] = {0.5f, 0.5f, 0.0f, 1.0f, 0.25f, 0.5f};
     Image image = image_of(2, 1, values), reference = image_of(2, 1, truth);
@@ -64,7 +67,6 @@ static void test_error_by_hand(void **state)
  * against 10 counts 0.01 / 100.01. The RMSE treats both alike. */
 static void test_relative_error_weights_dark_pixels(void **state)
 {
-    (void)state;
     const float values[] = {0.5f, 0.5f, 0.5f};
     const float dark[] = {0.0f, 0.0f, 0.0f}, bright[] = {10.0f, 10.0f, 10.0f};
     const float bright_values[] = {10.5f, 10.5f, 10.5f};
@@ -86,7 +88,6 @@ static void test_relative_error_weights_dark_pixels(void **state)
 /* An image compared with itself has no error at all, exactly. */
 static void test_identical_images_have_no_error(void **state)
 {
-    (void)state;
     const float values[] = {0.0f, 0.3f, 7.0f, 1e-6f, 123.0f, 0.5f};
     Image image = image_of(2, 1, values);
     double rmse = -1.0, rel_mse = -1.0;
@@ -100,7 +101,6 @@ static void test_identical_images_have_no_error(void **state)
  * does not matter; a constant image's RMS is that constant's magnitude. */
 static void test_rms_by_hand(void **state)
 {
-    (void)state;
     const float values[] = {1.0f, -2.0f, 2.0f};
     const float constant[] = {-0.25f, -0.25f, -0.25f, -0.25f, -0.25f, -0.25f};
     Image image = image_of(1, 1, values), flat = image_of(2, 1, constant);
@@ -117,7 +117,6 @@ static void test_rms_by_hand(void **state)
  * errors 1, 2, 3 and 0, 0, 0 give sqrt(2^2) / 2 = 1. */
 static void test_image_mean_by_hand(void **state)
 {
-    (void)state;
     const float values[] = {1, 2, 3, 4, 5, 6}, grey[] = {3, 3, 3, 4, 4, 4};
     const float channels[] = {1, 2, 3, 0, 0, 0};
     Image image = image_of(2, 1, values), average_error = image_of(2, 1, grey);
@@ -137,7 +136,6 @@ static void test_image_mean_by_hand(void **state)
  * pixels with s = 0.5 give 0.25. */
 static void test_image_mean_error_shrinks_as_root_n(void **state)
 {
-    (void)state;
     float values[12], errors[12];
     for (int i = 0; i < 12; i++) {
         values[i] = 2.0f;
@@ -152,7 +150,7 @@ static void test_image_mean_error_shrinks_as_root_n(void **state)
     image_free(&std_error);
 }
 
-/* Synthetic images of known variance, rendered (render.h) so that the standard errors
+/* Synthetic images of known variance, rendered (renderer.h) so that the standard errors
  * are estimated from the samples as a chapter's are: 16 x 16 pixels, 50 samples each, a
  * sample's channels (u, u, u) with u uniform on [0, 1) (fully correlated, as one path
  * carries all three) or (u1, u2, u3) (independent). The image mean's true standard
@@ -164,7 +162,6 @@ static void test_image_mean_error_shrinks_as_root_n(void **state)
 static Vec3 correlated_channels(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                                 RayCounts *counts)
 {
-    (void)scene, (void)ray, (void)settings, (void)counts;
     double u = rng_uniform(rng);
     return vec3(u, u, u);
 }
@@ -172,7 +169,6 @@ static Vec3 correlated_channels(const Scene *scene, Ray ray, Rng *rng, const voi
 static Vec3 independent_channels(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                                  RayCounts *counts)
 {
-    (void)scene, (void)ray, (void)settings, (void)counts;
     double r = rng_uniform(rng), g = rng_uniform(rng);
     return vec3(r, g, rng_uniform(rng));
 }
@@ -182,7 +178,9 @@ static double image_mean_std_error(Estimator estimate)
     Scene scene;
     scene_init(&scene);
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
-    RenderSettings settings = {16, 16, 50, PIXEL_RANDOM, 2, 8, 0, "test"};
+    RenderSettings settings = {.image = {.width = 16, .height = 16, .spp = 50,
+                                         .sampling = PIXEL_RANDOM, .seed = 8},
+                               .threads = 2, .label = "test"};
     RenderResult result;
     assert_int_equal(render(&scene, &settings, estimate, NULL, &result), 0);
     double mean, std_error;
@@ -195,7 +193,6 @@ static double image_mean_std_error(Estimator estimate)
 
 static void test_image_mean_error_of_known_variance(void **state)
 {
-    (void)state;
     double correlated = sqrt(1.0 / 12 / (256 * 50)), independent = sqrt(1.0 / 36 / (256 * 50));
     assert_close(image_mean_std_error(correlated_channels), correlated, 0.03 * correlated);
     assert_close(image_mean_std_error(independent_channels), independent, 0.03 * independent);
@@ -236,7 +233,7 @@ static double ks_normal_p_value(double *values, int n, double *distance)
     return fmin(fmax(q, 0.0), 1.0);
 }
 
-#if CHAPTER >= 3 /* the estimator with a shadow ray, for noise without fireflies */
+#if CHAPTER >= 3 /* the estimator with a shadow ray (path_direct.h), for noise without fireflies */
 /* The z-score of an unbiased setting is standard normal when its standard error is
  * right (chapters 4 and 6 print such z-scores). The report's room at 8 x 8 pixels, the
  * path tracer with one shadow ray, depth 6, 32 spp: PAIRS pairs of renders with
@@ -252,9 +249,11 @@ static double ks_normal_p_value(double *values, int n, double *distance)
 static double room_image_mean(const Scene *scene, uint64_t seed, double *std_error)
 {
     PathSettings path = {.max_depth = 6, .shadow_rays = 1};
-    RenderSettings settings = {8, 8, 32, PIXEL_RANDOM, 0, seed, 0, "test"};
+    RenderSettings settings = {.image = {.width = 8, .height = 8, .spp = 32,
+                                         .sampling = PIXEL_RANDOM, .seed = seed},
+                               .label = "test"};
     RenderResult result;
-    assert_int_equal(render(scene, &settings, path_radiance, &path, &result), 0);
+    assert_int_equal(render(scene, &settings, path_direct_radiance, &path, &result), 0);
     double mean;
     measure_image_mean(&result.image, &result.average_std_error, &mean, std_error);
     render_result_free(&result);
@@ -263,7 +262,6 @@ static double room_image_mean(const Scene *scene, uint64_t seed, double *std_err
 
 static void test_image_mean_z_scores_are_standard_normal(void **state)
 {
-    (void)state;
     Scene scene;
     char error[256];
     assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
@@ -288,7 +286,6 @@ static void test_image_mean_z_scores_are_standard_normal(void **state)
  * scaled by 1.5 or shifted by 0.25 fail (p < 0.01). */
 static void test_ks_test_has_power(void **state)
 {
-    (void)state;
     double normal[400], scaled[400], shifted[400], distance;
     Rng rng = rng_for_sample(5, 5, 5);
     for (int i = 0; i < 400; i++) {
@@ -310,7 +307,6 @@ static void test_ks_test_has_power(void **state)
  *     0.25 (5 / 0.01 + 1 / 1.01) / 6. */
 static void test_error_estimate_by_hand(void **state)
 {
-    (void)state;
     const float values[] = {1, 2, 0, 0, 0, 0}, truth[] = {0, 0, 0, 0, 0, 1};
     const float errors[] = {0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f};
     Image image = image_of(2, 1, values), reference = image_of(2, 1, truth);
@@ -340,7 +336,6 @@ static void test_error_estimate_by_hand(void **state)
  * share 0 (not 0 / 0). */
 static void test_error_estimate_below_reference_noise(void **state)
 {
-    (void)state;
     const float values[] = {0.1f, 0.1f, 0.1f}, truth[] = {0, 0, 0}, errors[] = {1, 1, 1};
     Image image = image_of(1, 1, values), reference = image_of(1, 1, truth);
     Image reference_error = image_of(1, 1, errors);
@@ -354,11 +349,10 @@ static void test_error_estimate_below_reference_noise(void **state)
     image_free(&reference_error);
 }
 
-/* Images of different sizes are not compared (issue 9, case 18: a 1 x 1 cached reference
- * was read past its end): -1 and NaN, from both functions. */
+/* Images of different sizes are not compared (a 1 x 1 reference in the cache must not
+ * be read past its end): -1 and NaN, from both functions. */
 static void test_error_of_mismatched_sizes(void **state)
 {
-    (void)state;
     const float six[] = {0, 0, 0, 0, 0, 0};
     Image two = image_of(2, 1, six), one = image_of(1, 1, six), tall = image_of(1, 2, six);
     ErrorEstimate e;
@@ -387,7 +381,6 @@ static double gaussian(Rng *rng)
  * planted bug) the MSE reads 0.05: five times the truth. */
 static void test_error_estimate_removes_reference_variance(void **state)
 {
-    (void)state;
     const int side = 200;
     Image image = image_new(side, side), reference = image_new(side, side);
     Image reference_error = image_new(side, side);
@@ -418,7 +411,6 @@ static void test_error_estimate_removes_reference_variance(void **state)
  * corrected relative MSE is not positive, efficiency cannot be measured: NaN. */
 static void test_fill_row(void **state)
 {
-    (void)state;
     const float values[] = {1.0f, 0.5f, 0.0f, 2.0f, 0.25f, 0.0f};
     const float truth[] = {0.5f, 0.5f, 0.0f, 1.0f, 0.25f, 0.5f};
     const float errors[] = {0.1f, 0.1f, 0.1f, 0.1f, 0.1f, 0.1f};
@@ -454,7 +446,6 @@ static void test_fill_row(void **state)
  * error. */
 static void test_summarise_runs(void **state)
 {
-    (void)state;
     RunSummary s;
     const double values[] = {3, 1, 4, 1, 5};
     assert_int_equal(measure_summarise_runs(values, 5, &s), 0);
@@ -489,7 +480,6 @@ static void test_summarise_runs(void **state)
  * for any alpha. */
 static void test_roulette_variance_infinite(void **state)
 {
-    (void)state;
     assert_true(measure_roulette_variance_infinite(0.25, 0.8));
     assert_true(measure_roulette_variance_infinite(0.01, 0.8));
     assert_true(measure_roulette_variance_infinite(0.25, 0.5));
@@ -505,7 +495,6 @@ static void test_roulette_variance_infinite(void **state)
  * "a" and "foobar" have their known hashes. */
 static void test_hash_vectors(void **state)
 {
-    (void)state;
     assert_true(measure_hash(MEASURE_HASH_START, "", 0) == 0xcbf29ce484222325ULL);
     assert_true(measure_hash(MEASURE_HASH_START, "a", 1) == 0xaf63dc4c8601ec8cULL);
     assert_true(measure_hash(MEASURE_HASH_START, "foobar", 6) == 0x85944171f73967e8ULL);
@@ -515,7 +504,6 @@ static void test_hash_vectors(void **state)
  * key can be built from a scene file and a settings text without concatenating them. */
 static void test_hash_chains(void **state)
 {
-    (void)state;
     uint64_t foo = measure_hash(MEASURE_HASH_START, "foo", 3);
     assert_true(measure_hash(foo, "bar", 3) == measure_hash(MEASURE_HASH_START, "foobar", 6));
     assert_true(measure_hash(foo, "bar", 3) != measure_hash(MEASURE_HASH_START, "barfoo", 6));
@@ -526,7 +514,6 @@ static char scratch_dir[64], scratch_path[4300];
 
 static int make_scratch(void **state)
 {
-    (void)state;
     strcpy(scratch_dir, "/tmp/test_measure_XXXXXX");
     return mkdtemp(scratch_dir) ? 0 : -1;
 }
@@ -545,7 +532,6 @@ static const char *INFO_FILE = "0123456789abcdef.txt";
 
 static int remove_scratch(void **state)
 {
-    (void)state;
     const char *names[] = {MEAN_FILE, STD_ERROR_FILE, INFO_FILE, "bytes"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
         remove(in_scratch(names[i]));
@@ -578,7 +564,6 @@ static void assert_empty(const Reference *reference)
  * its standard errors. The files are named by the key in 16 hex digits. */
 static void test_reference_round_trip(void **state)
 {
-    (void)state;
     Reference saved = sample_reference();
     assert_int_equal(measure_save_reference(scratch_dir, KEY, &saved), 0);
     assert_int_equal(access(in_scratch(MEAN_FILE), R_OK), 0);
@@ -608,7 +593,6 @@ static void test_reference_round_trip(void **state)
  * Reference held garbage before. */
 static void test_missing_reference(void **state)
 {
-    (void)state;
     Reference loaded;
     memset(&loaded, 0x5a, sizeof loaded);
     assert_int_equal(measure_load_reference(scratch_dir, KEY, 3, 2, &loaded), -1);
@@ -670,7 +654,6 @@ static void garble_info(void)
  * failure must have been freed. */
 static void test_broken_reference(void **state)
 {
-    (void)state;
     void (*damages[])(void) = {remove_info, garble_info, truncate_mean, truncate_std_error,
                                mismatch_std_error, replace_by_one_pixel};
     for (size_t i = 0; i < sizeof damages / sizeof damages[0]; i++) {
@@ -685,7 +668,6 @@ static void test_broken_reference(void **state)
 /* Saving into a directory that does not exist fails with -1 rather than crashing. */
 static void test_save_into_missing_directory(void **state)
 {
-    (void)state;
     Reference saved = sample_reference();
     assert_int_equal(measure_save_reference(in_scratch("no_such_dir"), KEY, &saved), -1);
     measure_reference_free(&saved);
@@ -696,7 +678,6 @@ static void test_save_into_missing_directory(void **state)
  * the entry behind: not the mean image, not the .txt. */
 static void test_failed_save_leaves_nothing(void **state)
 {
-    (void)state;
     assert_int_equal(mkdir(in_scratch(STD_ERROR_FILE), 0700), 0);
     Reference saved = sample_reference();
     assert_int_equal(measure_save_reference(scratch_dir, KEY, &saved), -1);

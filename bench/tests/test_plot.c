@@ -21,9 +21,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "check.h"
+#include "assert_close.h"
 #include "font_fixture.h"
 #include "plot.h"
+#include "rng.h"
 
 static const Vec3 WHITE = {1, 1, 1}, RED = {0.9, 0.1, 0.1}, BLUE = {0.1, 0.2, 0.9};
 static const Vec3 GRID = {0.75, 0.75, 0.75}, BORDER = {0.5, 0.5, 0.5};
@@ -84,7 +85,6 @@ static PlotLayout log_layout_of(const double *x, const double *y, int count)
  * bars' ends count. */
 static void test_log_range_by_hand(void **state)
 {
-    (void)state;
     const double x[] = {0.03, 2.0, 450.0}, y[] = {0.002, 0.04, 0.5};
     PlotLayout layout = log_layout_of(x, y, 3);
     assert_range(&layout, 0.02, 500, 0.002, 0.5);
@@ -151,7 +151,6 @@ static void assert_tight(double low, double high, double min, double max)
  * always enclose every point, tightly, and their ends are 1-2-5 values. */
 static void test_log_range_encloses_points(void **state)
 {
-    (void)state;
     for (int trial = 0; trial < 200; trial++) {
         Rng rng = rng_for_sample(2024, 0, (uint64_t)trial);
         int count = 1 + (int)(6 * rng_uniform(&rng));
@@ -304,7 +303,6 @@ static void check_y_ticks(const Image *image, const PlotLayout *layout, PlotScal
  * 0.2, 0.5 and 1 (they have room). */
 static void test_ticks_at_decades_for_a_given_range(void **state)
 {
-    (void)state;
     const double x[] = {0.01, 10}, y[] = {0.15, 0.8};
     PlotSeries series = {.x = x, .y = y, .count = 2, .colour = BLUE, .markers = 1};
     Plot plot = {{NULL, PLOT_LOG, 1e-3, 1e2, 0}, {NULL, PLOT_LOG, 0.1, 1, 0}, &series, 1, 0};
@@ -325,7 +323,6 @@ static void test_ticks_at_decades_for_a_given_range(void **state)
  * overlapping. Far from 0.0001 to 100000 the numbers are written like 1e-5. */
 static void test_many_decades_thin_out(void **state)
 {
-    (void)state;
     Plot plot = {{NULL, PLOT_LOG, 1e-6, 1e6, 0}, {NULL, PLOT_LOG, 1e-6, 1e6, 0}, NULL, 0, 0};
     PlotLayout layout;
     Image image = draw(&plot, 200, 200, &layout);
@@ -356,7 +353,6 @@ static void test_many_decades_thin_out(void **state)
  * multiples around the data. */
 static void test_linear_ticks(void **state)
 {
-    (void)state;
     const double x[] = {0, 45, 90}, y[] = {0.04, 0.1, 1.0};
     PlotSeries series = {.x = x, .y = y, .count = 3, .colour = RED};
     Plot plot = {{"angle", PLOT_LINEAR, 0, 90, 15}, {"R", PLOT_LINEAR, 0, 1, 0.25}, &series, 1, 0};
@@ -395,7 +391,6 @@ static void test_linear_ticks(void **state)
  * the polyline passes through the middle between points (on log and linear axes). */
 static void test_points_where_the_mapping_puts_them(void **state)
 {
-    (void)state;
     const double x[] = {0.03, 2.0, 450.0}, y[] = {0.002, 0.04, 0.5};
     for (int scale = 0; scale < 2; scale++) {
         PlotScale kind = scale ? PLOT_LOG : PLOT_LINEAR;
@@ -433,7 +428,6 @@ static int coloured_in_column(const Image *image, int col, int top, int bottom, 
  * bar. */
 static void test_error_bars_span_the_interval(void **state)
 {
-    (void)state;
     const double x[] = {0.3, 1.0, 3.0}, y[] = {0.1, 0.1, 0.1};
     const double low[] = {0.03, -1.0, NAN}, high[] = {0.4, 0.2, 0.5};
     PlotSeries series = {.x = x, .y = y, .y_low = low, .y_high = high, .count = 3,
@@ -467,7 +461,6 @@ static void test_error_bars_span_the_interval(void **state)
  * value, NaN; on a given range, points beyond it. */
 static void test_points_left_out_are_counted(void **state)
 {
-    (void)state;
     const double x[] = {0.1, 0.0, 10.0, -1.0, 1.0, NAN, 0.3};
     const double y[] = {1.0, 2.0, INFINITY, 3.0, 0.5, 1.0, 0.7};
     const double kept_x[] = {0.1, 1.0, 0.3}, kept_y[] = {1.0, 0.5, 0.7};
@@ -512,7 +505,6 @@ static int is_colour_in(const Image *image, const int box[4], Vec3 colour)
  * there is no legend. */
 static void test_legend_present(void **state)
 {
-    (void)state;
     const double x[] = {1, 3, 9}, y[] = {9, 9.5, 9.8}, x2[] = {1, 9}, y2[] = {8, 9};
     PlotSeries series[2] = {
         {.label = "M=20, rr=0.9", .x = x, .y = y, .count = 3, .colour = RED, .markers = 1},
@@ -554,7 +546,6 @@ static void test_legend_present(void **state)
  * centre, its colour on its ring) instead of filled. */
 static void test_infinite_variance_stands_out(void **state)
 {
-    (void)state;
     const double x[] = {1, 9}, y[] = {5, 5};
     for (int mark = 0; mark < 2; mark++) {
         PlotSeries series = {.x = x, .y = y, .count = 2, .colour = RED, .markers = 1,
@@ -588,7 +579,6 @@ static void test_infinite_variance_stands_out(void **state)
  * the numbers for x), and nothing is drawn outside [0, 1]. */
 static void test_background_and_titles(void **state)
 {
-    (void)state;
     Plot plot = {{"time (s)", PLOT_LOG, 0.01, 1, 0}, {"RMSE", PLOT_LOG, 0.1, 10, 0}, NULL, 0, 0};
     PlotLayout layout;
     Image image = draw(&plot, 300, 200, &layout);
@@ -612,7 +602,6 @@ static void test_background_and_titles(void **state)
  * axes, up to 1e300 in size on linear ones), ticks far finer than the range. */
 static void test_extremes_are_safe(void **state)
 {
-    (void)state;
     const double x[] = {1e-300, 1e300, 1e-320, 1e308, 3.0}, y[] = {1e300, 1e-300, 5.0, 5.0, 4.0};
     const double low[] = {-1e308, 0.0, NAN, 1.0, 3.0}, high[] = {1e308, INFINITY, 1.0, 2.0, 5.0};
     PlotSeries series = {.label = "extreme", .x = x, .y = y, .y_low = low, .y_high = high,

@@ -1,16 +1,18 @@
-/* test_render.c (bench, chapter 1): Tests of the pixel loop (lib/render.c).
+/* test_render.c (bench, chapter 1): the threaded renderer (renderer.h) around the pixel
+ * sample of the lesson (render_sample, lib/render.h).
  *
  * - Determinism: the room rendered with 1, 2 and 7 threads is the same image bit for
- *   bit, with random positions and with sub-pixels (every sample has its own
- *   generator, every pixel its own stratum start, and every pixel sums its samples in
- *   order; SPEC §9). Chapter 1 renders it with Whitted; from chapter 6 on, with the path
- *   tracer and every option it has.
+ *   bit (every sample has its own generator, every pixel its own stratum start, and
+ *   every pixel sums its samples in order), so a result never depends on the machine.
+ *   Chapter 1 renders it with Whitted through each pixel's centre; from chapter 2 on,
+ *   also with random positions and with sub-pixels; from chapter 6 on, also with the
+ *   path tracer with shadow rays, exact Fresnel and roulette.
  * - Estimates: with an estimator that returns a known value per sample, each pixel is
  *   the mean of its samples and its standard errors (per channel, and of the channel
  *   mean) are the textbook ones, also for a bright pixel of small spread, where only a
- *   numerically stable update (Welford's, chapter 1) keeps them.
- * - Non-finite samples (SPEC §7) are dropped and counted; the pixel is the mean of
- *   the others.
+ *   numerically stable update (Welford's) keeps them.
+ * - Non-finite samples are dropped and counted (no image may carry a NaN or an
+ *   infinity); the pixel is the mean of the others.
  * - An interrupted render (SIGINT) stops early, and every pixel is still the mean of
  *   the samples it actually received.
  */
@@ -20,32 +22,37 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include <math.h>
 #include <signal.h>
 #include <string.h>
 
+#include "renderer.h"
 #include "scene_file.h"
-#if CHAPTER >= 6
-#include "path.h"
-#else
 #include "whitted.h"
+#if CHAPTER >= 6
+#include "path_roulette.h"
 #endif
 
-/* Render the room with 1, 2 and 7 threads: the same images bit for bit, and the same
- * ray counts: one camera ray per sample, and bounce and shadow rays (the room has
- * mirrors and a light), counted in full whichever thread traced them. The one-thread
- * result is left in *first. */
-static void assert_same_for_any_thread_count(const Scene *scene, Estimator estimate,
+#define SIDE 48
+
+/* Render `image` (its size SIDE x SIDE) with 1, 2 and 7 threads: the same images bit
+ * for bit, and the same ray counts: one camera ray per sample, and bounce and shadow
+ * rays (the room has mirrors and a light), counted in full whichever thread traced them.
+ * The one-thread result is left in *first. */
+static void assert_same_for_any_thread_count(const Scene *scene, ImageSettings image,
+                                             Estimator estimate,
                                              const void *estimator_settings,
-                                             PixelSampling sampling, RenderResult *first)
+                                             RenderResult *first)
 {
     const int threads[] = {1, 2, 7};
-    size_t bytes = 3 * 48 * 48 * sizeof(float);
+    size_t bytes = 3 * SIDE * SIDE * sizeof(float);
+    uint64_t samples = (uint64_t)SIDE * SIDE * (uint64_t)image.spp;
     RenderResult results[3];
     for (int i = 0; i < 3; i++) {
-        RenderSettings settings = {48, 48, 3, sampling, threads[i], 2019, 0, "test"};
+        RenderSettings settings = {.image = image, .threads = threads[i], .label = "test"};
         assert_int_equal(render(scene, &settings, estimate, estimator_settings, &results[i]), 0);
         assert_int_equal(results[i].threads, threads[i]);
-        assert_true(results[i].samples == 48 * 48 * 3 && results[i].rays.camera == 48 * 48 * 3);
+        assert_true(results[i].samples == samples && results[i].rays.camera == samples);
     }
     assert_true(results[0].rays.bounce > 0 && results[0].rays.shadow > 0);
     for (int i = 1; i < 3; i++) {
@@ -60,42 +67,79 @@ static void assert_same_for_any_thread_count(const Scene *scene, Estimator estim
     *first = results[0];
 }
 
+static void load(const char *path, Scene *scene)
+{
+    char error[256];
+    if (scene_load(path, scene, error, sizeof error) != 0)
+        fail_msg("%s", error);
+}
+
+/* Whitted through each pixel's centre (chapter 1's only sampling; the default later). */
 static void test_same_image_for_any_thread_count(void **state)
 {
-    (void)state;
     Scene scene;
-    char error[256];
-#if CHAPTER >= 6
-    const char *scene_file = "scenes/room.scene";
-    Estimator estimate = path_radiance;
-    PathSettings path = {.max_depth = 64, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
-                         .rr_survival = 0.5};
-#else
-    const char *scene_file = "scenes/room_whitted.scene";
-    Estimator estimate = whitted_radiance;
-    WhittedSettings path = {10};
-#endif
-    assert_int_equal(scene_load(scene_file, &scene, error, sizeof error), 0);
+    load("scenes/room_whitted.scene", &scene);
+    WhittedSettings whitted = {10};
+    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 3, .seed = 2019};
+    RenderResult first;
+    assert_same_for_any_thread_count(&scene, image, whitted_radiance, &whitted, &first);
+    render_result_free(&first);
+    scene_free(&scene);
+}
+
+#if CHAPTER >= 2
+/* With random positions and with sub-pixels, `estimate` gives the same image for any
+ * thread count; a different seed gives a different image, so the comparison is not
+ * vacuous. */
+static void assert_sampled_same_for_any_thread_count(const Scene *scene, Estimator estimate,
+                                                     const void *estimator_settings)
+{
+    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 3, .seed = 2019,
+                           .sampling = PIXEL_RANDOM};
     RenderResult random, subpixels;
-    assert_same_for_any_thread_count(&scene, estimate, &path, PIXEL_RANDOM, &random);
-    assert_same_for_any_thread_count(&scene, estimate, &path, PIXEL_SUBPIXELS, &subpixels);
-    /* A different seed gives a different image: the test above is not vacuous. */
-    size_t bytes = 3 * 48 * 48 * sizeof(float);
-    RenderSettings other = {48, 48, 3, PIXEL_RANDOM, 2, 2020, 0, "test"};
+    assert_same_for_any_thread_count(scene, image, estimate, estimator_settings, &random);
+    image.sampling = PIXEL_SUBPIXELS;
+    assert_same_for_any_thread_count(scene, image, estimate, estimator_settings, &subpixels);
+    size_t bytes = 3 * SIDE * SIDE * sizeof(float);
+    image.sampling = PIXEL_RANDOM;
+    image.seed = 2020;
+    RenderSettings other = {.image = image, .threads = 2, .label = "test"};
     RenderResult different;
-    assert_int_equal(render(&scene, &other, estimate, &path, &different), 0);
+    assert_int_equal(render(scene, &other, estimate, estimator_settings, &different), 0);
     assert_true(memcmp(random.image.pixels, different.image.pixels, bytes) != 0);
     render_result_free(&random);
     render_result_free(&subpixels);
     render_result_free(&different);
+}
+
+/* Whitted at random points of each pixel and on sub-pixels (chapter 2). */
+static void test_same_sampled_image_for_any_thread_count(void **state)
+{
+    Scene scene;
+    load("scenes/room_whitted.scene", &scene);
+    WhittedSettings whitted = {10};
+    assert_sampled_same_for_any_thread_count(&scene, whitted_radiance, &whitted);
     scene_free(&scene);
 }
+#endif
+
+#if CHAPTER >= 6
+/* The path tracer, which draws many numbers per sample and ends paths at random. */
+static void test_same_path_traced_image_for_any_thread_count(void **state)
+{
+    Scene scene;
+    load("scenes/room.scene", &scene);
+    PathSettings path = {.max_depth = 64, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
+                         .rr_survival = 0.5};
+    assert_sampled_same_for_any_thread_count(&scene, path_roulette_radiance, &path);
+    scene_free(&scene);
+}
+#endif
 
 /* (u, 2u, 1) with u the sample's first random number. */
 static Vec3 sample_number(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                           RayCounts *counts)
 {
-    (void)scene, (void)ray, (void)settings, (void)counts;
     double u = rng_uniform(rng);
     return vec3(u, 2.0 * u, 1.0);
 }
@@ -106,11 +150,12 @@ static Vec3 sample_number(const Scene *scene, Ray ray, Rng *rng, const void *set
  * 0.75 of it. */
 static void test_pixel_is_mean_of_samples(void **state)
 {
-    (void)state;
     Scene scene;
     scene_init(&scene);
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
-    RenderSettings settings = {4, 4, 5, PIXEL_CENTRE, 2, 77, 0, "test"};
+    /* Through each pixel's centre: the sampling draws no number before the estimator. */
+    RenderSettings settings = {.image = {.width = 4, .height = 4, .spp = 5, .seed = 77},
+                               .threads = 2, .label = "test"};
     RenderResult result;
     assert_int_equal(render(&scene, &settings, sample_number, NULL, &result), 0);
     for (int pixel = 0; pixel < 16; pixel++) {
@@ -143,24 +188,23 @@ static void test_pixel_is_mean_of_samples(void **state)
 static Vec3 bright_sample(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                           RayCounts *counts)
 {
-    (void)scene, (void)ray, (void)settings, (void)counts;
     double u = rng_uniform(rng);
     return vec3(BRIGHT + u, u, BRIGHT + u);
 }
 
-/* Welford's method (render.h) keeps the spread of a bright pixel: its standard error
+/* Welford's method (renderer.h) keeps the spread of a bright pixel: its standard error
  * is that of u, within 0.1%, computed here by the two-pass formula (mean first, then
  * squared deviations from it). The textbook sum of squares, sum x^2 - n mean^2 with
  * x = 10^9 + u, subtracts numbers near 10^20 whose rounding (about 10^4 each) swamps
  * the variance 1/12: with it the test fails. 200 samples per pixel. */
 static void test_variance_of_a_bright_pixel(void **state)
 {
-    (void)state;
     Scene scene;
     scene_init(&scene);
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
     const int spp = 200;
-    RenderSettings settings = {4, 4, spp, PIXEL_CENTRE, 2, 31, 0, "test"};
+    RenderSettings settings = {.image = {.width = 4, .height = 4, .spp = spp, .seed = 31},
+                               .threads = 2, .label = "test"};
     RenderResult result;
     assert_int_equal(render(&scene, &settings, bright_sample, NULL, &result), 0);
     for (int pixel = 0; pixel < 16; pixel++) {
@@ -190,18 +234,17 @@ static void test_variance_of_a_bright_pixel(void **state)
 static Vec3 sometimes_nonfinite(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                                 RayCounts *counts)
 {
-    (void)scene, (void)ray, (void)settings, (void)counts;
     uint32_t r = rng_next(rng) % 3;
     return r == 0 ? vec3(NAN, 1, 1) : r == 1 ? vec3(1, INFINITY, 1) : vec3(0.5, 0.5, 0.5);
 }
 
 static void test_nonfinite_samples_dropped_and_counted(void **state)
 {
-    (void)state;
     Scene scene;
     scene_init(&scene);
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
-    RenderSettings settings = {8, 8, 30, PIXEL_CENTRE, 2, 5, 0, "test"};
+    RenderSettings settings = {.image = {.width = 8, .height = 8, .spp = 30, .seed = 5},
+                               .threads = 2, .label = "test"};
     RenderResult result;
     assert_int_equal(render(&scene, &settings, sometimes_nonfinite, NULL, &result), 0);
     uint64_t expected = 0;
@@ -220,7 +263,6 @@ static void test_nonfinite_samples_dropped_and_counted(void **state)
 static Vec3 interrupt_midway(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                              RayCounts *counts)
 {
-    (void)scene, (void)ray, (void)rng, (void)counts;
     const int *pass_to_interrupt = settings;
     static int calls;
     if (++calls == 64 * 64 * *pass_to_interrupt + 100)
@@ -230,12 +272,12 @@ static Vec3 interrupt_midway(const Scene *scene, Ray ray, Rng *rng, const void *
 
 static void test_interrupt_keeps_a_normalised_image(void **state)
 {
-    (void)state;
     Scene scene;
     scene_init(&scene);
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
     render_install_interrupt();
-    RenderSettings settings = {64, 64, 1000, PIXEL_CENTRE, 1, 5, 0, "test"};
+    RenderSettings settings = {.image = {.width = 64, .height = 64, .spp = 1000, .seed = 5},
+                               .threads = 1, .label = "test"};
     int pass_to_interrupt = 3;
     RenderResult result;
     assert_int_equal(render(&scene, &settings, interrupt_midway, &pass_to_interrupt, &result), 0);
@@ -252,6 +294,12 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_same_image_for_any_thread_count),
+#if CHAPTER >= 2
+        cmocka_unit_test(test_same_sampled_image_for_any_thread_count),
+#endif
+#if CHAPTER >= 6
+        cmocka_unit_test(test_same_path_traced_image_for_any_thread_count),
+#endif
         cmocka_unit_test(test_pixel_is_mean_of_samples),
         cmocka_unit_test(test_variance_of_a_bright_pixel),
         cmocka_unit_test(test_nonfinite_samples_dropped_and_counted),

@@ -1,4 +1,4 @@
-/* test_render_batches.c (bench, chapter 7): Tests of the batched render (lib/render_batches.c).
+/* test_render_batches.c (bench, chapter 7): the batched render (render_batches.h).
  *
  * - Its standard errors are unbiased: over many independent batched renders of an image
  *   with an edge through its pixels and noise on top, the mean of the squared standard
@@ -14,6 +14,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include <math.h>
 #include <stdlib.h>
 
 #include "render_batches.h"
@@ -24,7 +25,6 @@
 static Vec3 edge_and_noise(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                            RayCounts *counts)
 {
-    (void)scene, (void)settings, (void)counts;
     double edge = ray.dir.x + 0.37 * ray.dir.y - 0.11 * ray.dir.z > 0.0 ? 1.0 : 0.0;
     double u = rng_uniform(rng);
     return vec3(edge, u, edge + u);
@@ -33,7 +33,6 @@ static Vec3 edge_and_noise(const Scene *scene, Ray ray, Rng *rng, const void *se
 static Vec3 constant(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                      RayCounts *counts)
 {
-    (void)scene, (void)ray, (void)rng, (void)settings, (void)counts;
     return vec3(1, 2, 3);
 }
 
@@ -63,7 +62,9 @@ static void variance_and_claim(int batches, int spp, double variance[4], double 
     assert_non_null(squares);
     assert_non_null(claims);
     for (int k = 1; k <= RENDERS; k++) {
-        RenderSettings settings = {SIDE, SIDE, spp, PIXEL_SUBPIXELS, 1, (uint64_t)k, 0, "test"};
+        RenderSettings settings = {.image = {.width = SIDE, .height = SIDE, .spp = spp,
+                                             .sampling = PIXEL_SUBPIXELS, .seed = (uint64_t)k},
+                                   .threads = 1, .label = "test"};
         RenderResult result;
         if (batches > 0)
             assert_int_equal(render_batches(&scene, &settings, batches, edge_and_noise, NULL, &result), 0);
@@ -97,7 +98,6 @@ static void variance_and_claim(int batches, int spp, double variance[4], double 
  * renders); a batch estimate divided by B instead of B - 1 claims 3/4 of the variance. */
 static void test_standard_errors_unbiased(void **state)
 {
-    (void)state;
     double variance[4], claimed[4];
     variance_and_claim(4, 32, variance, claimed);
     for (int c = 0; c < 4; c++) {
@@ -113,7 +113,6 @@ static void test_standard_errors_unbiased(void **state)
  * independent samples, and its errors are right. */
 static void test_one_stratified_render_overstates(void **state)
 {
-    (void)state;
     double variance[4], claimed[4];
     variance_and_claim(0, 32, variance, claimed);
     print_message("    one render: red claimed / variance %.2f, green %.3f\n",
@@ -124,9 +123,10 @@ static void test_one_stratified_render_overstates(void **state)
 
 static void test_bookkeeping(void **state)
 {
-    (void)state;
     Scene scene = tiny_scene();
-    RenderSettings settings = {SIDE, SIDE, 12, PIXEL_SUBPIXELS, 2, 5, 0, "test"};
+    RenderSettings settings = {.image = {.width = SIDE, .height = SIDE, .spp = 12,
+                                         .sampling = PIXEL_SUBPIXELS, .seed = 5},
+                               .threads = 2, .label = "test"};
     RenderResult result;
     assert_int_equal(render_batches(&scene, &settings, 3, constant, NULL, &result), 0);
     assert_true(result.samples == SIDE * SIDE * 12 && result.rays.camera == SIDE * SIDE * 12);

@@ -1,9 +1,9 @@
-/* test_stats.c (bench, chapter 1): what a render costs: the monotonic clock and the ray counts (stats.h,
- * SPEC §6, chapter 1).
+/* test_stats.c (bench, chapter 1): what a render costs: the monotonic clock and the ray
+ * counts (stats.h; RayCounts, lib/render.h).
  *
  * The clock must never run backwards and must measure a known sleep; processor time
- * (chapter 8) must count work and not sleep; ray counts from
- * several threads must add up per purpose, and their total must be the sum of the three.
+ * (chapter 8's time budget) must count work and not sleep; ray counts from several
+ * threads must add up per purpose, and their total must be the sum of the three.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -20,7 +20,6 @@
  * time adjustments, so a render's duration is never negative. */
 static void test_clock_is_monotonic(void **state)
 {
-    (void)state;
     double previous = stats_now();
     assert_true(isfinite(previous));
     for (int i = 0; i < 100000; i++) {
@@ -35,7 +34,6 @@ static void test_clock_is_monotonic(void **state)
  * seconds, not milliseconds or ticks. */
 static void test_clock_measures_a_sleep(void **state)
 {
-    (void)state;
     struct timespec twenty_ms = {0, 20000000};
     double start = stats_now();
     assert_int_equal(nanosleep(&twenty_ms, NULL), 0);
@@ -49,7 +47,6 @@ static void test_clock_measures_a_sleep(void **state)
  * other threads, and there are none) and at most the wall-clock time it took. */
 static void test_processor_time(void **state)
 {
-    (void)state;
     struct timespec twenty_ms = {0, 20000000};
     double cpu = stats_cpu_now();
     assert_int_equal(nanosleep(&twenty_ms, NULL), 0);
@@ -69,7 +66,6 @@ static void test_processor_time(void **state)
  * bounce + shadow. Counts beyond 32 bits (a long render) do not wrap. */
 static void test_ray_counts_add_and_total(void **state)
 {
-    (void)state;
     RayCounts sum = {0, 0, 0};
     const RayCounts threads[] = {{100, 250, 30}, {7, 0, 1}, {0, 5000000000ULL, 0}};
     for (int i = 0; i < 3; i++)

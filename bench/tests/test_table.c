@@ -1,5 +1,5 @@
-/* test_table.c (bench, chapter 1): the cost/accuracy table on the terminal and as CSV (table.h, SPEC §6,
- * chapter 1).
+/* test_table.c (bench, chapter 1): the cost/accuracy table on the terminal and as CSV
+ * (table.h).
  *
  * The CSV is read back with a small RFC 4180 reader (quoted fields, "" for a quote) and
  * every number compared with the row it came from; the printed table is captured in
@@ -18,7 +18,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "check.h"
+#include "assert_close.h"
 #include "table.h"
 
 #define FIELDS 18
@@ -43,7 +43,6 @@ static void sample_rows(TableRow rows[2])
  * rather than infinity. */
 static void test_mrays_per_second(void **state)
 {
-    (void)state;
     TableRow rows[2];
     sample_rows(rows);
     assert_close(table_mrays_per_second(&rows[0]), 2.0, 1e-15);
@@ -99,7 +98,6 @@ static char scratch_dir[64], csv_path[128];
 
 static int make_scratch(void **state)
 {
-    (void)state;
     strcpy(scratch_dir, "/tmp/test_table_XXXXXX");
     if (!mkdtemp(scratch_dir))
         return -1;
@@ -109,7 +107,6 @@ static int make_scratch(void **state)
 
 static int remove_scratch(void **state)
 {
-    (void)state;
     remove(csv_path);
     return rmdir(scratch_dir);
 }
@@ -140,7 +137,6 @@ static int csv_round_trip(const TableRow *rows, int count, char lines[][FIELDS][
  * and empty error fields where there was no reference. */
 static void test_csv_values(void **state)
 {
-    (void)state;
     TableRow rows[2];
     sample_rows(rows);
     char lines[4][FIELDS][FIELD_SIZE];
@@ -194,7 +190,6 @@ static void test_csv_values(void **state)
  * back as one field each. */
 static void test_csv_quotes_text(void **state)
 {
-    (void)state;
     TableRow rows[2];
     sample_rows(rows);
     strcpy(rows[0].panel, "Figure 9, left");
@@ -209,7 +204,6 @@ static void test_csv_quotes_text(void **state)
 /* No rows: the header alone. A directory that does not exist: -1, nothing written. */
 static void test_csv_edge_cases(void **state)
 {
-    (void)state;
     char lines[4][FIELDS][FIELD_SIZE];
     assert_int_equal(csv_round_trip(NULL, 0, lines), 1);
     assert_string_equal(lines[0][0], "panel");
@@ -273,7 +267,6 @@ static const char *word_from_end(const char *line, int n, char word[32])
  * the note saying why its error cannot be pinned down follows the table. */
 static void test_print_rows(void **state)
 {
-    (void)state;
     TableRow rows[2];
     sample_rows(rows);
     Printed printed = print_rows(rows, 2);
@@ -303,7 +296,6 @@ static void test_print_rows(void **state)
  * each number sits under its heading. */
 static void test_print_long_names_keep_columns(void **state)
 {
-    (void)state;
     TableRow rows[3];
     sample_rows(rows);
     rows[0].infinite_variance = 0; /* no note under the table: every line is a row */
