@@ -202,13 +202,21 @@ check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 	echo "the clean source of chapters $(CHAPTERS) compiles; chapter 1: $$lines lines; $$markers chapter markers in lib/*.c"
 
 # Each test program is run from the top directory (some read scenes/ and run the chapter
-# programs): first every chapter's own tests in its own snapshot, then all of them in the
-# final one. The last line counts the programs that passed and failed.
+# programs): every chapter's own tests in its own snapshot, and all of them in the final
+# one, as many at a time as there are cores (each writes where no other does). Their
+# output is then printed in that order, and the last line counts the programs that
+# passed and failed.
+TEST_LOGS := $(BUILD)/test-logs
 test: all check-sources
-	@passed=0; failed=0; \
+	@rm -rf $(TEST_LOGS) && mkdir -p $(TEST_LOGS); \
+	printf '%s\n' $(CHAPTER_TESTS) $(FINAL_TESTS) | xargs -P $$(nproc) -I TEST sh -c \
+	    'log=$(TEST_LOGS)/$$(echo TEST | tr / _); \
+	     if CHAPTER_DIR=$(BUILD) TEST > $$log 2>&1; then echo passed; else echo failed; fi > $$log.result'; \
+	passed=0; failed=0; \
 	for t in $(CHAPTER_TESTS) $(FINAL_TESTS); do \
-	    echo "== $$t"; \
-	    if CHAPTER_DIR=$(BUILD) $$t; then passed=$$((passed+1)); \
+	    log=$(TEST_LOGS)/$$(echo $$t | tr / _); \
+	    echo "== $$t"; cat $$log; \
+	    if [ "$$(cat $$log.result)" = passed ]; then passed=$$((passed+1)); \
 	    else failed=$$((failed+1)); echo "FAILED: $$t"; fi; \
 	done; \
 	echo "programs: $$passed passed, $$failed failed"; \

@@ -18,21 +18,38 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "image.h"
 
 #define SMALL "--quiet --size 16"
 #define FEW_SAMPLES "--spp 2 --reference-spp 4"
 
+/* The programs' folder, $CHAPTER_DIR (or build), and this process's own folder for
+ * their output in it, made if needed: test programs may run side by side. */
+static const char *programs(void)
+{
+    return getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
+}
+
+static void scratch(char *folder, size_t size)
+{
+    snprintf(folder, size, "%s/smoke", programs());
+    mkdir(folder, 0777);
+    snprintf(folder, size, "%s/smoke/%d", programs(), (int)getpid());
+    mkdir(folder, 0777);
+}
+
 /* Run one program with SMALL settings and `samples` into a fresh output folder and check its output. */
 static void smoke(const char *name, const char *samples)
 {
-    const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
-    char out[600], command[2048];
-    snprintf(out, sizeof out, "%s/smoke/%s", directory, name);
+    char folder[500], out[600], command[2048];
+    scratch(folder, sizeof folder);
+    snprintf(out, sizeof out, "%s/%s", folder, name);
     snprintf(command, sizeof command, "rm -rf %s && %s/%s " SMALL " %s --out %s", out,
-             directory, name, samples, out);
+             programs(), name, samples, out);
     FILE *pipe = popen(command, "r");
     assert_non_null(pipe);
     char line[4608];
@@ -78,9 +95,9 @@ static void test_chapter3(void **state) { smoke("ch03_shadow_rays", FEW_SAMPLES)
  * do: there the program must not print the room's conclusion. */
 static void test_chapter3_conclusion_follows_the_numbers(void **state)
 {
-    const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
-    char scene[600], command[2400];
-    snprintf(scene, sizeof scene, "%s/smoke/near_lamp.scene", directory);
+    char folder[500], scene[600], command[2400];
+    scratch(folder, sizeof folder);
+    snprintf(scene, sizeof scene, "%s/near_lamp.scene", folder);
     FILE *file = fopen(scene, "w");
     assert_non_null(file);
     fputs("camera 0 0 10  -1 -1 9  1 -1 9  -1 1 9\n"
@@ -90,8 +107,8 @@ static void test_chapter3_conclusion_follows_the_numbers(void **state)
           "quad lamp   -2 -2 1  -2 2 1  2 2 1  2 -2 1\n", file);
     assert_int_equal(fclose(file), 0);
     snprintf(command, sizeof command, "%s/ch03_shadow_rays --quiet --scene %s --depth 2 "
-             "--size 64 --runs 8 --reference-spp 1024 --out %s/smoke/near_lamp", directory,
-             scene, directory);
+             "--size 64 --runs 8 --reference-spp 1024 --out %s/near_lamp", programs(), scene,
+             folder);
     FILE *pipe = popen(command, "r");
     assert_non_null(pipe);
     char line[4608];

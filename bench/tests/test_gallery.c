@@ -90,7 +90,7 @@ static void write_png(const char *name, int width, int height, int pfm_too)
 static void empty_fixture(void)
 {
     const char *build = getenv("CHAPTER_DIR");
-    snprintf(fixture, sizeof fixture, "%s/test_gallery", build ? build : "build");
+    snprintf(fixture, sizeof fixture, "%s/test_gallery.%d", build ? build : "build", (int)getpid());
     mkdir(fixture, 0777);
     DIR *folder = opendir(fixture);
     assert_non_null(folder);
