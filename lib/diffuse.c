@@ -1,5 +1,4 @@
-/* diffuse.c (chapter 2): the diffuse materials in world space: Lambert, and from
- * chapter 5 Oren-Nayar. See diffuse.h. */
+/* diffuse.c (chapter 2): the diffuse materials in world space. See diffuse.h. */
 #include "diffuse.h"
 
 #include "hemisphere.h"

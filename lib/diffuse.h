@@ -1,9 +1,9 @@
 /* diffuse.h (chapter 2): the diffuse materials' BRDF and sampling, in world space.
  *
  * A diffuse surface is sampled by the cosine-weighted hemisphere (hemisphere.h) around
- * its normal, so a sampled direction carries the weight f cos / pdf = rho for Lambert
- * (eq. 8) and, from chapter 5, rho times oren_nayar_factor for Oren-Nayar. The BRDFs
- * themselves work in the local frame, normal +z; this file moves directions into it.
+ * its normal, under which a Lambertian direction carries the weight f cos / pdf = rho
+ * exactly (eq. 8). The BRDFs themselves work in the local frame, normal +z; this file
+ * moves directions into it.
  */
 #ifndef DIFFUSE_H
 #define DIFFUSE_H

@@ -1,8 +1,7 @@
 /* material.h (chapter 1): what a surface does with light, as the scene file declares it.
  *
- * Plain data, so the scene is a flat array of materials; each kind's physics is in its
- * own file: lambert.h, mirror.h, snell.h, schlick.h and, from later chapters,
- * fresnel.h and oren_nayar.h.
+ * Plain data, so the scene is a flat array of materials; each kind's physics is in a
+ * file of its own (mirror.h, snell.h, schlick.h, ...).
  */
 #ifndef MATERIAL_H
 #define MATERIAL_H
@@ -32,8 +31,7 @@ typedef struct {
 #endif
 } Material;
 
-/* The surfaces that scatter diffusely: where shadow rays are sent and paths bounce in
- * random directions. */
+/* The surfaces that scatter diffusely, light arriving from every direction. */
 static inline int material_is_diffuse(const Material *m)
 {
 #if CHAPTER >= 5

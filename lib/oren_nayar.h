@@ -5,8 +5,9 @@
  *     A = 1 - sigma^2 / (2 (sigma^2 + 0.33)),  B = 0.45 sigma^2 / (sigma^2 + 0.09)  (14)
  * alpha = max(theta_i, theta_o), beta = min. Errata: the report prints A without the
  * "1 -" and sin(beta) for tan(beta); corrected, sigma = 0 is Lambert. The angular term
- * is max(0, x_i x_o + y_i y_o) / max(z_i, z_o), with no trigonometry. The model reflects
- * up to 1.5% more than it receives at grazing angles (docs/chapter5.md).
+ * is max(0, x_i x_o + y_i y_o) / max(z_i, z_o), with no trigonometry. Sampled by the
+ * cosine-weighted hemisphere, a direction carries f cos / pdf = rho * oren_nayar_factor.
+ * The model reflects up to 1.5% more than it receives at grazing angles (docs/chapter5.md).
  */
 #ifndef OREN_NAYAR_H
 #define OREN_NAYAR_H

@@ -4,8 +4,8 @@
  * A path from the camera bounces at diffuse surfaces in cosine-weighted directions
  * (diffuse.h), reflects at mirrors and refracts or reflects at glass (glass.h). Its
  * throughput T, the product of f cos / pdf over its bounces, weights the emission it
- * hits. Later chapters add estimators beside this one, each in its own file, built
- * from the helpers declared here; this one stays as their oracle.
+ * hits. The helpers declared here, a path's vertex and its two kinds of bounce, are
+ * what a path tracer is built from.
  */
 #ifndef PATH_H
 #define PATH_H

@@ -3,8 +3,8 @@
  * A pixel's value is the mean of spp samples. Sample s of pixel p traces one camera ray
  * and asks an estimator for the radiance arriving along it; the estimator draws from
  * the sample's own generator, rng_for_sample(seed, p, s), and counts the rays it
- * traces. The estimator is a function, so one loop serves Whitted (whitted.h) and every
- * path tracer of the later chapters.
+ * traces. The estimator is a function, so one loop serves every estimator; Whitted's
+ * (whitted.h) is the first.
  */
 #ifndef RENDER_H
 #define RENDER_H

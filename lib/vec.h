@@ -42,7 +42,7 @@ static inline double vec3_average(Vec3 a) { return (a.x + a.y + a.z) / 3.0; }
 static inline int vec3_is_finite(Vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
 /* Two unit vectors t, b that with the unit vector n form a right-handed orthonormal
- * basis (t, b, n): the local frame in which hemisphere directions are sampled. */
+ * basis (t, b, n): the local frame around a surface normal. */
 void vec3_basis(Vec3 n, Vec3 *t, Vec3 *b);
 
 /* Express a local direction (x along t, y along b, z along n) in world space. */

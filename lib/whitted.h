@@ -5,8 +5,8 @@
  *     L = sum over lights of  rho/pi I cos(theta) / d^2 V;
  * a mirror reflects the ray; glass splits it into a reflected and a refracted ray
  * weighted by Schlick's R and 1 - R; an emitter seen from its front adds its radiance.
- * No interreflection, so no colour bleeding and no soft shadows: the Monte Carlo
- * chapters add those. A path of the tree has at most max_depth rays.
+ * No interreflection, so no colour bleeding and no soft shadows. A path of the tree has
+ * at most max_depth rays.
  */
 #ifndef WHITTED_H
 #define WHITTED_H
