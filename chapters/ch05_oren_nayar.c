@@ -149,8 +149,7 @@ static void find_spheres(const Options *options, const Scene *scene, int rough,
 int main(int argc, char **argv)
 {
     /* Twice the other chapters' reference samples: this image's noise is in its paths,
-     * not at its edges, so the reference's sub-pixels gain nothing here (measured at
-     * 200 x 200: the same noise per sample as random positions). */
+     * not at its edges, so the reference's sub-pixels gain nothing here. */
     ProgramInfo info = {
         "Chapter 5, the Oren-Nayar reflector: reproduces the report's Figure 10 (a rough\n"
         "sphere beside a Lambertian one) and sweeps the roughness sigma.",
