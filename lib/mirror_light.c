@@ -77,7 +77,9 @@ ShadowRay mirror_light_shadow_ray(const Scene *scene, const MirrorPlane *plane, 
         return ray;
     counts->shadow++;
     Hit hit;
-    if (!scene_intersect(scene, ray_spawn(x, n, wi, scene->scale), distance, &hit) ||
+    /* The segment to the image, offset at x as scene_occluded offsets its ends. */
+    Ray to_mirror = ray_spawn(x, n, wi, max2(vec3_max_abs(x), vec3_max_abs(image)));
+    if (!scene_intersect(scene, to_mirror, distance, &hit) ||
         hit.triangle < 0)
         return ray;
     const Material *mirror = &scene->materials[hit.material];

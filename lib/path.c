@@ -53,7 +53,7 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                                                       : path_specular(&x, ray.dir, s, rng, &direction);
         throughput = vec3_mul(throughput, weight);
         counts->bounce++;
-        ray = ray_spawn(x.hit.point, x.normal, direction, scene->scale);
+        ray = ray_spawn(x.hit.point, x.normal, direction, x.hit.scale);
     }
     return radiance;
 }

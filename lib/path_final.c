@@ -54,7 +54,7 @@ Vec3 path_final_radiance(const Scene *scene, Ray ray, Rng *rng, const void *sett
         }
         throughput = vec3_mul(throughput, weight);
         counts->bounce++;
-        ray = ray_spawn(x.hit.point, x.normal, direction, scene->scale);
+        ray = ray_spawn(x.hit.point, x.normal, direction, x.hit.scale);
     }
     return radiance;
 }

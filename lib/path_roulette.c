@@ -34,7 +34,7 @@ Vec3 path_roulette_radiance(const Scene *scene, Ray ray, Rng *rng, const void *s
         }
         throughput = vec3_mul(throughput, weight);
         counts->bounce++;
-        ray = ray_spawn(x.hit.point, x.normal, direction, scene->scale);
+        ray = ray_spawn(x.hit.point, x.normal, direction, x.hit.scale);
     }
     return radiance;
 }

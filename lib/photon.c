@@ -15,7 +15,7 @@ PhotonRay photon_emit(const Scene *scene, int emitted, double u_select, double u
     vec3_basis(light.normal, &t, &b);
     Vec3 direction = vec3_from_local(hemisphere_sample_cosine(u3, u4), t, b, light.normal);
     PhotonRay photon;
-    photon.ray = ray_spawn(light.point, light.normal, direction, scene->scale);
+    photon.ray = ray_spawn(light.point, light.normal, direction, vec3_max_abs(light.point));
     /* Phi / N for this light's share: pi A Le(y) / N (photon.h). */
     photon.power = vec3_scale(light.emission, PI * scene->light_area / emitted);
     return photon;
@@ -41,7 +41,7 @@ int photon_trace(const Scene *scene, PhotonRay photon, PhotonPaths paths, Fresne
         }
         Vec3 direction;
         power = vec3_mul(power, path_specular(&x, ray.dir, &glass, rng, &direction));
-        ray = ray_spawn(x.hit.point, x.normal, direction, scene->scale);
+        ray = ray_spawn(x.hit.point, x.normal, direction, x.hit.scale);
     }
     return 0;
 }

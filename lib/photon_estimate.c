@@ -32,6 +32,21 @@ Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 
     return vec3_scale(sum, 1.0 / (PI * radius * radius));
 }
 
+double ppm_first_radius(const Scene *scene, double fraction)
+{
+    Vec3 lights = vec3(0, 0, 0); /* the lights' centroid, by area */
+    for (int i = 0; i < scene->light_count; i++) {
+        const Triangle *t = &scene->triangles[scene->light_triangles[i]];
+        Vec3 centroid = triangle_point(t, 1.0 / 3.0, 1.0 / 3.0);
+        lights = vec3_add_scaled(lights, centroid, t->area / scene->light_area);
+    }
+    const Camera *c = &scene->camera;
+    Vec3 plane = vec3_add_scaled(vec3_add_scaled(c->bottom_left, c->right, 0.5), c->up, 0.5);
+    double width = vec3_length(c->right) * vec3_length(vec3_sub(lights, c->eye)) /
+                   vec3_length(vec3_sub(plane, c->eye));
+    return fraction * width;
+}
+
 double ppm_radius(double first_radius, double alpha, int pass)
 {
     return first_radius * sqrt(pow((double)pass, alpha - 1.0));

@@ -26,4 +26,11 @@ Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 
 #define PPM_ALPHA (2.0 / 3.0)
 double ppm_radius(double first_radius, double alpha, int pass);
 
+/* A first radius that follows the view, not the scene's units (as stochastic
+ * progressive photon mapping takes it from a pixel's footprint): `fraction` of the
+ * width the image plane covers at the lights' distance from the eye. The same scene at
+ * any scale is blurred alike, and an object far away changes nothing. The scene must
+ * have a light. */
+double ppm_first_radius(const Scene *scene, double fraction);
+
 #endif

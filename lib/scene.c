@@ -65,29 +65,6 @@ static BvhPrimitives primitives_of(const Scene *scene)
     return p;
 }
 
-/* The largest magnitude of any coordinate: of the geometry, the point lights and the
- * camera (a hit point's rounding error is relative to the ray's origin too). */
-static double scale_of(const Scene *scene)
-{
-    const Camera *c = &scene->camera;
-    Vec3 corner = vec3_add(c->bottom_left, c->right), top = vec3_add(c->bottom_left, c->up);
-    Vec3 points[5] = {c->eye, c->bottom_left, corner, top, vec3_add(corner, c->up)};
-    double scale = 0.0;
-    for (int i = 0; i < 5; i++)
-        scale = fmax(scale, vec3_max_abs(points[i]));
-    for (int i = 0; i < scene->triangle_count; i++) {
-        const Triangle *t = &scene->triangles[i];
-        scale = fmax(scale, vec3_max_abs(t->v0));
-        scale = fmax(scale, vec3_max_abs(vec3_add(t->v0, t->e1)));
-        scale = fmax(scale, vec3_max_abs(vec3_add(t->v0, t->e2)));
-    }
-    for (int i = 0; i < scene->sphere_count; i++)
-        scale = fmax(scale, vec3_max_abs(scene->spheres[i].center) + scene->spheres[i].radius);
-    for (int i = 0; i < scene->point_light_count; i++)
-        scale = fmax(scale, vec3_max_abs(scene->point_lights[i].position));
-    return scale;
-}
-
 /* The emitting triangles, with the running sum of their areas. */
 static int list_lights(Scene *scene)
 {
@@ -119,7 +96,6 @@ static int list_lights(Scene *scene)
 
 int scene_prepare(Scene *scene)
 {
-    scene->scale = scale_of(scene);
     bvh_free(&scene->bvh);
     if (bvh_build(&scene->bvh, primitives_of(scene)) != 0)
         return -1;
@@ -138,19 +114,25 @@ int scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit)
         hit->normal = sphere_normal(sphere, hit->point);
         hit->material = sphere->material;
         hit->triangle = -1;
+        hit->scale = vec3_max_abs(sphere->center) + sphere->radius;
     } else {
         const Triangle *triangle = &scene->triangles[primitive];
         hit->normal = triangle->normal;
         hit->material = triangle->material;
         hit->triangle = primitive;
+        hit->scale = max2(vec3_max_abs(triangle->v0),
+                          max2(vec3_max_abs(vec3_add(triangle->v0, triangle->e1)),
+                               vec3_max_abs(vec3_add(triangle->v0, triangle->e2))));
     }
+    hit->scale = max2(hit->scale, vec3_max_abs(ray.origin));
     return 1;
 }
 
 int scene_occluded(const Scene *scene, Vec3 from, Vec3 from_normal, Vec3 to, Vec3 to_normal)
 {
-    Vec3 start = ray_offset_origin(from, from_normal, vec3_sub(to, from), scene->scale);
-    Vec3 end = ray_offset_origin(to, to_normal, vec3_sub(from, to), scene->scale);
+    double scale = max2(vec3_max_abs(from), vec3_max_abs(to));
+    Vec3 start = ray_offset_origin(from, from_normal, vec3_sub(to, from), scale);
+    Vec3 end = ray_offset_origin(to, to_normal, vec3_sub(from, to), scale);
     Vec3 span = vec3_sub(end, start);
     double distance = vec3_length(span);
     Ray ray = {start, vec3_scale(span, 1.0 / distance)};

@@ -35,7 +35,6 @@ typedef struct {
     double *light_cumulative; /* running sum of their areas, for choosing one by area */
     int light_count;
     double light_area;        /* total emitting area */
-    double scale;             /* the largest coordinate magnitude: the ray offset's (ray.h) */
     Bvh bvh;                  /* over all triangles and spheres */
 } Scene;
 
@@ -46,6 +45,8 @@ typedef struct {
     Vec3 normal;  /* unit geometric normal of the front side (outward on spheres) */
     int material;
     int triangle; /* index of the triangle hit, or -1 for a sphere */
+    double scale; /* the largest coordinate of the ray's origin and the surface hit: the
+                     offset of a ray leaving the point (ray.h) */
 } Hit;
 
 void scene_init(Scene *scene);
@@ -57,8 +58,7 @@ int scene_add_triangle(Scene *scene, Triangle triangle);
 int scene_add_sphere(Scene *scene, Sphere sphere);
 int scene_add_point_light(Scene *scene, PointLight light);
 
-/* Build the light list, the hierarchy and the scale. Returns 0, or -1 when memory runs
- * out. */
+/* Build the light list and the hierarchy. Returns 0, or -1 when memory runs out. */
 int scene_prepare(Scene *scene);
 
 /* The nearest hit with t in (0, tmax). Returns 1 and fills *hit, or 0 for a miss. */
@@ -66,7 +66,8 @@ int scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit);
 
 /* Whether anything blocks the segment from surface point `from` (normal from_normal)
  * to point `to` on a surface with normal to_normal. Both ends are moved off their
- * surfaces (ray.h), so neither end's own surface blocks. */
+ * surfaces by the segment's largest coordinate (ray.h), so neither end's own surface
+ * blocks. */
 int scene_occluded(const Scene *scene, Vec3 from, Vec3 from_normal, Vec3 to, Vec3 to_normal);
 
 #endif

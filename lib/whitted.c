@@ -40,7 +40,7 @@ static Vec3 trace(const Scene *scene, Ray ray, int depth, int max_depth, RayCoun
     if (depth >= max_depth || (m->kind != MATERIAL_MIRROR && m->kind != MATERIAL_GLASS))
         return radiance;
 
-    Ray reflected = ray_spawn(hit.point, n, mirror_reflect(ray.dir, n), scene->scale);
+    Ray reflected = ray_spawn(hit.point, n, mirror_reflect(ray.dir, n), hit.scale);
     counts->bounce++;
     if (m->kind == MATERIAL_MIRROR) {
         Vec3 incoming = trace(scene, reflected, depth + 1, max_depth, counts);
@@ -52,7 +52,7 @@ static Vec3 trace(const Scene *scene, Ray ray, int depth, int max_depth, RayCoun
     Vec3 sum = vec3_scale(trace(scene, reflected, depth + 1, max_depth, counts), reflectance);
     if (reflectance < 1.0 && snell_refract(ray.dir, n, n_i, n_t, &refracted_dir)) {
         counts->bounce++;
-        Ray refracted = ray_spawn(hit.point, n, refracted_dir, scene->scale);
+        Ray refracted = ray_spawn(hit.point, n, refracted_dir, hit.scale);
         Vec3 transmitted = trace(scene, refracted, depth + 1, max_depth, counts);
         sum = vec3_add(sum, vec3_scale(transmitted, 1.0 - reflectance));
     }

@@ -278,6 +278,60 @@ static void test_unequal_triangles_match_closed_form(void **state)
     scene_free(&scene);
 }
 
+/* area_light_pdf is a density of directions: seen from a point x, its integral over the
+ * lamp's solid angle is 1 (midpoint rule over the lamp's area, dw = cos(beta) / d^2 dA);
+ * and it is the density of area_light_sample's directions: the mean of 1 / pdf over its
+ * samples is the solid angle the lamp subtends (E_p[1 / p] = integral of dw). The lamp is
+ * tilted and off to the side, so that d and beta vary over it: a density without the
+ * cosine at the lamp, or without the d^2, fails both. */
+static void test_pdf_is_the_samplers_density(void **state)
+{
+    Scene scene;
+    scene_init(&scene);
+    Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(1, 1, 1)};
+    int m = scene_add_material(&scene, lamp);
+    Vec3 p0 = vec3(1, 0, 1), p1 = vec3(1, 1, 1.6), p2 = vec3(2.5, 1, 2.2), p3 = vec3(2.5, 0, 1.6);
+    scene_add_triangle(&scene, triangle_make(p0, p1, p2, m)); /* facing down, to x */
+    scene_add_triangle(&scene, triangle_make(p0, p2, p3, m));
+    assert_int_equal(scene_prepare(&scene), 0);
+    const Vec3 x = vec3(0, 0.3, 0);
+    enum { CELLS = 400 };
+    double integral = 0.0, solid_angle = 0.0;
+    for (int t = 0; t < scene.light_count; t++) {
+        const Triangle *tri = &scene.triangles[scene.light_triangles[t]];
+        for (int i = 0; i < CELLS; i++)
+            for (int j = 0; j < CELLS - i; j++) {
+                /* The cells of the triangle's (u, v) grid below the diagonal, and half of
+                 * each one the diagonal cuts, at its midpoint. */
+                double u = (i + 0.5) / CELLS, v = (j + 0.5) / CELLS;
+                double weight = i + j == CELLS - 1 ? 0.5 : 1.0;
+                if (u + v > 1.0 && weight == 1.0)
+                    continue;
+                Vec3 y = triangle_point(tri, u, v), to_x = vec3_sub(x, y);
+                double d = vec3_length(to_x), cos_beta = vec3_dot(tri->normal, to_x) / d;
+                double dw = weight * 2.0 * tri->area / ((double)CELLS * CELLS) * cos_beta / (d * d);
+                integral += area_light_pdf(&scene, d, cos_beta) * dw;
+                solid_angle += dw;
+            }
+    }
+    Rng rng = rng_for_sample(3, 0, 0);
+    double sum = 0.0, sum_squares = 0.0;
+    for (int i = 0; i < SAMPLES; i++) {
+        double u_select = rng_uniform(&rng), u1 = rng_uniform(&rng), u2 = rng_uniform(&rng);
+        LightSample y = area_light_sample(&scene, u_select, u1, u2);
+        Vec3 to_x = vec3_sub(x, y.point);
+        double d = vec3_length(to_x), inverse = 1.0 / area_light_pdf(&scene, d, vec3_dot(y.normal, to_x) / d);
+        sum += inverse;
+        sum_squares += inverse * inverse;
+    }
+    double mean = sum / SAMPLES, error = sqrt((sum_squares / SAMPLES - mean * mean) / (SAMPLES - 1));
+    print_message("    integral of the pdf %.6f; mean 1 / pdf %.6f +- %.6f, solid angle %.6f\n",
+                  integral, mean, error, solid_angle);
+    assert_true(fabs(integral - 1.0) < 1e-3);
+    assert_true(fabs(mean - solid_angle) < 4.0 * error + 1e-3 * solid_angle);
+    scene_free(&scene);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -288,6 +342,7 @@ int main(void)
         cmocka_unit_test(test_occlusion_and_facing),
         cmocka_unit_test(test_nothing_behind_a_one_sided_lamp),
         cmocka_unit_test(test_unequal_triangles_match_closed_form),
+        cmocka_unit_test(test_pdf_is_the_samplers_density),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

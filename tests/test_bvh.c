@@ -156,13 +156,14 @@ static void test_room_bounce_and_shadow_rays(void **state)
             Vec3 n = vec3_dot(hit.normal, ray.dir) > 0.0 ? vec3_neg(hit.normal) : hit.normal;
             Vec3 lamp = triangle_point(&scene.triangles[scene.light_triangles[i % scene.light_count]],
                                        0.5 * rng_uniform(&rng), 0.5 * rng_uniform(&rng));
-            Vec3 start = ray_offset_origin(hit.point, n, vec3_sub(lamp, hit.point), scene.scale);
-            Vec3 end = ray_offset_origin(lamp, vec3(0, 0, -1), vec3_sub(hit.point, lamp), scene.scale);
+            double segment = fmax(vec3_max_abs(hit.point), vec3_max_abs(lamp));
+            Vec3 start = ray_offset_origin(hit.point, n, vec3_sub(lamp, hit.point), segment);
+            Vec3 end = ray_offset_origin(lamp, vec3(0, 0, -1), vec3_sub(hit.point, lamp), segment);
             Vec3 span = vec3_sub(end, start);
             Ray shadow = {start, vec3_normalize(span)};
             shadowed += check_ray(&scene, shadow, vec3_length(span), "shadow", i);
             Vec3 d = random_unit_vector(&rng);
-            ray = ray_spawn(hit.point, n, vec3_dot(d, n) < 0.0 ? vec3_neg(d) : d, scene.scale);
+            ray = ray_spawn(hit.point, n, vec3_dot(d, n) < 0.0 ? vec3_neg(d) : d, hit.scale);
         }
     }
     print_message("    %d shadow rays blocked\n", shadowed);
@@ -198,8 +199,10 @@ static void grazing_rays(const Scene *scene, double angle_min, double angle_max,
         Vec3 dir = vec3_normalize(vec3_add_scaled(along, tri->normal, (i % 2 ? 1 : -1) * tan(angle)));
         Ray arriving = {vec3_add_scaled(point, dir, -distance * rng_uniform(&rng)), dir};
         check_ray_within(scene, arriving, INFINITY, tolerance, "grazing", i);
+        double corners = fmax(vec3_max_abs(tri->v0), fmax(vec3_max_abs(vec3_add(tri->v0, tri->e1)),
+                                                          vec3_max_abs(vec3_add(tri->v0, tri->e2))));
         Ray leaving = ray_spawn(point, tri->normal, vec3_dot(dir, tri->normal) < 0 ? vec3_neg(dir) : dir,
-                                scene->scale);
+                                corners);
         check_ray_within(scene, leaving, INFINITY, tolerance, "grazing, leaving", i);
     }
 }

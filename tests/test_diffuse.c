@@ -216,6 +216,42 @@ static void test_oren_nayar_sample_weight(void **state)
 }
 #endif
 
+/* diffuse_pdf is a density of directions: its integral over the sphere around a tilted
+ * normal is 1 (midpoint rule in theta and phi, dw = sin theta dtheta dphi), and it is
+ * diffuse_sample's density: for g = cos^2 theta the mean of g / pdf over the samples is
+ * the integral of g over the hemisphere, 2 pi / 3 (E_p[g / p] = integral of g dw; with
+ * this g the ratio is bounded, so its standard error can be trusted). */
+static void test_pdf_integrates_to_one_and_matches_the_samples(void **state)
+{
+    enum { STEPS = 400 };
+    Vec3 n = vec3_normalize(vec3(0.3, -0.8, 0.5)), t, b;
+    own_frame(n, &t, &b);
+    double integral = 0.0;
+    for (int i = 0; i < STEPS; i++)
+        for (int j = 0; j < 2 * STEPS; j++) {
+            double theta = (i + 0.5) * PI / STEPS, phi = (j + 0.5) * PI / STEPS;
+            Vec3 w = vec3_from_local(vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta)),
+                                     t, b, n);
+            integral += diffuse_pdf(n, w) * sin(theta) * (PI / STEPS) * (PI / STEPS);
+        }
+    Material lambert = lambert_material();
+    Rng rng = rng_for_sample(6, 0, 0);
+    double sum = 0.0, sum_squares = 0.0;
+    for (int k = 0; k < PAIRS; k++) {
+        double u1 = rng_uniform(&rng), u2 = rng_uniform(&rng);
+        Vec3 wi;
+        diffuse_sample(&lambert, n, n, u1, u2, &wi);
+        double cos_theta = vec3_dot(n, wi), ratio = cos_theta * cos_theta / diffuse_pdf(n, wi);
+        sum += ratio;
+        sum_squares += ratio * ratio;
+    }
+    double mean = sum / PAIRS, error = sqrt((sum_squares / PAIRS - mean * mean) / (PAIRS - 1));
+    print_message("    integral %.6f; mean cos^2 / pdf %.5f +- %.5f, 2 pi / 3 = %.5f\n", integral,
+                  mean, error, 2.0 * PI / 3.0);
+    assert_true(fabs(integral - 1.0) < 1e-4);
+    assert_true(fabs(mean - 2.0 * PI / 3.0) < 4.0 * error);
+}
+
 /* Counts SAMPLES directions from diffuse_sample around the normal n, binned about the
  * axis `axis` (n itself, or a wrong one) in the test's own frame, and returns the
  * chi-square p-value against the cosine density. Bins: cos^2(theta) in COS_BINS equal
@@ -298,6 +334,7 @@ int main(void)
 #if CHAPTER >= 5
         cmocka_unit_test(test_oren_nayar_sample_weight),
 #endif
+        cmocka_unit_test(test_pdf_integrates_to_one_and_matches_the_samples),
         cmocka_unit_test(test_chi_square_cosine_about_tilted_normal),
         cmocka_unit_test(test_chi_square_rejects_axis_one_degree_off),
     };

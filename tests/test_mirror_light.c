@@ -204,11 +204,11 @@ static Estimate hitting_mean(const Scene *scene, Vec3 x, Vec3 n, long n_samples,
         double u1 = rng_uniform(&rng), u2 = rng_uniform(&rng);
         Vec3 weight = diffuse_sample(white, n, n, u1, u2, &d);
         Hit at_mirror, at_lamp;
-        if (scene_intersect(scene, ray_spawn(x, n, d, scene->scale), INFINITY, &at_mirror) &&
+        if (scene_intersect(scene, ray_spawn(x, n, d, vec3_max_abs(x)), INFINITY, &at_mirror) &&
             at_mirror.triangle >= 0 && scene->materials[at_mirror.material].kind == MATERIAL_MIRROR) {
             Vec3 r = mirror_reflect(d, at_mirror.normal);
             const Material *mirror = &scene->materials[at_mirror.material];
-            if (scene_intersect(scene, ray_spawn(at_mirror.point, at_mirror.normal, r, scene->scale),
+            if (scene_intersect(scene, ray_spawn(at_mirror.point, at_mirror.normal, r, at_mirror.scale),
                                 INFINITY,
                                 &at_lamp) &&
                 vec3_dot(r, at_lamp.normal) < 0.0)
@@ -269,6 +269,36 @@ static void test_where_the_image_gives_nothing(void **state)
     scene_free(&scene);
 }
 
+/* A second mirror in the way: a small tilted mirror at x = 0.8, in another plane,
+ * stands between the floor point and the big mirror x = 1. Every shadow ray to the lamp's
+ * image in x = 1 meets the small mirror first, which does not show that image: nothing
+ * may arrive. (A path that does reflect in the small mirror is that mirror's own image,
+ * sampled for its own plane.) */
+static void test_another_mirror_in_the_way(void **state)
+{
+    Scene scene;
+    lamp_beside_mirror(&scene, 0, vec3(1, 1, 1));
+    int mirror = scene.material_count - 1;
+    add_quad(&scene, vec3(0.78, -0.4, 0.15), vec3(0.82, 0.4, 0.15), vec3(0.82, 0.4, 0.7),
+             vec3(0.78, -0.4, 0.7), mirror);
+    assert_int_equal(scene_prepare(&scene), 0);
+    MirrorPlanes planes = planes_of(&scene);
+    assert_int_equal(planes.count, 2);
+    const MirrorPlane *big = fabs(planes.planes[0].offset) > 0.9 ? &planes.planes[0] : &planes.planes[1];
+    RayCounts counts = {0, 0, 0};
+    double arrived = 0.0;
+    for (int i = 0; i < 20000; i++) {
+        Rng rng = rng_for_sample(12, 0, (uint64_t)i);
+        arrived += mirror_light_shadow_ray(&scene, big, vec3(0.5, 0, 0), vec3(0, 0, 1),
+                                           vec3(0, 0, 1), &scene.materials[0], &rng, &counts)
+                       .value.x;
+    }
+    print_message("    through the big mirror, past the small one: %g\n", arrived);
+    assert_true(arrived == 0.0);
+    mirror_planes_free(&planes);
+    scene_free(&scene);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -277,6 +307,7 @@ int main(void)
         cmocka_unit_test(test_image_is_the_lamp_moved),
         cmocka_unit_test(test_same_light_as_hitting_the_lamp_in_the_room),
         cmocka_unit_test(test_where_the_image_gives_nothing),
+        cmocka_unit_test(test_another_mirror_in_the_way),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

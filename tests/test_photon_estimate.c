@@ -164,11 +164,77 @@ static void test_oren_nayar_matches_shadow_rays(void **state)
     scene_free(&scene);
 }
 
+/* The first radius follows the view, not the units: the lamp over the floor, seen from
+ * a camera whose 2-wide image plane is 1 from the eye, 2.5 from the lamp's centre: the
+ * fraction of 2 x 2.5. The same set-up scaled by 1e-3 and 1e3 gets a radius scaled alike
+ * (a radius in world units would give the three the same), and a sphere 1e12 away, or
+ * a far bigger floor, changes nothing (a radius from the scene's extent would grow). */
+static void test_first_radius_follows_the_view(void **state)
+{
+    const double scales[3] = {1.0, 1e-3, 1e3};
+    for (int k = 0; k < 4; k++) {
+        double s = scales[k % 3];
+        Scene scene;
+        scene_init(&scene);
+        Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(1, 1, 1)};
+        Material grey = {.name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+        int l = scene_add_material(&scene, lamp), g = scene_add_material(&scene, grey);
+        /* The lamp's centre at (0, 0, 2.5 s), facing down; the eye at the origin. */
+        scene_add_triangle(&scene, triangle_make(vec3(-s, -s, 2.5 * s), vec3(s, s, 2.5 * s),
+                                                 vec3(s, -s, 2.5 * s), l));
+        scene_add_triangle(&scene, triangle_make(vec3(-s, -s, 2.5 * s), vec3(-s, s, 2.5 * s),
+                                                 vec3(s, s, 2.5 * s), l));
+        double floor = k == 3 ? 1e6 : 10.0 * s;
+        scene_add_triangle(&scene, triangle_make(vec3(-floor, -floor, -s), vec3(floor, -floor, -s),
+                                                 vec3(0, floor, -s), g));
+        if (k == 3)
+            assert_true(scene_add_sphere(&scene, (Sphere){vec3(1e12, 0, 0), 1.0, g}) >= 0);
+        scene.camera = camera_make(vec3(0, 0, 0), vec3(-s, -s, s), vec3(s, -s, s), vec3(-s, s, s));
+        assert_int_equal(scene_prepare(&scene), 0);
+        double radius = ppm_first_radius(&scene, 0.01);
+        print_message("    scale %g%s: first radius %.9g\n", s, k == 3 ? ", far objects" : "", radius);
+        assert_true(fabs(radius - 0.01 * 2.0 * 2.5 * s) <= 1e-12 * radius);
+        scene_free(&scene);
+    }
+}
+
+/* Only photons on a surface facing the same way count: at a floor point next to a wall
+ * (normal +x), photons that landed on the wall within the radius are left out, so the
+ * estimate is the floor's photons' alone: sum Phi rho / pi / (pi r^2). Without the
+ * normal filter the wall's light would leak onto the floor at every corner. */
+static void test_photons_on_a_wall_do_not_count_on_the_floor(void **state)
+{
+    enum { EACH = 50 };
+    Photon photons[2 * EACH];
+    Rng rng = rng_for_sample(5, 0, 0);
+    double floor_power = 0.0;
+    for (int i = 0; i < EACH; i++) {
+        double a = 2.0 * PI * rng_uniform(&rng), r = 0.1 * sqrt(rng_uniform(&rng));
+        Vec3 power = vec3(0.01 * (1 + i % 3), 0.01, 0.01);
+        photons[i] = (Photon){vec3(r * cos(a), r * sin(a), 0), vec3(0, 0, 1), vec3(0, 0, 1), power};
+        floor_power += power.x;
+        /* On the wall x = 0.05, within 0.1 of the origin too, arriving from above it. */
+        Vec3 on_wall = vec3(0.05, 0.05 * (rng_uniform(&rng) - 0.5), 0.05 * rng_uniform(&rng));
+        photons[EACH + i] = (Photon){on_wall, vec3(-0.6, 0, 0.8), vec3(-1, 0, 0), vec3(1, 1, 1)};
+    }
+    PhotonMap map;
+    assert_int_equal(photon_map_build(&map, photons, 2 * EACH, 1000), 0);
+    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Vec3 estimate = photon_estimate_radiance(&map, 0.2, vec3(0, 0, 0), vec3(0, 0, 1), vec3(0, 0, 1),
+                                             &white);
+    double expected = floor_power * 0.5 / PI / (PI * 0.2 * 0.2);
+    print_message("    floor estimate %.6f, the floor's photons alone %.6f\n", estimate.x, expected);
+    assert_true(fabs(estimate.x - expected) <= 1e-12 * expected);
+    photon_map_free(&map);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lambert_matches_configuration_factor),
         cmocka_unit_test(test_oren_nayar_matches_shadow_rays),
+        cmocka_unit_test(test_first_radius_follows_the_view),
+        cmocka_unit_test(test_photons_on_a_wall_do_not_count_on_the_floor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -20,6 +20,7 @@
 #include "rng.h"
 #include "scene.h"
 #include "scene_file.h"
+#include "whitted.h"
 
 /* From the smallest to the largest scale the reader takes (scene_file.c: sizes 1e-50
  * to 1e50), through 1e-12, where an absolute ray offset would fail. */
@@ -157,7 +158,7 @@ static void test_no_acne_on_triangles(void **state)
                 Hit hit, again;
                 assert_true(scene_intersect(&scene, ray_through(eye, target), INFINITY, &hit));
                 Vec3 dir = random_direction_along(&rng, rng_uniform(&rng) < 0.5 ? n : vec3_neg(n));
-                if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, scene.scale), INFINITY, &again))
+                if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY, &again))
                     fail_msg("scale %g: self-hit at t = %g, %g from the origin", s, again.t,
                              vec3_length(hit.point));
             }
@@ -187,11 +188,11 @@ static void test_no_acne_on_spheres(void **state)
             if (!scene_intersect(&scene, first, INFINITY, &hit))
                 continue;
             Vec3 out = random_direction_along(&rng, hit.normal);
-            if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, out, scene.scale), INFINITY, &again))
+            if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, out, hit.scale), INFINITY, &again))
                 fail_msg("scale %g: outward ray hit the sphere at t = %g", s, again.t);
             Vec3 in = random_direction_along(&rng, vec3_neg(hit.normal));
             double cos_theta = -vec3_dot(in, hit.normal);
-            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, in, scene.scale), INFINITY, &again));
+            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, in, hit.scale), INFINITY, &again));
             if (!(again.t > sphere.radius * cos_theta))
                 fail_msg("scale %g: inward ray hit at t = %g, chord %g", s, again.t,
                          2 * sphere.radius * cos_theta);
@@ -231,7 +232,7 @@ static void test_near_parallel_planes(void **state)
             do
                 dir = random_direction_along(&rng, towards);
             while (vec3_dot(dir, towards) < 0.5);
-            int found = scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, scene.scale), INFINITY, &near);
+            int found = scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY, &near);
             if (!found || (near.triangle >= 2) != up)
                 fail_msg("scale %g: missed the plane %g away (found %d, triangle %d)", s, gap,
                          found, found ? near.triangle : -1);
@@ -269,7 +270,7 @@ static void test_corner(void **state)
             /* towards the wall (-x), rising at most 45 degrees above the floor */
             double rise = rng_uniform(&rng), swing = rng_uniform(&rng) - 0.5;
             Vec3 dir = vec3_normalize(vec3(-1, swing, rise));
-            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, scene.scale), INFINITY, &wall));
+            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY, &wall));
             if (wall.triangle < 2)
                 fail_msg("scale %g: hit the floor again at t = %g", s, wall.t);
         }
@@ -332,7 +333,8 @@ static void test_occluded_by_spheres(void **state)
 }
 
 /* `in` scaled by s, into a new prepared scene: triangles from their stored corners, so
- * that the copy with s = 1 is the reference the scaled copies are compared with. */
+ * that the copy with s = 1 is the reference the scaled copies are compared with (point
+ * lights keep their intensity). */
 static void scale_scene(const Scene *in, double s, Scene *out)
 {
     scene_init(out);
@@ -349,6 +351,11 @@ static void scale_scene(const Scene *in, double s, Scene *out)
         sphere.center = vec3_scale(sphere.center, s);
         sphere.radius *= s;
         scene_add_sphere(out, sphere);
+    }
+    for (int i = 0; i < in->point_light_count; i++) {
+        PointLight light = in->point_lights[i];
+        light.position = vec3_scale(light.position, s);
+        scene_add_point_light(out, light);
     }
     const Camera *c = &in->camera;
     out->camera = camera_make(vec3_scale(c->eye, s), vec3_scale(c->bottom_left, s),
@@ -395,8 +402,8 @@ static void test_scaled_room(void **state)
                 Vec3 towards = vec3_dot(a.dir, hit_a.normal) < 0 ? hit_a.normal
                                                                   : vec3_neg(hit_a.normal);
                 Vec3 dir = random_direction_along(&rng, towards);
-                a = ray_spawn(hit_a.point, hit_a.normal, dir, reference.scale);
-                b = ray_spawn(hit_b.point, hit_b.normal, dir, scaled.scale);
+                a = ray_spawn(hit_a.point, hit_a.normal, dir, hit_a.scale);
+                b = ray_spawn(hit_b.point, hit_b.normal, dir, hit_b.scale);
             }
         }
         scene_free(&scaled);
@@ -440,6 +447,44 @@ static void test_light_list(void **state)
     scene_free(&scene);
 }
 
+/* A unit sphere far outside the closed room, where no ray can reach it, changes nothing:
+ * every pixel of the room's Whitted image is the same bit for bit with the sphere 1e3 to
+ * 1e49 away. An offset relative to the whole scene's extent (rather than to the hit
+ * point and its surface) moves every new ray by up to 1e39 and turns the room black. */
+static void test_far_object_changes_nothing(void **state)
+{
+    enum { SIDE = 24 };
+    const double distances[] = {1e3, 1e9, 1e12, 1e20, 1e40, 1e49};
+    WhittedSettings whitted = {10};
+    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 1, .seed = 1};
+    Scene room;
+    char error[512];
+    if (scene_load("scenes/room_whitted.scene", &room, error, sizeof error) != 0)
+        fail_msg("%s", error);
+    static Vec3 alone[SIDE * SIDE];
+    RayCounts counts = {0, 0, 0};
+    for (int i = 0; i < SIDE * SIDE; i++)
+        alone[i] = render_sample(&room, &image, i % SIDE, i / SIDE, 0, whitted_radiance, &whitted,
+                                 &counts);
+    for (int k = 0; k < (int)(sizeof distances / sizeof distances[0]); k++) {
+        Scene far;
+        scale_scene(&room, 1.0, &far);
+        assert_true(scene_add_sphere(&far, (Sphere){vec3(distances[k], 0, 0), 1.0, 0}) >= 0);
+        assert_int_equal(scene_prepare(&far), 0);
+        int differ = 0;
+        for (int i = 0; i < SIDE * SIDE; i++) {
+            Vec3 v = render_sample(&far, &image, i % SIDE, i / SIDE, 0, whitted_radiance,
+                                   &whitted, &counts);
+            differ += v.x != alone[i].x || v.y != alone[i].y || v.z != alone[i].z;
+        }
+        print_message("    sphere %g away: %d of %d pixels differ\n", distances[k], differ,
+                      SIDE * SIDE);
+        assert_int_equal(differ, 0);
+        scene_free(&far);
+    }
+    scene_free(&room);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -453,6 +498,7 @@ int main(void)
         cmocka_unit_test(test_occluded_by_spheres),
         cmocka_unit_test(test_light_list),
         cmocka_unit_test(test_scaled_room),
+        cmocka_unit_test(test_far_object_changes_nothing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -276,14 +276,15 @@ static void mirror_scene(Scene *scene)
  * q' = (4 - q.x, q.y, 0) of floor point q, the ray reflects onto q, and the radiance
  * is c times the radiance seen directly at q (which is the closed form, in any viewing
  * direction). One bounce and one shadow ray. To 1e-12 the test must know one more
- * thing: the reflected ray starts off the mirror by RAY_OFFSET times the scene's scale
- * (ray.h), towards the room, so it is the reflected ray moved by that much along -x,
- * and lands that much short of q; ignoring it is a relative error of about 1e-10. */
+ * thing: the reflected ray starts off the mirror by RAY_OFFSET times the largest
+ * coordinate behind the hit (ray.h: the mirror's corners, 2), towards the room, so it is
+ * the reflected ray moved by that much along -x, and lands that much short of q;
+ * ignoring it is a relative error of about 1e-10. */
 static void test_mirror_shows_c_times_mirrored_point(void **state)
 {
     Scene scene;
     mirror_scene(&scene);
-    const double offset = RAY_OFFSET * scene.scale;
+    const double offset = RAY_OFFSET * 2.0;
     const Vec3 points[] = {vec3(1.0, 0.3, 0), vec3(0.0, -1.0, 0), vec3(1.7, 0.9, 0)};
     const Vec3 eye = vec3(0.0, 0.5, 1.2);
     for (int k = 0; k < 3; k++) {
