@@ -24,7 +24,7 @@ typedef struct {
 
 static const FlagSpec FLAG_SPECS[] = {
     {FLAG_SCENE, "--scene", VALUE_TEXT, 0, 0, "FILE    scene file to render (docs/scene-format.md)"},
-    {FLAG_SIZE, "--size", VALUE_INT, 1, 16384, "N       image width in pixels; the height follows the image plane"},
+    {FLAG_SIZE, "--size", VALUE_INT, 8, 16384, "N       image width in pixels; the height follows the image plane"},
     {FLAG_SPP, "--spp", VALUE_INT, 1, 1 << 20, "N       samples per pixel"},
     {FLAG_SHADOW_RAYS, "--shadow-rays", VALUE_INT, 0, 1 << 16, "N       shadow rays per diffuse hit (eq. 21); 0: lights found only by hitting them"},
     {FLAG_RR, "--rr", VALUE_REAL, 0, 1, "ALPHA   Russian roulette survival probability, 0 < ALPHA <= 1"},

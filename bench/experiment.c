@@ -65,17 +65,16 @@ static int make_directories(const char *path, char *failed, size_t size)
     }
 }
 
-/* --out must be a directory we can write a file into: found out now, not after the
- * render. A full disk is found by writing a little. */
-static void check_output_directory(const Options *options)
+/* Whether a file can be written into `directory` (created if needed): 0, or -1 with
+ * errno set and the folder that failed in failed[size]. A full disk is found by writing
+ * a little. */
+static int writable_directory(const char *directory, char *failed, size_t size)
 {
-    char failed[4096], probe[4200];
-    if (make_directories(options->out, failed, sizeof failed) != 0)
-        cli_fail(errno == ENOTDIR || errno == ENAMETOOLONG ? 2 : 1,
-                 "--out %s: cannot create directory %s: %s", options->out, failed,
-                 strerror(errno));
-    snprintf(probe, sizeof probe, "%s/.write-test.%ld", options->out, (long)getpid());
-    char block[4096] = {0};
+    if (make_directories(directory, failed, size) != 0)
+        return -1;
+    char probe[4200], block[4096] = {0};
+    snprintf(failed, size, "%s", directory);
+    snprintf(probe, sizeof probe, "%s/.write-test.%ld", directory, (long)getpid());
     FILE *file = fopen(probe, "wb");
     int ok = file && fwrite(block, 1, sizeof block, file) == sizeof block;
     int saved_errno = errno;
@@ -85,8 +84,18 @@ static void check_output_directory(const Options *options)
     }
     if (file)
         remove(probe);
-    if (!ok)
-        cli_fail(1, "--out %s: cannot write there: %s", options->out, strerror(saved_errno));
+    errno = saved_errno;
+    return ok ? 0 : -1;
+}
+
+/* --out must be a directory we can write a file into: found out now, not after the
+ * render. */
+static void check_output_directory(const Options *options)
+{
+    char failed[4096];
+    if (writable_directory(options->out, failed, sizeof failed) != 0)
+        cli_fail(errno == ENOTDIR || errno == ENAMETOOLONG ? 2 : 1, "--out %s: cannot write in %s: %s",
+                 options->out, failed, strerror(errno));
 }
 
 void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
@@ -254,6 +263,14 @@ TableRow experiment_row(const char *panel, const char *settings, const RenderRes
     return row;
 }
 
+void experiment_write_panel(const Options *options, const char *name, const RenderResult *result)
+{
+    int written = !result->interrupted || render_samples_per_pixel(result) >= 1.0;
+    if (written)
+        experiment_write_image(options, name, &result->image, PANEL_EXPOSURE);
+    experiment_exit_if_interrupted(result, written ? name : NULL);
+}
+
 void experiment_exit_if_interrupted(const RenderResult *result, const char *saved)
 {
     if (!result->interrupted)
@@ -338,6 +355,34 @@ static int run_reference_program(char *const argv[])
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
+/* Hold the cache entry KEY: a lock on DIR/KEY.lock, waited for while another program
+ * renders the same entry, so that it is rendered once; released when the returned
+ * descriptor is closed, or when the program ends. */
+static int lock_entry(const char *directory, const char *key_text)
+{
+    char path[4300];
+    snprintf(path, sizeof path, "%s/%s.lock", directory, key_text);
+    int fd = open(path, O_RDWR | O_CREAT, 0666);
+    if (fd < 0)
+        cli_fail(1, "cannot open the reference cache's lock %s: %s", path, strerror(errno));
+    struct flock lock = {.l_type = F_WRLCK, .l_whence = SEEK_SET};
+    while (fcntl(fd, F_SETLKW, &lock) != 0)
+        if (errno != EINTR)
+            cli_fail(1, "cannot lock %s: %s", path, strerror(errno));
+    return fd;
+}
+
+/* Remove the files of cache entry KEY (a temporary cache's). */
+static void remove_entry(const char *directory, const char *key_text)
+{
+    const char *suffixes[] = {".pfm", "-stderr.pfm", ".txt", ".lock"};
+    for (int i = 0; i < 4; i++) {
+        char path[4300];
+        snprintf(path, sizeof path, "%s/%s%s", directory, key_text, suffixes[i]);
+        remove(path);
+    }
+}
+
 void experiment_path_reference(const Options *options, const Scene *scene,
                                const PathSettings *path, const char *rough_material,
                                double rough_sigma, Reference *reference)
@@ -351,17 +396,18 @@ void experiment_path_reference(const Options *options, const Scene *scene,
 #else
     int exact = 0;
 #endif
-    char size[32], spp[32], depth[32], seed[32], sigma[128], key_text[64];
+    char size[32], spp[32], depth[32], seed[32], sigma[128], key_text[64], parent[32];
     snprintf(size, sizeof size, "%d", options->size);
     snprintf(spp, sizeof spp, "%d", options->reference_spp);
     snprintf(depth, sizeof depth, "%d", path->max_depth);
     snprintf(seed, sizeof seed, "%llu", (unsigned long long)~options->seed);
     snprintf(sigma, sizeof sigma, "%s=%.17g", rough_material ? rough_material : "", rough_sigma);
+    snprintf(parent, sizeof parent, "%ld", (long)getpid());
     char *argv[] = {program, "--scene", "/dev/stdin", "--name", (char *)options->scene,
                     "--size", size, "--reference-spp", spp, "--depth", depth,
                     "--fresnel", exact ? "exact" : "schlick", "--seed", seed,
                     "--sigma", sigma, "--out", directory, "--key", key_text,
-                    options->quiet ? "--quiet" : NULL, NULL};
+                    "--parent", parent, options->quiet ? "--quiet" : NULL, NULL};
     /* The key: the scene's bytes, everything the program is told but where to write, and
      * the program itself. */
     uint64_t key = options->scene_hash;
@@ -374,23 +420,42 @@ void experiment_path_reference(const Options *options, const Scene *scene,
     snprintf(description, sizeof description, "depth=%d %s%s%s", path->max_depth,
              exact ? "exact" : "schlick", rough_material ? ", sigma=" : "",
              rough_material ? sigma + strlen(rough_material) + 1 : "");
-    if (measure_load_reference(directory, key, width, height, reference) != 0) {
-        char failed[4096];
-        if (make_directories(directory, failed, sizeof failed) != 0)
-            cli_fail(1, "cannot create the reference cache %s: %s", failed, strerror(errno));
+    /* A cache that cannot be written (read-only, full) is not used: the reference is
+     * rendered into a temporary folder instead, and removed once read. */
+    char failed[4096], temporary[64] = "";
+    if (writable_directory(directory, failed, sizeof failed) != 0) {
+        printf("reference cache %s: cannot write in %s (%s): rendering into a temporary folder, "
+               "nothing is kept\n", directory, failed, strerror(errno));
+        snprintf(temporary, sizeof temporary, "/tmp/mc-reference-XXXXXX");
+        if (!mkdtemp(temporary))
+            cli_fail(1, "cannot make a temporary folder for the reference: %s", strerror(errno));
+        snprintf(directory, sizeof directory, "%s", temporary);
+    }
+    int lock = lock_entry(directory, key_text);
+    char why[320];
+    int status = measure_load_reference(directory, key, width, height, reference, why, sizeof why);
+    if (status == -2)
+        printf("reference cache: entry %s is broken (%s): rendering it again\n", key_text, why);
+    if (status != 0) {
         fflush(stdout);
         render_install_interrupt();
         if (render_interrupted())
             cli_fail(130, "interrupted: stopped before rendering the reference");
-        int status = run_reference_program(argv);
-        if (status == 130 || status == 128 + SIGINT)
+        int exit_status = run_reference_program(argv);
+        if (exit_status == 130 || exit_status == 128 + SIGINT)
             cli_fail(130, "interrupted while rendering the reference; nothing was cached");
-        if (status != 0)
-            cli_fail(status == 2 ? 2 : 1, "the reference program failed (exit status %d)", status);
-        if (measure_load_reference(directory, key, width, height, reference) != 0)
-            cli_fail(1, "the reference program wrote no readable reference %s/%s.pfm",
-                     directory, key_text);
+        if (exit_status != 0)
+            cli_fail(exit_status == 2 ? 2 : 1, "the reference program failed (exit status %d)",
+                     exit_status);
+        if (measure_load_reference(directory, key, width, height, reference, why, sizeof why) != 0)
+            cli_fail(1, "the reference program wrote no readable reference %s/%s.pfm (%s)",
+                     directory, key_text, why);
         reference->cached = 0;
+    }
+    close(lock);
+    if (temporary[0]) {
+        remove_entry(directory, key_text);
+        rmdir(directory);
     }
     printf("reference: %s, %.0f spp, %s %.1f s; its own standard error (RMS) %.5f\n",
            description, reference->spp, reference->cached ? "cached, rendered in" : "rendered in",
@@ -406,11 +471,9 @@ static TableRow one_run(const Options *options, const Scene *scene,
                         RenderResult *result)
 {
     experiment_render(scene, settings, estimate, estimator_settings, result);
-    int whole_pass = render_samples_per_pixel(result) >= 1.0;
-    int written = write_panel && (!result->interrupted || whole_pass);
-    if (written)
-        experiment_write_image(options, name, &result->image, PANEL_EXPOSURE);
-    experiment_exit_if_interrupted(result, written ? name : NULL);
+    if (write_panel)
+        experiment_write_panel(options, name, result);
+    experiment_exit_if_interrupted(result, NULL);
     TableRow row = experiment_row(name, settings_text, result);
     if (reference)
         measure_fill_row(&row, &result->image, reference);

@@ -82,6 +82,11 @@ void experiment_write_table(const Options *options, const char *name, const Tabl
 /* A table row with the cost columns of a render filled in and no error measured. */
 TableRow experiment_row(const char *panel, const char *settings, const RenderResult *result);
 
+/* Write a render's panel as NAME.png and NAME.pfm, unless an interruption stopped it
+ * before every pixel had a sample (the rows not reached would be black); then, if it was
+ * interrupted, say what was saved and exit with status 130. */
+void experiment_write_panel(const Options *options, const char *name, const RenderResult *result);
+
 /* After a render was interrupted (SIGINT): say what was saved and exit with status 130.
  * `saved` names what was written of it, or is NULL when nothing was. */
 void experiment_exit_if_interrupted(const RenderResult *result, const char *saved);

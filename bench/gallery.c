@@ -322,6 +322,23 @@ static int chapter_file_count(const Writer *w, const char *prefix)
     return count;
 }
 
+/* Each figure the chapter writes but the folder lacks, said to be missing: a chapter
+ * stopped halfway must not look complete. */
+static void write_missing_figures(const Writer *w, const GalleryChapter *chapter)
+{
+    for (const char *name = chapter->figures; name && *name;) {
+        size_t length = strcspn(name, " ");
+        char file[128];
+        snprintf(file, sizeof file, "%.*s.png", (int)length, name);
+        if (length > 0 && !has_file(w, file))
+            fprintf(w->out, "<p class=\"missing\"><strong>Not rendered:</strong> %s. "
+                            "<code>make chapter%d</code> renders it.</p>\n",
+                    file, chapter->number);
+        name += length;
+        name += strspn(name, " ");
+    }
+}
+
 static void chapter_prefix(char prefix[16], int number)
 {
     snprintf(prefix, 16, "ch%02d_", number % 100);
@@ -695,6 +712,8 @@ static int write_chapter(Writer *w, const GalleryChapter *chapter)
                 "<p class=\"missing\"><strong>Not rendered yet:</strong> this folder has no "
                 "file %s*. <code>make chapter%d</code> renders it.</p>\n",
                 prefix, n);
+    else
+        write_missing_figures(w, chapter);
     if (write_kind(w, chapter, FILE_FIGURE, "Figures") != 0 ||
         write_kind(w, chapter, FILE_TABLE, "Tables") != 0 ||
         write_kind(w, chapter, FILE_PLOT, "Plots") != 0)

@@ -37,6 +37,8 @@ typedef struct {
     const char *reproduces; /* which figures of the report, in a phrase */
     const char *plots;      /* names (without ".png") of its figures that are plots,
                                separated by spaces; NULL for none */
+    const char *figures;    /* names (without ".png") of every figure it writes, separated
+                               by spaces: one missing is shown as not rendered */
 } GalleryChapter;
 
 typedef struct {

@@ -20,7 +20,8 @@ static const GalleryChapter CHAPTERS[] = {
      "single shadow ray asks whether the point light is visible; mirrors and glass send the "
      "ray on, reflected or refracted, recursively. Nothing is random, so there is no noise, "
      "but the shadows are hard and no light travels from one wall to another.",
-     "the report's Figure 1 (the room by Whitted ray tracing)", NULL},
+     "the report's Figure 1 (the room by Whitted ray tracing)", NULL,
+     "ch01_figure1"},
     {2, "Monte Carlo integration of diffuse light",
      "A diffuse surface now reflects light arriving from every direction: each bounce picks "
      "one direction at random, with the cosine-weighted density of the Lambert BRDF, and a "
@@ -29,13 +30,15 @@ static const GalleryChapter CHAPTERS[] = {
      "placed in sub-pixels are compared with samples placed at random.",
      "the report's Figure 2 (the room by Monte Carlo ray tracing) and Figure 8 (1 against "
      "4 samples per pixel)",
-     NULL},
+     NULL,
+     "ch02_figure2 ch02_figure8 ch02_subpixels_vs_random"},
     {3, "Shadow rays",
      "Instead of waiting for a random path to hit the small ceiling light, every diffuse hit "
      "sends M shadow rays to random points on the area light and adds what they see "
      "(the report's eq. 21). The tables measure what each extra shadow ray costs in time and "
      "what it buys in error; a sweep over M shows where more rays stop paying.",
-     "the report's Figure 11 (1 against 30 shadow rays)", NULL},
+     "the report's Figure 11 (1 against 30 shadow rays)", NULL,
+     "ch03_figure11 ch03_figure8"},
     {4, "Fresnel glass and ray depth",
      "Glass bends light by Snell's law, reflects all of it beyond the critical angle, and "
      "otherwise splits it between reflection and refraction by the Fresnel equations, exactly "
@@ -43,20 +46,23 @@ static const GalleryChapter CHAPTERS[] = {
      "3 against depth 8 shows the light lost inside the glass sphere.",
      "the report's Figure 9 (ray depth 3 against 8), and Schlick against exact Fresnel: both "
      "curves over the angle, and their time and error in the room",
-     "ch04_fresnel_curve"},
+     "ch04_fresnel_curve",
+     "ch04_figure9 ch04_figure9_crop ch04_fresnel_curve"},
     {5, "The Oren-Nayar reflector",
      "A rough surface is modelled as many tiny Lambertian facets whose slopes spread by a "
-     "roughness sigma (the report's eqs. 13-14, with the handbook's corrections). Lit from "
+     "roughness sigma (the report's eqs. 13-14, corrected). Lit from "
      "the eye, a Lambertian sphere darkens towards its rim while a rough one looks flat; a "
      "sweep over sigma goes from Lambert (sigma = 0) to very rough.",
-     "the report's Figure 10 (Oren-Nayar against Lambertian)", NULL},
+     "the report's Figure 10 (Oren-Nayar against Lambertian)", NULL,
+     "ch05_figure10 ch05_sigma_sweep"},
     {6, "Russian roulette",
      "Paths end at random instead of at a fixed depth: at each diffuse bounce a path survives "
      "with probability alpha and its weight is divided by alpha, so the estimate stays "
      "unbiased. A small alpha is fast but noisy, and below the squared reflectance of the "
      "brightest wall the variance is infinite; the sweep shows which alpha gives the most "
      "accuracy per second.",
-     "the report's Figure 12 (alpha = 0.01 against 0.5)", NULL},
+     "the report's Figure 12 (alpha = 0.01 against 0.5)", NULL,
+     "ch06_figure12"},
     {7, "The final image and the benchmarks",
      "Everything together: sub-pixel sampling, shadow rays, Fresnel glass and Russian "
      "roulette render the report's final image, with the levers that spend the samples "
@@ -66,7 +72,8 @@ static const GalleryChapter CHAPTERS[] = {
      "error. A log-log plot shows each estimator's error falling with time, against a "
      "slope of -1/2.",
      "the report's Figure 7 (the final image) and Table 1 (the benchmarks)",
-     "ch07_convergence"},
+     "ch07_convergence",
+     "ch07_figure7_captioned ch07_convergence"},
     {8, "Photon-mapped caustics",
      "Light focused by the glass sphere onto the floor (a caustic) is found by a path tracer "
      "only by chance, as bright speckles. Photons are traced from the light instead, those "
@@ -74,7 +81,8 @@ static const GalleryChapter CHAPTERS[] = {
      "estimated from their density around each point seen.",
      "beyond the report (its section 5 names photon mapping as future work): the room "
      "without speckles, at equal time against chapter 7",
-     NULL},
+     NULL,
+     "ch08_equal_time ch08_caustic_crop ch08_error_plot"},
 };
 
 static void usage(FILE *out)
@@ -108,9 +116,21 @@ int main(int argc, char **argv)
         }
         *value = argv[++i];
     }
-    if (mkdir(out, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "gallery: cannot make %s: %s\n", out, strerror(errno));
-        return 1;
+    /* The --out folder, made as every chapter program makes it (mkdir -p). */
+    char folder[4096];
+    snprintf(folder, sizeof folder, "%s", out);
+    for (char *p = folder + 1;; p++) {
+        int end = *p == '\0';
+        if (*p == '/' || end) {
+            *p = '\0';
+            if (mkdir(folder, 0777) != 0 && errno != EEXIST) {
+                fprintf(stderr, "gallery: cannot make %s: %s\n", folder, strerror(errno));
+                return 1;
+            }
+            if (end)
+                break;
+            *p = '/';
+        }
     }
     GalleryPage page = {"Monte Carlo ray tracer: every figure", out, diffs ? diffs : out,
                         CHAPTERS, (int)(sizeof CHAPTERS / sizeof CHAPTERS[0]), time(NULL)};
@@ -120,5 +140,9 @@ int main(int argc, char **argv)
         return 1;
     }
     printf("wrote %s/index.html\n", out);
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "gallery: cannot write to the standard output: %s\n", strerror(errno));
+        return 1;
+    }
     return 0;
 }

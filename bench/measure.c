@@ -5,6 +5,8 @@
 
 #include <errno.h>
 #include <math.h>
+#include <pthread.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -74,18 +76,29 @@ double measure_rms(const Image *image)
     return sqrt(sum / n);
 }
 
+/* The mean over the pixels of (R + G + B) / 3. */
+static double image_mean_of(const Image *image)
+{
+    long pixels = (long)image->width * image->height;
+    double sum = 0.0;
+    for (long i = 0; i < pixels; i++) {
+        const float *x = image->pixels + 3 * i;
+        sum += ((double)x[0] + x[1] + x[2]) / 3.0;
+    }
+    return sum / pixels;
+}
+
 void measure_image_mean(const Image *image, const Image *average_std_error, double *mean,
                         double *mean_std_error)
 {
     long pixels = (long)image->width * image->height;
-    double sum = 0.0, variance = 0.0;
+    double variance = 0.0;
     for (long i = 0; i < pixels; i++) {
-        const float *x = image->pixels + 3 * i, *e = average_std_error->pixels + 3 * i;
+        const float *e = average_std_error->pixels + 3 * i;
         double s = ((double)e[0] + e[1] + e[2]) / 3.0;
-        sum += ((double)x[0] + x[1] + x[2]) / 3.0;
         variance += s * s;
     }
-    *mean = sum / pixels;
+    *mean = image_mean_of(image);
     *mean_std_error = sqrt(variance) / pixels;
 }
 
@@ -192,8 +205,25 @@ static void reference_paths(const char *directory, uint64_t key, char *mean, cha
     snprintf(info, size, "%s/%016llx.txt", directory, (unsigned long long)key);
 }
 
+/* Whether every value of the image is finite and >= 0: radiance, or its error. */
+static int radiance_like(const Image *image)
+{
+    for (long i = 0; i < 3L * image->width * image->height; i++)
+        if (!(isfinite(image->pixels[i]) && image->pixels[i] >= 0.0f))
+            return 0;
+    return 1;
+}
+
+/* Say why an entry is broken; returns -2. */
+static int broken(Reference *reference, char *why, size_t why_size, const char *reason)
+{
+    measure_reference_free(reference);
+    snprintf(why, why_size, "%s", reason);
+    return -2;
+}
+
 int measure_load_reference(const char *directory, uint64_t key, int width, int height,
-                           Reference *reference)
+                           Reference *reference, char *why, size_t why_size)
 {
     char mean[4200], error[4200], info[4200], message[256];
     reference_paths(directory, key, mean, error, info, sizeof mean);
@@ -205,16 +235,24 @@ int measure_load_reference(const char *directory, uint64_t key, int width, int h
                         &reference->spp, &reference->seconds, &reference->mean,
                         &reference->mean_std_error);
     fclose(file);
-    /* An entry whose images are not both width x height is broken (a partial write, or
-     * a file put there by hand): it is rendered again, never compared pixel by pixel. */
-    if (fields != 4 || !(reference->spp > 0.0) ||
-        image_read_pfm(mean, &reference->image, message, sizeof message) != 0 ||
-        image_read_pfm(error, &reference->std_error, message, sizeof message) != 0 ||
-        reference->image.width != width || reference->image.height != height ||
-        reference->std_error.width != width || reference->std_error.height != height) {
-        measure_reference_free(reference);
-        return -1;
-    }
+    if (fields != 4 || !(reference->spp > 0.0 && isfinite(reference->spp)) ||
+        !(reference->seconds >= 0.0 && isfinite(reference->seconds)) ||
+        !isfinite(reference->mean) ||
+        !(reference->mean_std_error >= 0.0 && isfinite(reference->mean_std_error)))
+        return broken(reference, why, why_size, "its description is not four finite numbers");
+    if (image_read_pfm(mean, &reference->image, message, sizeof message) != 0 ||
+        image_read_pfm(error, &reference->std_error, message, sizeof message) != 0)
+        return broken(reference, why, why_size, message);
+    if (reference->image.width != width || reference->image.height != height ||
+        reference->std_error.width != width || reference->std_error.height != height)
+        return broken(reference, why, why_size, "its images are of another size");
+    if (!radiance_like(&reference->image))
+        return broken(reference, why, why_size, "a pixel is negative or not finite");
+    if (!radiance_like(&reference->std_error))
+        return broken(reference, why, why_size, "a standard error is negative or not finite");
+    double image_mean = image_mean_of(&reference->image);
+    if (!(fabs(image_mean - reference->mean) <= 1e-9 * fabs(reference->mean) + 1e-300))
+        return broken(reference, why, why_size, "its stored mean is not its image's");
     reference->noise = measure_rms(&reference->std_error);
     reference->cached = 1;
     return 0;
@@ -231,11 +269,11 @@ static int undo_save(const char *first, const char *second)
     return -1;
 }
 
-int measure_save_reference(const char *directory, uint64_t key, const Reference *reference)
+/* The entry's three files; the description file last: an entry without it is not there
+ * (measure_load_reference). */
+static int save_files(const char *mean, const char *error, const char *info,
+                      const Reference *reference)
 {
-    char mean[4200], error[4200], info[4200];
-    reference_paths(directory, key, mean, error, info, sizeof mean);
-    /* The description file last: an entry without it is not there (measure_load_reference). */
     remove(info);
     if (image_write_pfm(&reference->image, mean) != 0)
         return -1;
@@ -249,6 +287,23 @@ int measure_save_reference(const char *directory, uint64_t key, const Reference 
     if (atomic_close(&file, 0) != 0)
         return undo_save(mean, error);
     return 0;
+}
+
+int measure_save_reference(const char *directory, uint64_t key, const Reference *reference)
+{
+    char mean[4200], error[4200], info[4200];
+    reference_paths(directory, key, mean, error, info, sizeof mean);
+    sigset_t ending, previous;
+    sigemptyset(&ending);
+    sigaddset(&ending, SIGINT);
+    sigaddset(&ending, SIGTERM);
+    sigaddset(&ending, SIGHUP);
+    pthread_sigmask(SIG_BLOCK, &ending, &previous);
+    int status = save_files(mean, error, info, reference);
+    int saved = errno;
+    pthread_sigmask(SIG_SETMASK, &previous, NULL);
+    errno = saved;
+    return status;
 }
 
 void measure_reference_free(Reference *reference)

@@ -154,13 +154,17 @@ int measure_roulette_variance_infinite(double alpha, double max_reflectance);
 #endif
 
 /* Load a cached reference "DIR/HASH.pfm" with its "DIR/HASH-stderr.pfm" and "DIR/HASH.txt"
- * (spp, seconds, mean and its standard error), both images width x height. Returns 0, or -1 when it is not there,
- * unreadable, or of another size. */
+ * (spp, seconds, mean and its standard error), both images width x height. Returns 0; -1
+ * when there is no entry; -2 when the entry is broken, with why in why[why_size]: a file
+ * missing or unreadable, of another size, or not a measurement of radiance (a pixel or
+ * a standard error negative or not finite, metadata not finite, a stored mean that is
+ * not its image's). A broken entry is to be rendered again, never believed. */
 int measure_load_reference(const char *directory, uint64_t key, int width, int height,
-                           Reference *reference);
+                           Reference *reference, char *why, size_t why_size);
 
-/* Store one: the two images, then the .txt that completes the entry. Returns 0, or -1
- * with errno set and nothing of the entry left behind. */
+/* Store one: the two images, then the .txt that completes the entry, with the signals
+ * that end the program held back meanwhile, so that the entry appears whole or not at
+ * all. Returns 0, or -1 with errno set and nothing of the entry left behind. */
 int measure_save_reference(const char *directory, uint64_t key, const Reference *reference);
 
 void measure_reference_free(Reference *reference);

@@ -71,6 +71,8 @@ int ppm_photon_map(PhotonMap *map, const Scene *scene, const PhotonMapSettings *
     memset(map, 0, sizeof *map);
     if (threads <= 0)
         threads = render_core_count();
+    if (threads > settings->emitted)
+        threads = settings->emitted > 0 ? settings->emitted : 1;
     Worker *workers = calloc((size_t)threads, sizeof *workers);
     pthread_t *ids = calloc((size_t)threads, sizeof *ids);
     int status = workers && ids ? 0 : -1;
@@ -124,7 +126,9 @@ static int render_pass(const Scene *scene, const RenderSettings *whole,
     PhotonMapSettings photons = {settings->photons, PHOTON_CAUSTIC, settings->path.fresnel,
                                  photon_seed};
     PhotonMap map;
-    if (ppm_photon_map(&map, scene, &photons, whole->threads, photon_rays) != 0)
+    /* As many threads as the render takes: no more than its rows. */
+    int threads = whole->threads > whole->image.height ? whole->image.height : whole->threads;
+    if (ppm_photon_map(&map, scene, &photons, threads, photon_rays) != 0)
         return -1;
     *stored = map.count;
     CausticPathSettings estimator = {settings->path, &map,
@@ -136,19 +140,6 @@ static int render_pass(const Scene *scene, const RenderSettings *whole,
     int status = render(scene, &pass_render, path_caustics_radiance, &estimator, image);
     photon_map_free(&map);
     return status;
-}
-
-/* The mean of the passes and its standard error, from per-pixel sums over passes. */
-static void finish(const double *sum, const double *sum_squares, int passes, RenderResult *r)
-{
-    long values = 3L * r->image.width * r->image.height;
-    for (long i = 0; i < values; i++) {
-        double mean = passes > 0 ? sum[i] / passes : 0.0, error = 0.0;
-        if (passes > 1)
-            error = sqrt(fmax(sum_squares[i] - passes * mean * mean, 0.0) / (passes - 1) / passes);
-        r->image.pixels[i] = (float)mean;
-        r->std_error.pixels[i] = (float)error;
-    }
 }
 
 /* Another pass, if one is left and the budget allows it: the total time with it (judged
@@ -164,12 +155,15 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
                PpmResult *result)
 {
     PpmResult r = {0};
-    long values = 3L * render->image.width * render->image.height;
-    r.render.image = image_new(render->image.width, render->image.height);
-    r.render.std_error = image_new(render->image.width, render->image.height);
-    double *sum = calloc((size_t)values, sizeof *sum);
-    double *sum_squares = calloc((size_t)values, sizeof *sum_squares);
-    int status = r.render.image.pixels && r.render.std_error.pixels && sum && sum_squares ? 0 : -1;
+    int width = render->image.width, height = render->image.height;
+    r.render.image = image_new(width, height);
+    r.render.std_error = image_new(width, height);
+    r.render.average_std_error = image_new(width, height);
+    /* Each pixel's passes, summed as the renderer sums a pixel's samples: the mean of the
+     * independent pass images and its standard error. */
+    PixelSum *passes = calloc((size_t)width * height, sizeof *passes);
+    int status = r.render.image.pixels && r.render.std_error.pixels &&
+                 r.render.average_std_error.pixels && passes ? 0 : -1;
     int show = render->progress && isatty(STDERR_FILENO);
     double start = stats_now(), cpu_start = stats_cpu_now();
     long stored = 0;
@@ -185,11 +179,9 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
             render_result_free(&pass);
             break;
         }
-        for (long i = 0; i < values; i++) {
-            double v = pass.image.pixels[i];
-            sum[i] += v;
-            sum_squares[i] += v * v;
-        }
+        for (int row = 0; row < height; row++)
+            for (int col = 0; col < width; col++)
+                pixel_sum_add(&passes[(long)row * width + col], image_get(&pass.image, col, row));
         r.passes++;
         stored += pass_stored;
         r.render.threads = pass.threads;
@@ -206,15 +198,14 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
     r.render.seconds = stats_now() - start;
     r.cpu_seconds = stats_cpu_now() - cpu_start;
     if (status == 0) {
-        finish(sum, sum_squares, r.passes, &r.render);
+        pixel_sums_finish(passes, &r.render);
         r.radius = ppm_radius(settings->radius, settings->alpha, r.passes > 0 ? r.passes : 1);
         r.stored = r.passes > 0 ? (double)stored / r.passes : 0.0;
         *result = r;
     } else {
         ppm_result_free(&r);
     }
-    free(sum);
-    free(sum_squares);
+    free(passes);
     return status;
 }
 

@@ -35,8 +35,9 @@ typedef struct {
     double stored;       /* photons stored per pass, on average */
 } PpmResult;
 
-/* The map of settings->emitted photons, shot by `threads` threads (0: one per core);
- * the same map for any count. Returns 0, or -1 when memory runs out. */
+/* The map of settings->emitted photons, shot by `threads` threads (0: one per core; no
+ * more than there are photons); the same map for any count. Returns 0, or -1 when memory
+ * runs out. */
 int ppm_photon_map(PhotonMap *map, const Scene *scene, const PhotonMapSettings *settings,
                    int threads, RayCounts *counts);
 

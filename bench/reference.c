@@ -19,12 +19,19 @@
  * reach the same noise as random positions with about half the samples at 800 x 800,
  * and the batches still give the per-pixel errors without bias, which the chapters
  * subtract from their MSE. It stores the reference as --out/KEY.pfm, KEY-stderr.pfm
- * and KEY.txt. An interrupted render stores nothing and exits with status 130.
+ * and KEY.txt. An interrupted render stores nothing and exits with status 130. With
+ * --parent PID it ends when that program does (Linux: the parent-death signal), so a
+ * chapter program stopped by SIGTERM does not leave it rendering on its own.
  */
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 
 #include "measure.h"
 #include "path_final.h"
@@ -48,10 +55,17 @@ static void fail(int status, const char *format, const char *detail)
 
 typedef struct {
     const char *scene, *name, *fresnel, *sigma, *out, *key;
-    long size, spp, depth;
+    long size, spp, depth, parent;
     unsigned long long seed;
     int quiet;
 } Request;
+
+static const char USAGE[] =
+    "usage: reference --scene FILE --size N --reference-spp N --depth N --out DIR --key HEX\n"
+    "                 [--name NAME] [--fresnel schlick|exact] [--sigma MATERIAL=S] [--seed N]\n"
+    "                 [--parent PID] [--quiet]\n"
+    "Renders the reference image of a scene into DIR/HEX.pfm, HEX-stderr.pfm and HEX.txt.\n"
+    "The chapter programs run it when their cache has no reference yet.\n";
 
 static long whole_number(const char *flag, const char *text, long min, long max)
 {
@@ -72,6 +86,10 @@ static Request parse(int argc, char **argv)
             r.quiet = 1;
             continue;
         }
+        if (strcmp(flag, "--help") == 0) {
+            fputs(USAGE, stdout);
+            exit(0);
+        }
         if (i + 1 >= argc)
             fail(2, "%s: missing value", flag);
         const char *value = argv[++i];
@@ -85,6 +103,7 @@ static Request parse(int argc, char **argv)
         else if (strcmp(flag, "--reference-spp") == 0) r.spp = whole_number(flag, value, 1, 1 << 24);
         else if (strcmp(flag, "--depth") == 0) r.depth = whole_number(flag, value, 1, 1000);
         else if (strcmp(flag, "--seed") == 0) r.seed = strtoull(value, NULL, 10);
+        else if (strcmp(flag, "--parent") == 0) r.parent = whole_number(flag, value, 1, 1L << 30);
         else fail(2, "unknown option '%s' (this program is run by the chapter programs)", flag);
     }
     if (!r.scene || !r.out || !r.key || r.size == 0 || r.spp == 0 || r.depth == 0)
@@ -114,6 +133,13 @@ static void apply_sigma(Scene *scene, const char *sigma)
 int main(int argc, char **argv)
 {
     Request request = parse(argc, argv);
+#ifdef __linux__
+    if (request.parent > 0) {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        if (getppid() != (pid_t)request.parent)
+            fail(1, "%s", "the program that started this one has ended");
+    }
+#endif
     Scene scene;
     char error[4400];
     if (scene_load(request.scene, &scene, error, sizeof error) != 0)

@@ -74,6 +74,7 @@ typedef struct {
     const char *name; /* the first word: a new material's name, or a shape's material */
     int material;     /* shapes: the index of their material */
     double n[NUMBERS_MAX];
+    const char *text[NUMBERS_MAX]; /* the numbers as written, for messages */
 } Statement;
 
 struct Form {
@@ -216,23 +217,24 @@ static int read_material(Reader *r, const Statement *s)
     Vec3 colour = point(s->n);
     if (m.kind == MATERIAL_GLASS) {
         if (!(s->n[0] > 0.0))
-            return fail(r, "index of refraction %g must be > 0", s->n[0]);
+            return fail(r, "index of refraction %.40s must be > 0", s->text[0]);
         m.ior = s->n[0];
     } else if (m.kind == MATERIAL_LIGHT) {
         if (!is_non_negative(colour))
-            return fail(r, "negative emission %g %g %g", colour.x, colour.y, colour.z);
+            return fail(r, "negative emission %.40s %.40s %.40s", s->text[0], s->text[1], s->text[2]);
         if (!(vec3_max_component(colour) <= EMISSION_MAX))
-            return fail(r, "emission %g %g %g above %g: the image's radiance must stay "
-                           "finite", colour.x, colour.y, colour.z, EMISSION_MAX);
+            return fail(r, "emission %.40s %.40s %.40s above %g: the image's radiance must stay "
+                           "finite", s->text[0], s->text[1], s->text[2], EMISSION_MAX);
         m.emission = colour;
     } else {
         if (!in_unit_interval(colour))
-            return fail(r, "reflectance %g %g %g outside [0, 1]", colour.x, colour.y, colour.z);
+            return fail(r, "reflectance %.40s %.40s %.40s outside [0, 1]", s->text[0], s->text[1],
+                        s->text[2]);
         m.reflectance = colour;
     }
     if (s->form->kind == OREN_NAYAR) {
         if (!(s->n[3] >= 0.0))
-            return fail(r, "negative sigma %g (the roughness is >= 0)", s->n[3]);
+            return fail(r, "negative sigma %.40s (the roughness is >= 0)", s->text[3]);
 #if CHAPTER >= 5
         m.sigma = s->n[3];
 #else
@@ -279,7 +281,7 @@ static int read_sphere(Reader *r, const Statement *s)
         return fail(r, "a sphere cannot be a light: area lights are triangles, quads, "
                        "boxes or tetrahedra");
     if (!(s->n[3] > 0.0))
-        return fail(r, "sphere radius %g must be > 0", s->n[3]);
+        return fail(r, "sphere radius %.40s must be > 0", s->text[3]);
     if (size_too_small(s->n[3]))
         return fail_too_small(r, "sphere: a radius of", s->n[3]);
     Sphere sphere = {point(s->n), s->n[3], s->material};
@@ -451,9 +453,11 @@ static int read_statement(Reader *r, char **tokens, int count)
     if (numbers != s.form->numbers)
         return fail(r, "expected %d numbers, found %d (%s)", s.form->numbers,
                     numbers < 0 ? 0 : numbers, s.form->usage);
-    for (int i = 0; i < numbers; i++)
-        if (read_number(r, tokens[1 + s.form->words + i], &s.n[i]) != 0)
+    for (int i = 0; i < numbers; i++) {
+        s.text[i] = tokens[1 + s.form->words + i];
+        if (read_number(r, s.text[i], &s.n[i]) != 0)
             return -1;
+    }
     s.name = s.form->words > 0 ? tokens[1] : NULL;
     s.material = -1;
     /* A shape's one word is the name of its material. */

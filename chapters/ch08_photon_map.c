@@ -57,9 +57,11 @@
 #include "path_roulette.h"
 #include "ppm.h"
 
-/* The photon version's settings, for an image 800 pixels wide (they scale: see above). */
+/* The photon version's settings, for an image 800 pixels wide (they scale: see above);
+ * the first radius as a fraction of the view's width at the lights (ppm_first_radius:
+ * 15.6 in the room, so about 0.05 there). */
 #define PHOTONS_PER_PIXEL 0.5
-#define FIRST_RADIUS_AT_800 0.05
+#define FIRST_RADIUS_AT_800 0.0032
 #define PPM_SHADOW_RAYS 1
 #define PPM_SPP_PER_PASS 2
 #define MAX_PASSES 100000
@@ -89,13 +91,14 @@ static void reference_for(const Options *options, const Scene *scene, Reference 
 
 /* The photon version for a width x height image: photons and radius scaled from 800
  * pixels wide, `spp` camera samples per pass, at most `passes` passes. */
-static PpmSettings photon_settings(const Options *options, int width, int height, int spp,
-                                   int passes)
+static PpmSettings photon_settings(const Options *options, const Scene *scene, int width,
+                                   int height, int spp, int passes)
 {
     PathSettings path = {.max_depth = options->depth, .shadow_rays = PPM_SHADOW_RAYS,
                          .fresnel = options->fresnel, .rr_survival = options->rr};
     PpmSettings ppm = {path, (int)(PHOTONS_PER_PIXEL * width * height + 0.5),
-                       FIRST_RADIUS_AT_800 * 800.0 / width, PPM_ALPHA, spp, passes, 0.0};
+                       ppm_first_radius(scene, FIRST_RADIUS_AT_800) * 800.0 / width, PPM_ALPHA,
+                       spp, passes, 0.0};
     return ppm;
 }
 
@@ -213,13 +216,12 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
     double cpu_start = stats_cpu_now();
     experiment_render(scene, &settings, path_roulette_radiance, &path, &traced);
     double path_cpu = stats_cpu_now() - cpu_start;
-    experiment_write_image(options, "ch08_path", &traced.image, PANEL_EXPOSURE);
-    experiment_exit_if_interrupted(&traced, "ch08_path");
+    experiment_write_panel(options, "ch08_path", &traced);
     TableRow rows[2];
     rows[0] = experiment_row("ch08_path", text, &traced);
     measure_fill_row(&rows[0], &traced.image, reference);
 
-    PpmSettings ppm = photon_settings(options, settings.image.width, settings.image.height,
+    PpmSettings ppm = photon_settings(options, scene, settings.image.width, settings.image.height,
                                       PPM_SPP_PER_PASS, MAX_PASSES);
     ppm.cpu_seconds = path_cpu;
     settings.label = "photon map";
@@ -252,8 +254,15 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
            raw[1] / raw[0], reference->noise, rows[0].rmse, rows[1].rmse,
            rows[1].rmse / rows[0].rmse);
     Vec3 ref_mean = channel_means(&reference->image), mean = channel_means(&photons.render.image);
-    printf("image mean per channel, photon map / reference: %.4f %.4f %.4f\n",
-           mean.x / ref_mean.x, mean.y / ref_mean.y, mean.z / ref_mean.z);
+    const double ours[3] = {mean.x, mean.y, mean.z}, theirs[3] = {ref_mean.x, ref_mean.y, ref_mean.z};
+    printf("image mean per channel, photon map / reference:");
+    for (int c = 0; c < 3; c++) {
+        if (theirs[c] > 0.0)
+            printf(" %.4f", ours[c] / theirs[c]);
+        else
+            printf(" - (the reference's mean is %g)", theirs[c]);
+    }
+    printf("\n");
 
     const Image crop_sources[3] = {reference->image, traced.image, photons.render.image};
     char reference_caption[128];
@@ -502,7 +511,7 @@ static void error_against_time(const Options *options, const Scene *scene)
             if (s == 0) {
                 measure_path(&small, scene, references, lamp, 1 << step, row);
             } else {
-                PpmSettings ppm = photon_settings(&small, width, height, 1, 1 << step);
+                PpmSettings ppm = photon_settings(&small, scene, width, height, 1, 1 << step);
                 ppm.radius *= series_radius[s];
                 ppm.alpha = series_alpha[s];
                 measure_photons(&small, scene, references, lamp, &ppm, row);
@@ -514,7 +523,7 @@ static void error_against_time(const Options *options, const Scene *scene)
      * photons, and half the radius. */
     const double photon_factor[EXTRA] = {4.0, 0.25, 1.0}, radius_factor[EXTRA] = {1.0, 1.0, 0.5};
     for (int e = 0; e < EXTRA; e++) {
-        PpmSettings ppm = photon_settings(&small, width, height, 1, 1 << (STEPS - 1));
+        PpmSettings ppm = photon_settings(&small, scene, width, height, 1, 1 << (STEPS - 1));
         ppm.photons = (int)(ppm.photons * photon_factor[e] + 0.5);
         ppm.radius *= radius_factor[e];
         measure_photons(&small, scene, references, lamp, &ppm, &rows[SERIES * STEPS + e]);

@@ -25,7 +25,7 @@ static void check_loaded(const Scene *scene, const SceneFileInfo *info, const ui
                          size_t size)
 {
     if (!(vec3_length(scene->camera.right) > 0.0 && vec3_length(scene->camera.up) > 0.0) ||
-        !(scene->scale > 0.0 && isfinite(scene->scale)) ||
+        (scene->triangle_count + scene->sphere_count > 0 && scene->bvh.node_count == 0) ||
         info->hash != scene_hash(SCENE_HASH_START, data, size) || info->line_count < 1)
         abort();
     for (int i = 0; i < scene->material_count; i++)

@@ -162,17 +162,28 @@ static int in_child(void (*body)(const char *target), const Scratch *scratch)
 }
 
 /* With a file size limit of 1000 bytes and SIGXFSZ ignored, writes beyond the limit
- * fail with EFBIG; a 100 kB write must then fail in atomic_close with EFBIG. */
-static void write_beyond_size_limit(const char *target)
+ * fail with EFBIG; a 100 kB write must then fail in atomic_close with EFBIG. Unbuffered,
+ * the write fails at once, leaving nothing for the close to flush, so only the stream's
+ * error flag tells atomic_close. */
+static void write_past_size_limit(const char *target, int unbuffered)
 {
     struct rlimit limit = {1000, 1000};
     signal(SIGXFSZ, SIG_IGN);
     AtomicFile out;
     if (setrlimit(RLIMIT_FSIZE, &limit) != 0 || atomic_open(&out, target) != 0)
         _exit(2);
+    if (unbuffered)
+        setvbuf(out.file, NULL, _IONBF, 0);
     write_big(out.file);
     int status = atomic_close(&out, 0);
     _exit(status == -1 && errno == EFBIG ? 0 : 1);
+}
+
+static void write_beyond_size_limit(const char *target) { write_past_size_limit(target, 0); }
+
+static void write_unbuffered_beyond_size_limit(const char *target)
+{
+    write_past_size_limit(target, 1);
 }
 
 /* Killed halfway, before the close. */
@@ -186,15 +197,25 @@ static void die_while_writing(const char *target)
     raise(SIGKILL);
 }
 
-/* The disk refuses the bytes (a file size limit, in a child process): the write fails
- * with EFBIG and the old file survives alone. */
-static void test_write_error_discards(void **state)
+/* `body` writes into a file the disk refuses (a file size limit, in a child process):
+ * the write fails with EFBIG and the old file survives alone. */
+static void expect_write_refused(Scratch *scratch, void (*body)(const char *))
 {
-    Scratch *scratch = *state;
-    int status = in_child(write_beyond_size_limit, scratch);
+    int status = in_child(body, scratch);
     assert_true(WIFEXITED(status));
     assert_int_equal(WEXITSTATUS(status), 0);
     assert_old_file_alone(scratch);
+}
+
+static void test_write_error_discards(void **state)
+{
+    expect_write_refused(*state, write_beyond_size_limit);
+}
+
+/* The same through an unbuffered stream: the failed write alone must discard the file. */
+static void test_unbuffered_write_error_discards(void **state)
+{
+    expect_write_refused(*state, write_unbuffered_beyond_size_limit);
 }
 
 /* The process dies halfway: the old file is intact. Only the temporary file, named after
@@ -406,6 +427,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_caller_failure_discards, make_scratch,
                                         remove_scratch),
         cmocka_unit_test_setup_teardown(test_write_error_discards, make_scratch,
+                                        remove_scratch),
+        cmocka_unit_test_setup_teardown(test_unbuffered_write_error_discards, make_scratch,
                                         remove_scratch),
         cmocka_unit_test_setup_teardown(test_crash_keeps_old_file, make_scratch, remove_scratch),
         cmocka_unit_test_setup_teardown(test_refused_rename_discards, make_scratch,

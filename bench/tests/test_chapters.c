@@ -25,6 +25,7 @@
 #include "image.h"
 
 #define SMALL "--quiet --size 16"
+#define SMALLEST "--quiet --size 8"
 #define FEW_SAMPLES "--spp 2 --reference-spp 4"
 
 /* The programs' folder, $CHAPTER_DIR (or build), and this process's own folder for
@@ -42,14 +43,15 @@ static void scratch(char *folder, size_t size)
     mkdir(folder, 0777);
 }
 
-/* Run one program with SMALL settings and `samples` into a fresh output folder and check its output. */
-static void smoke(const char *name, const char *samples)
+/* Run one program with `size` (SMALL or SMALLEST) and `samples` into a fresh output
+ * folder and check its output. */
+static void smoke_at(const char *name, const char *size, const char *samples)
 {
     char folder[500], out[600], command[2048];
     scratch(folder, sizeof folder);
-    snprintf(out, sizeof out, "%s/%s", folder, name);
-    snprintf(command, sizeof command, "rm -rf %s && %s/%s " SMALL " %s --out %s", out,
-             programs(), name, samples, out);
+    snprintf(out, sizeof out, "%s/%s%s", folder, name, strcmp(size, SMALL) == 0 ? "" : "-smallest");
+    snprintf(command, sizeof command, "rm -rf %s && %s/%s %s %s --out %s", out, programs(),
+             name, size, samples, out);
     FILE *pipe = popen(command, "r");
     assert_non_null(pipe);
     char line[4608];
@@ -80,6 +82,11 @@ static void smoke(const char *name, const char *samples)
     print_message("    %s: %d tables, %d PFM images\n", name, tables, pfms);
     assert_true(tables >= 1);
     assert_true(pfms >= 1);
+}
+
+static void smoke(const char *name, const char *samples)
+{
+    smoke_at(name, SMALL, samples);
 }
 
 static void test_chapter1(void **state) { smoke("ch01_whitted", ""); }
@@ -137,12 +144,50 @@ static void test_chapter7(void **state) { smoke("ch07_final", FEW_SAMPLES); }
 #endif
 #if CHAPTER >= 8
 static void test_chapter8(void **state) { smoke("ch08_photon_map", FEW_SAMPLES); }
+
+/* A lamp with no blue: chapter 8's ratio of the image's channel means to the reference's
+ * has nothing to divide by in blue, and must say so rather than print "nan". */
+static void test_chapter8_lamp_without_blue(void **state)
+{
+    char folder[500], scene[600], command[2400];
+    scratch(folder, sizeof folder);
+    snprintf(scene, sizeof scene, "%s/yellow_lamp.scene", folder);
+    snprintf(command, sizeof command, "sed 's/^material lamp   light   25 25 25/material lamp "
+             "light 25 25 0/' scenes/room.scene > %s", scene);
+    assert_int_equal(system(command), 0);
+    snprintf(command, sizeof command, "%s/ch08_photon_map " SMALL " " FEW_SAMPLES " --scene %s "
+             "--out %s/yellow 2>&1", programs(), scene, folder);
+    FILE *pipe = popen(command, "r");
+    assert_non_null(pipe);
+    char line[4608];
+    int ratios = 0;
+    while (fgets(line, sizeof line, pipe)) {
+        int table_header = strncmp(line, "panel ", 6) == 0; /* its last column is "nan" */
+        if (strstr(line, "nan") && !table_header)
+            fail_msg("ch08_photon_map printed a NaN: %s", line);
+        ratios += strstr(line, "photon map / reference:") != NULL;
+    }
+    assert_int_equal(pclose(pipe), 0);
+    assert_int_equal(ratios, 1);
+}
 #endif
+
+/* The smallest width --size accepts, 8 pixels, renders in every chapter: its crops,
+ * quarter-size sweeps and plots included. */
+static void test_smallest_size(void **state)
+{
+    static const char *const names[] = {"ch01_whitted", "ch02_monte_carlo", "ch03_shadow_rays",
+                                        "ch04_fresnel", "ch05_oren_nayar",
+                                        "ch06_russian_roulette", "ch07_final", "ch08_photon_map"};
+    for (int c = 0; c < CHAPTER && c < 8; c++)
+        smoke_at(names[c], SMALLEST, c == 0 ? "" : FEW_SAMPLES);
+}
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_chapter1),
+        cmocka_unit_test(test_smallest_size),
 #if CHAPTER >= 2
         cmocka_unit_test(test_chapter2),
 #endif
@@ -164,6 +209,7 @@ int main(void)
 #endif
 #if CHAPTER >= 8
         cmocka_unit_test(test_chapter8),
+        cmocka_unit_test(test_chapter8_lamp_without_blue),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -39,6 +39,18 @@ static void test_sparse_bins_are_merged(void **state)
     assert_float_equal(statistic, 2.0 / 3.0 + 1.0 / 14.0, 1e-12);
 }
 
+/* Bins are merged by what they expect, never by what they received: expected {2, 2, 2,
+ * 10} against observed {6, 0, 0, 10} merges the first three (6 against 6) and fits
+ * exactly, X^2 = 0; merging by the observed counts would pair 6 with 2 and give 9.1. */
+static void test_bins_merged_by_expected_counts(void **state)
+{
+    const double observed[] = {6, 0, 0, 10}, expected[] = {2, 2, 2, 10};
+    int dof;
+    double statistic = chi_square_statistic(observed, expected, 4, &dof);
+    assert_int_equal(dof, 1);
+    assert_float_equal(statistic, 0.0, 1e-12);
+}
+
 /* Degenerate inputs: too few expected samples to form two groups leaves nothing to test
  * (dof 0, p = 1); a sample where none can occur is an infinite statistic (p = 0). */
 static void test_degenerate_inputs(void **state)
@@ -117,6 +129,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_statistic_by_hand),
         cmocka_unit_test(test_sparse_bins_are_merged),
+        cmocka_unit_test(test_bins_merged_by_expected_counts),
         cmocka_unit_test(test_degenerate_inputs),
         cmocka_unit_test(test_p_value_at_tabulated_quantiles),
         cmocka_unit_test(test_p_value_closed_forms),

@@ -68,7 +68,8 @@ static void expect_failure(const char *args, const char *message)
 
 static void test_bad_flags(void **state)
 {
-    expect_failure("--size 0", "--size: expected a whole number from 1 to 16384, got '0'");
+    expect_failure("--size 0", "--size: expected a whole number from 8 to 16384, got '0'");
+    expect_failure("--size 7", "--size: expected a whole number from 8 to 16384, got '7'");
     expect_failure("--size -3", "--size: expected a whole number");
     expect_failure("--size abc", "--size: expected a whole number");
     expect_failure("--size 1.5", "--size: expected a whole number");
@@ -180,7 +181,7 @@ static void test_bad_scenes(void **state)
 static void test_aspect_ratio_mismatch(void **state)
 {
     char args[700];
-    snprintf(args, sizeof args, "--scene %s --size 3",
+    snprintf(args, sizeof args, "--scene %s --size 9",
              scene_file("camera 0 0 0  -2 -1 1  2 -1 1  -2 1 1\n" MATERIAL LIGHT));
     expect_failure(args, "aspect ratio");
 }
@@ -253,6 +254,28 @@ static void test_piped_scenes_have_their_own_references(void **state)
     assert_non_null(strstr(output, "spp, cached"));
 }
 
+/* A cache that cannot be written (here a file stands where the folder should be, which
+ * stops root too): the program says why, renders its reference into a temporary folder,
+ * keeps nothing, and still does its work. */
+static void test_unwritable_cache(void **state)
+{
+    const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
+    char command[2400], output[16384];
+    snprintf(command, sizeof command, "mkdir -p %s/nocache && cp %s/ch02_monte_carlo %s/reference "
+             "%s/nocache/ && : > %s/nocache/references", out_dir, directory, directory, out_dir,
+             out_dir);
+    assert_int_equal(system(command), 0);
+    snprintf(command, sizeof command, "%s/nocache/ch02_monte_carlo --quiet --size 16 --spp 1 "
+             "--runs 1 --reference-spp 8 --out %s/nocache/figures 2>&1", out_dir, out_dir);
+    int status = capture(command, output, sizeof output);
+    if (status != 0)
+        fail_msg("status %d:\n%s", status, output);
+    assert_non_null(strstr(output, "cannot write in"));
+    assert_non_null(strstr(output, "Not a directory"));
+    assert_non_null(strstr(output, "nothing is kept"));
+    assert_non_null(strstr(output, "spp, rendered in"));
+}
+
 /* A FIFO can be read only once: the program must not wait to read it again. */
 static void test_scene_from_a_fifo(void **state)
 {
@@ -266,6 +289,25 @@ static void test_scene_from_a_fifo(void **state)
     assert_non_null(strstr(output, "wrote "));
 }
 #endif
+
+/* The bench's own programs speak as the chapters' do: the reference renderer prints its
+ * usage for --help; the gallery makes its --out folder however deep, and fails, rather
+ * than exit 0, when what it prints is lost (standard output on a full device). */
+static void test_bench_programs(void **state)
+{
+    const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
+    char command[2048], output[4096];
+    snprintf(command, sizeof command, "%s/reference --help 2>&1", directory);
+    assert_int_equal(capture(command, output, sizeof output), 0);
+    assert_non_null(strstr(output, "usage: reference"));
+    snprintf(command, sizeof command, "%s/gallery --out %s/deep/er/gallery 2>&1", directory, out_dir);
+    assert_int_equal(capture(command, output, sizeof output), 0);
+    snprintf(command, sizeof command, "%s/deep/er/gallery/index.html", out_dir);
+    assert_int_equal(access(command, F_OK), 0);
+    snprintf(command, sizeof command, "%s/gallery --out %s/deep 2>&1 >/dev/full", directory, out_dir);
+    assert_int_equal(capture(command, output, sizeof output), 1);
+    assert_non_null(strstr(output, "cannot write to the standard output"));
+}
 
 int main(void)
 {
@@ -285,9 +327,11 @@ int main(void)
         cmocka_unit_test(test_bad_scenes),
         cmocka_unit_test(test_aspect_ratio_mismatch),
         cmocka_unit_test(test_help_and_a_good_run),
+        cmocka_unit_test(test_bench_programs),
 #if CHAPTER >= 2
         cmocka_unit_test(test_piped_scenes_have_their_own_references),
         cmocka_unit_test(test_scene_from_a_fifo),
+        cmocka_unit_test(test_unwritable_cache),
 #endif
     };
     int failed = cmocka_run_group_tests(tests, NULL, NULL);

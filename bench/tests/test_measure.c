@@ -543,13 +543,15 @@ static Reference sample_reference(void)
 {
     Reference reference = {.image = image_new(3, 2), .std_error = image_new(3, 2),
                            .spp = 4096, .seconds = 12.345678901234567,
-                           .mean = 0.56789012345678901, .mean_std_error = 1.25e-3};
+                           .mean_std_error = 1.25e-3};
     assert_non_null(reference.image.pixels);
     assert_non_null(reference.std_error.pixels);
     for (int i = 0; i < 18; i++) {
         reference.image.pixels[i] = 0.1f * (float)i + 1e-7f;
         reference.std_error.pixels[i] = 1e-3f / (float)(i + 1);
     }
+    double unused;
+    measure_image_mean(&reference.image, &reference.std_error, &reference.mean, &unused);
     return reference;
 }
 
@@ -571,7 +573,8 @@ static void test_reference_round_trip(void **state)
     assert_int_equal(access(in_scratch(INFO_FILE), R_OK), 0);
 
     Reference loaded;
-    assert_int_equal(measure_load_reference(scratch_dir, KEY, 3, 2, &loaded), 0);
+    char why[256];
+    assert_int_equal(measure_load_reference(scratch_dir, KEY, 3, 2, &loaded, why, sizeof why), 0);
     assert_int_equal(loaded.image.width, 3);
     assert_int_equal(loaded.image.height, 2);
     assert_int_equal(loaded.std_error.width, 3);
@@ -594,8 +597,9 @@ static void test_reference_round_trip(void **state)
 static void test_missing_reference(void **state)
 {
     Reference loaded;
+    char why[256];
     memset(&loaded, 0x5a, sizeof loaded);
-    assert_int_equal(measure_load_reference(scratch_dir, KEY, 3, 2, &loaded), -1);
+    assert_int_equal(measure_load_reference(scratch_dir, KEY, 3, 2, &loaded, why, sizeof why), -1);
     assert_empty(&loaded);
     assert_int_equal(loaded.cached, 0);
 }
@@ -646,20 +650,53 @@ static void garble_info(void)
     assert_int_equal(fclose(file), 0);
 }
 
-/* Each way an entry can be broken (no .txt, a .txt that does not parse, a truncated
- * image, a truncated standard-error image read after a good image, a standard-error
- * image of another size, which measure_image_mean would read past, both images
- * replaced by a consistent 1 x 1 pair, not the size asked for) fails the load
- * with -1 and an empty Reference; under LeakSanitizer, an image read before the
+/* The description with these numbers instead of the saved ones. */
+static void write_info(const char *text)
+{
+    FILE *file = fopen(in_scratch(INFO_FILE), "w");
+    assert_non_null(file);
+    fputs(text, file);
+    assert_int_equal(fclose(file), 0);
+}
+
+static void nan_seconds(void) { write_info("spp 4096 seconds nan mean nan mean_std_error 0.001\n"); }
+static void wrong_mean(void) { write_info("spp 4096 seconds 12 mean 0.5 mean_std_error 0.001\n"); }
+
+/* One value of an image replaced (finite, but not radiance, or not finite). */
+static void damage_value(const char *file, int index, float value)
+{
+    Image image;
+    char error[256];
+    assert_int_equal(image_read_pfm(in_scratch(file), &image, error, sizeof error), 0);
+    image.pixels[index] = value;
+    assert_int_equal(image_write_pfm(&image, in_scratch(file)), 0);
+    image_free(&image);
+}
+
+static void negative_pixel(void) { damage_value(MEAN_FILE, 4, -1e30f); }
+static void infinite_pixel(void) { damage_value(MEAN_FILE, 7, INFINITY); }
+static void negative_std_error(void) { damage_value(STD_ERROR_FILE, 2, -1e-3f); }
+
+/* An entry without its description is not there: -1. Each way an entry can be broken
+ * (a .txt that does not parse or holds NaN, a truncated image, a truncated
+ * standard-error image read after a good image, a standard-error image of another size,
+ * both images replaced by a consistent 1 x 1 pair, a pixel of -1e30 or of infinity, a
+ * negative standard error, a stored mean that is not the image's) fails the load with
+ * -2, a reason, and an empty Reference; under LeakSanitizer, an image read before the
  * failure must have been freed. */
 static void test_broken_reference(void **state)
 {
-    void (*damages[])(void) = {remove_info, garble_info, truncate_mean, truncate_std_error,
-                               mismatch_std_error, replace_by_one_pixel};
+    void (*damages[])(void) = {remove_info, garble_info, nan_seconds, truncate_mean,
+                               truncate_std_error, mismatch_std_error, replace_by_one_pixel,
+                               negative_pixel, infinite_pixel, negative_std_error, wrong_mean};
     for (size_t i = 0; i < sizeof damages / sizeof damages[0]; i++) {
         save_and_damage(damages[i]);
         Reference loaded;
-        assert_int_equal(measure_load_reference(scratch_dir, KEY, 3, 2, &loaded), -1);
+        char why[256] = "";
+        int status = measure_load_reference(scratch_dir, KEY, 3, 2, &loaded, why, sizeof why);
+        print_message("    damage %d: %d (%s)\n", (int)i, status, why);
+        assert_int_equal(status, i == 0 ? -1 : -2);
+        assert_true(i == 0 || why[0] != '\0');
         assert_empty(&loaded);
         assert_int_equal(loaded.cached, 0);
     }

@@ -444,7 +444,7 @@ static void test_emission_bound(void **state)
 {
     expect_error("material L light 1e100 1e100 1e100\n", 1, "'1e100' is out of range");
     expect_error("material L light 1e30 1e30 1e30\n", 1,
-                 "emission 1e+30 1e+30 1e+30 above 1e+20");
+                 "emission 1e30 1e30 1e30 above 1e+20");
     expect_error("material L light 0 1.1e20 0\n", 1, "above 1e+20");
     expect_error("point_light 0 0 0  1 1e21 1\n", 1, "point_light intensity above 1e+20");
     Scene scene;
@@ -487,6 +487,7 @@ static void test_reflectance_out_of_range(void **state)
     expect_error("material m lambert 0.5 1.01 0.5\n", 1, "reflectance 0.5 1.01 0.5 outside [0, 1]");
     expect_error("material m oren_nayar -0.1 0.5 0.5 0.2\n", 1, "outside [0, 1]");
     expect_error("material m mirror 1 1 2\n", 1, "outside [0, 1]");
+    expect_error("material m mirror 1.0000001 1 1\n", 1, "reflectance 1.0000001 1 1 outside [0, 1]");
 }
 
 static void test_negative_emission(void **state)

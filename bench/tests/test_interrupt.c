@@ -1,0 +1,322 @@
+/* test_interrupt.c (bench, chapter 1): every chapter program, stopped at random moments.
+ *
+ * A terminal's Ctrl-C (SIGINT) may come at any moment of a render: the program must
+ * then exit with status 130 (or 0, had it finished), leave no temporary file, and every
+ * image it wrote must be a finished one: the very bytes an uninterrupted run writes,
+ * or the one panel it says it saved, with every pixel sampled at least once.
+ * A supervisor's SIGTERM to the program alone (not to its process group, as a terminal
+ * sends it) must not leave the reference renderer running on its own. And two programs that need the same reference render it
+ * once: the second waits for the first and reads it from the cache. The programs are
+ * found in $CHAPTER_DIR (default build).
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <dirent.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+static const char *const PROGRAMS[] = {
+    "ch01_whitted",          "ch02_monte_carlo", "ch03_shadow_rays", "ch04_fresnel",
+    "ch05_oren_nayar",       "ch06_russian_roulette", "ch07_final",  "ch08_photon_map",
+};
+
+static char out_dir[] = "/tmp/test_interrupt_XXXXXX";
+
+static const char *programs(void)
+{
+    return getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
+}
+
+static void sleep_seconds(double seconds)
+{
+    struct timespec wait = {(time_t)seconds, (long)((seconds - (time_t)seconds) * 1e9)};
+    while (nanosleep(&wait, &wait) != 0)
+        ;
+}
+
+/* Start `program` with `arguments` (split at spaces), its output into `log`; returns its
+ * process id. */
+static pid_t start(const char *program, const char *arguments, const char *log)
+{
+    char path[600], words[1024];
+    snprintf(path, sizeof path, "%s/%s", programs(), program);
+    snprintf(words, sizeof words, "%s", arguments);
+    char *argv[32] = {path};
+    int argc = 1;
+    for (char *word = strtok(words, " "); word && argc < 31; word = strtok(NULL, " "))
+        argv[argc++] = word;
+    argv[argc] = NULL;
+    fflush(NULL);
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        FILE *out = freopen(log, "w", stdout);
+        if (!out || dup2(fileno(out), STDERR_FILENO) < 0)
+            _exit(127);
+        execv(path, argv);
+        _exit(127);
+    }
+    return child;
+}
+
+static int wait_for(pid_t child)
+{
+    int status;
+    assert_int_equal(waitpid(child, &status, 0), child);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+static double seconds_now(void)
+{
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)now.tv_sec + 1e-9 * (double)now.tv_nsec;
+}
+
+static void empty_folder(const char *folder)
+{
+    char command[1600];
+    snprintf(command, sizeof command, "rm -rf '%s' && mkdir -p '%s'", folder, folder);
+    assert_int_equal(system(command), 0);
+}
+
+/* Panels rendered for as long as another took (chapter 8's photon map beside the path
+ * tracer, at equal time): their pass count, and so their bytes, vary from run to run. */
+static int time_budgeted(const char *name)
+{
+    return strcmp(name, "ch08_photon_map.pfm") == 0;
+}
+
+/* The panel the program says it saved when interrupted, and after how many samples per
+ * pixel ("interrupted: saved NAME after S samples per pixel"); 0 if it says none. */
+static int saved_when_interrupted(const char *log, char *name, size_t size, double *spp)
+{
+    FILE *file = fopen(log, "r");
+    assert_non_null(file);
+    char line[4096];
+    int found = 0;
+    while (!found && fgets(line, sizeof line, file)) {
+        char *said = strstr(line, "interrupted: saved ");
+        char saved[256];
+        if (said && sscanf(said, "interrupted: saved %255s after %lf", saved, spp) == 2) {
+            snprintf(name, size, "%s.pfm", saved);
+            found = 1;
+        }
+    }
+    fclose(file);
+    return found;
+}
+
+/* Every file in `folder` is a finished one: no temporary file is left, and each PFM is
+ * byte for byte the one the uninterrupted run wrote into `whole`, if given (a render is
+ * the same for the same seed), but for the one panel the program says it saved when
+ * interrupted, which must have at least one sample in every pixel, and those rendered
+ * in a time budget. Returns the number of
+ * PFMs. */
+static int check_folder(const char *folder, const char *whole, const char *log, const char *what)
+{
+    char partial[300] = "";
+    double spp = 0.0;
+    if (saved_when_interrupted(log, partial, sizeof partial, &spp) && spp < 1.0)
+        fail_msg("%s: saved %s after %.2f samples per pixel: some pixels have none", what,
+                 partial, spp);
+    DIR *directory = opendir(folder);
+    if (!directory)
+        return 0;
+    int pfms = 0;
+    struct dirent *entry;
+    while ((entry = readdir(directory)) != NULL) {
+        const char *name = entry->d_name;
+        if (strstr(name, ".tmp."))
+            fail_msg("%s: a temporary file is left: %s", what, name);
+        size_t length = strlen(name);
+        if (!whole || length < 4 || strcmp(name + length - 4, ".pfm") != 0)
+            continue;
+        char command[2600];
+        snprintf(command, sizeof command, "cmp -s '%s/%s' '%s/%s'", folder, name, whole, name);
+        if (strcmp(name, partial) != 0 && !time_budgeted(name) && system(command) != 0)
+            fail_msg("%s: %s is not the uninterrupted run's, and not said to be partial", what,
+                     name);
+        pfms++;
+    }
+    closedir(directory);
+    return pfms;
+}
+
+/* Start `program` with `settings`, writing into `folder`, and stop it with SIGINT after
+ * `moment` seconds; check what it left. */
+static void interrupt_at(const char *program, const char *settings, const char *folder,
+                         const char *whole, double moment, double duration)
+{
+    char arguments[1400], log[760];
+    snprintf(log, sizeof log, "%s.log", folder);
+    snprintf(arguments, sizeof arguments, "%s --out %s", settings, folder);
+    empty_folder(folder);
+    pid_t child = start(program, arguments, log);
+    sleep_seconds(moment);
+    kill(child, SIGINT);
+    int status = wait_for(child);
+    int pfms = check_folder(folder, whole, log, program);
+    print_message("    %s, SIGINT after %.3f s of %.3f: status %d, %d PFM images\n", program,
+                  moment, duration, status, pfms);
+    assert_true(status == 130 || status == 0);
+}
+
+/* Each program, once to the end and then stopped by SIGINT at random moments of that
+ * run's duration: status 130 (or 0), finished images only. Then stopped early in runs
+ * that would take hours, in the middle of a panel's first samples. */
+static void test_sigint_at_random_moments(void **state)
+{
+    unsigned seed = (unsigned)time(NULL) ^ (unsigned)getpid();
+    srand(seed);
+    print_message("    random moments from seed %u\n", seed);
+    int chapters = CHAPTER < 8 ? CHAPTER : 8;
+    for (int c = 0; c < chapters; c++) {
+        char arguments[800], whole[600], folder[700], log[700];
+        const char *settings = c == 0 ? "--quiet --size 1024"
+                                      : "--quiet --size 24 --spp 64 --reference-spp 8 --seed 5";
+        snprintf(whole, sizeof whole, "%s/%s-whole", out_dir, PROGRAMS[c]);
+        snprintf(log, sizeof log, "%s.log", whole);
+        snprintf(arguments, sizeof arguments, "%s --out %s", settings, whole);
+        empty_folder(whole);
+        wait_for(start(PROGRAMS[c], arguments, log));
+        double began = seconds_now();
+        assert_int_equal(wait_for(start(PROGRAMS[c], arguments, log)), 0);
+        double duration = seconds_now() - began;
+        for (int m = 0; m < 3; m++) {
+            snprintf(folder, sizeof folder, "%s/%s-%d", out_dir, PROGRAMS[c], m);
+            interrupt_at(PROGRAMS[c], settings, folder, whole, duration * rand() / RAND_MAX,
+                         duration);
+        }
+        if (c == 0)
+            continue;
+        const char *endless = "--quiet --size 256 --spp 1048576 --reference-spp 1 --seed 5";
+        snprintf(folder, sizeof folder, "%s/%s-endless", out_dir, PROGRAMS[c]);
+        interrupt_at(PROGRAMS[c], endless, folder, NULL, 2.0, 2.0);
+        for (int m = 0; m < 3; m++)
+            interrupt_at(PROGRAMS[c], endless, folder, NULL, 0.02 + 0.3 * rand() / RAND_MAX, 0.0);
+    }
+}
+
+#if CHAPTER >= 2
+/* The processes whose command line holds "--parent PID": reference renderers started
+ * by that program. */
+static int children_of(pid_t parent)
+{
+    /* The arguments in /proc/PID/cmdline end each in a NUL. */
+    char needle[40];
+    int needle_length = snprintf(needle, sizeof needle, "--parent%c%ld", '\0', (long)parent) + 1;
+    DIR *proc = opendir("/proc");
+    if (!proc)
+        return 0;
+    int found = 0;
+    struct dirent *entry;
+    while (!found && (entry = readdir(proc)) != NULL) {
+        char path[300], line[8192];
+        snprintf(path, sizeof path, "/proc/%s/cmdline", entry->d_name);
+        FILE *file = fopen(path, "rb");
+        if (!file)
+            continue;
+        size_t n = fread(line, 1, sizeof line, file);
+        fclose(file);
+        for (size_t i = 0; i + (size_t)needle_length <= n && !found; i++)
+            found = memcmp(line + i, needle, (size_t)needle_length) == 0;
+    }
+    closedir(proc);
+    return found;
+}
+
+/* SIGTERM to a program alone while its reference renders: the program dies of it, and
+ * so does the reference renderer, within a moment. */
+static void test_sigterm_stops_the_reference_too(void **state)
+{
+    char folder[600], log[700], arguments[800];
+    snprintf(folder, sizeof folder, "%s/sigterm", out_dir);
+    snprintf(log, sizeof log, "%s.log", folder);
+    empty_folder(folder);
+    snprintf(arguments, sizeof arguments,
+             "--quiet --size 64 --spp 4 --reference-spp 1000000 --seed 91 --out %s", folder);
+    pid_t child = start("ch02_monte_carlo", arguments, log);
+    int started = 0;
+    for (int tries = 0; tries < 100 && !started; tries++) {
+        sleep_seconds(0.05);
+        started = children_of(child);
+    }
+    assert_true(started);
+    kill(child, SIGTERM);
+    assert_int_equal(wait_for(child), 128 + SIGTERM);
+    int left = 1;
+    for (int tries = 0; tries < 40 && left; tries++) {
+        sleep_seconds(0.05);
+        left = children_of(child);
+    }
+    print_message("    the reference renderer %s its parent\n", left ? "outlived" : "ended with");
+    assert_false(left);
+    check_folder(folder, NULL, log, "after SIGTERM");
+}
+
+/* Two programs needing the same new reference at once: one renders it, the other reads
+ * it from the cache. */
+static void test_one_reference_for_two_programs(void **state)
+{
+    char arguments[2][800], log[2][700];
+    pid_t children[2];
+    unsigned seed = (unsigned)time(NULL) ^ (unsigned)getpid();
+    for (int i = 0; i < 2; i++) {
+        snprintf(log[i], sizeof log[i], "%s/twice-%d.log", out_dir, i);
+        snprintf(arguments[i], sizeof arguments[i],
+                 "--quiet --size 32 --spp 1 --runs 1 --reference-spp 5000 --seed %u --out %s/twice-%d",
+                 seed, out_dir, i);
+        children[i] = start("ch02_monte_carlo", arguments[i], log[i]);
+    }
+    int rendered = 0, cached = 0;
+    for (int i = 0; i < 2; i++) {
+        assert_int_equal(wait_for(children[i]), 0);
+        FILE *file = fopen(log[i], "r");
+        assert_non_null(file);
+        char line[4096];
+        while (fgets(line, sizeof line, file))
+            if (strncmp(line, "reference:", 10) == 0) {
+                rendered += strstr(line, "spp, rendered in") != NULL;
+                cached += strstr(line, "cached, rendered in") != NULL;
+            }
+        fclose(file);
+    }
+    print_message("    references: %d rendered, %d read from the cache\n", rendered, cached);
+    assert_int_equal(rendered, 1);
+    assert_int_equal(cached, 1);
+}
+#endif
+
+static int make_out_dir(void **state)
+{
+    return mkdtemp(out_dir) ? 0 : -1;
+}
+
+static int remove_out_dir(void **state)
+{
+    char command[200];
+    snprintf(command, sizeof command, "rm -rf '%s'", out_dir);
+    return system(command) == 0 ? 0 : -1;
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sigint_at_random_moments),
+#if CHAPTER >= 2
+        cmocka_unit_test(test_sigterm_stops_the_reference_too),
+        cmocka_unit_test(test_one_reference_for_two_programs),
+#endif
+    };
+    return cmocka_run_group_tests(tests, make_out_dir, remove_out_dir);
+}
