@@ -4,11 +4,9 @@
  * mirror, snell, schlick, whitted, render. What reads the scene file and writes the
  * images, the figure and the table is the bench (bench/experiment.h).
  *
- * The experiment: the room lit by a point light, one ray through each pixel centre.
- * Diffuse surfaces are shaded by a single shadow ray, so shadows are hard and there is
- * no colour bleeding; the mirror wall, the mirror sphere and the glass sphere show the
- * recursive ray tree. Prints the cost of the render; there is nothing to compare it
- * with yet (Whitted is deterministic, so it has no noise to measure).
+ * The experiment: the room lit by a point light, one ray through each pixel centre:
+ * hard shadows, no colour bleeding, and the ray tree in the mirrors and the glass.
+ * Prints the render's cost; Whitted is deterministic, so it has no noise to measure.
  */
 #include <stdio.h>
 
@@ -27,8 +25,7 @@ int main(int argc, char **argv)
     Scene scene;
     experiment_start(argc, argv, &info, NEEDS_POINT_LIGHT, &options, &scene);
     WhittedSettings whitted = {options.depth};
-    RenderSettings settings =
-        experiment_render_settings(&options, &scene, 1, "Whitted");
+    RenderSettings settings = experiment_render_settings(&options, &scene, 1, "Whitted");
     RenderResult result;
     experiment_render(&scene, &settings, whitted_radiance, &whitted, &result);
 
@@ -38,14 +35,10 @@ int main(int argc, char **argv)
     snprintf(caption, sizeof caption, "Figure 1: Whitted ray tracing\n%s\n%.2f s",
              settings_text, result.seconds);
     const char *captions[] = {caption};
-    int whole_pass = render_samples_per_pixel(&result) >= 1.0;
-    if (result.interrupted && !whole_pass)
-        experiment_exit_if_interrupted(&result, NULL);
-    experiment_write_image(&options, "ch01_whitted", &result.image, 1.0);
+    experiment_write_panel(&options, "ch01_whitted", &result);
     experiment_write_figure(&options, "ch01_figure1", &result.image, captions, 1, 1.0);
     TableRow row = experiment_row("Figure 1", settings_text, &result);
     experiment_write_table(&options, "ch01_table", &row, 1);
-    experiment_exit_if_interrupted(&result, "the image");
 
     render_result_free(&result);
     scene_free(&scene);

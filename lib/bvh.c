@@ -1,6 +1,7 @@
 /* bvh.c (chapter 1): building and traversing the hierarchy. See bvh.h. */
 #include "bvh.h"
 
+#include <float.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,13 +20,9 @@ static Box box_union(Box a, Box b)
     return a;
 }
 
-static Box box_of_points(const Vec3 *points, int count)
+static Box box_of(Vec3 lower, Vec3 upper)
 {
-    Box box = EMPTY;
-    for (int i = 0; i < count; i++) {
-        Box point = {{points[i].x, points[i].y, points[i].z}, {points[i].x, points[i].y, points[i].z}};
-        box = box_union(box, point);
-    }
+    Box box = {{lower.x, lower.y, lower.z}, {upper.x, upper.y, upper.z}};
     return box;
 }
 
@@ -37,43 +34,42 @@ static double box_area(Box box)
     return x < 0.0 ? 0.0 : x * y + y * z + z * x;
 }
 
+static double box_size(Box box)
+{
+    return max2(box.upper[0] - box.lower[0],
+                max2(box.upper[1] - box.lower[1], box.upper[2] - box.lower[2]));
+}
+
 static Box primitive_box(BvhPrimitives p, int index)
 {
     if (index < p.triangle_count) {
         const Triangle *t = &p.triangles[index];
-        Vec3 corners[3] = {t->v0, vec3_add(t->v0, t->e1), vec3_add(t->v0, t->e2)};
-        return box_of_points(corners, 3);
+        Vec3 b = vec3_add(t->v0, t->e1), c = vec3_add(t->v0, t->e2);
+        return box_union(box_union(box_of(t->v0, t->v0), box_of(b, b)), box_of(c, c));
     }
     const Sphere *s = &p.spheres[index - p.triangle_count];
     Vec3 r = vec3(s->radius, s->radius, s->radius);
-    Vec3 corners[2] = {vec3_sub(s->center, r), vec3_add(s->center, r)};
-    return box_of_points(corners, 2);
+    return box_of(vec3_sub(s->center, r), vec3_add(s->center, r));
 }
 
 /* A primitive's defining numbers: two primitives are exact copies when their keys are
  * equal, and a copy answers every ray as the first does, so only the first is kept. */
 typedef struct {
-    double key[12];
+    Vec3 key[4];
     int primitive;
 } Keyed;
 
 static void primitive_key(BvhPrimitives p, int index, Keyed *keyed)
 {
-    memset(keyed->key, 0, sizeof keyed->key);
+    Vec3 zero = vec3(0, 0, 0);
     keyed->primitive = index;
     if (index < p.triangle_count) {
         const Triangle *t = &p.triangles[index];
-        const Vec3 v[3] = {t->v0, t->e1, t->e2};
-        for (int i = 0; i < 3; i++) {
-            keyed->key[3 * i] = v[i].x;
-            keyed->key[3 * i + 1] = v[i].y;
-            keyed->key[3 * i + 2] = v[i].z;
-        }
-    } else {
+        memcpy(keyed->key, (Vec3[4]){t->v0, t->e1, t->e2, zero}, sizeof keyed->key);
+    } else { /* the last number 1 tells a sphere from a triangle */
         const Sphere *s = &p.spheres[index - p.triangle_count];
-        const double sphere[4] = {s->center.x, s->center.y, s->center.z, s->radius};
-        memcpy(keyed->key, sphere, sizeof sphere);
-        keyed->key[11] = 1.0; /* a sphere's key never equals a triangle's */
+        memcpy(keyed->key, (Vec3[4]){s->center, vec3(s->radius, 0, 0), zero, vec3(0, 0, 1)},
+               sizeof keyed->key);
     }
 }
 
@@ -114,10 +110,18 @@ static int compare_items(const void *a, const void *b)
     return (ia->primitive > ib->primitive) - (ia->primitive < ib->primitive);
 }
 
+/* The binary tree, built first. */
 typedef struct {
-    Bvh *bvh;
-    const Box *boxes;   /* of every primitive */
-    double *right_area; /* scratch for the heuristic */
+    Box box;
+    int left, right;  /* inner node: its children */
+    int first, count; /* leaf: its entries of the leaf order; inner node: count 0 */
+} BinaryNode;
+
+typedef struct {
+    BinaryNode *nodes;
+    int node_count, *order; /* order: the primitives in leaf order */
+    const Box *boxes;       /* of every primitive */
+    double *right_area;     /* scratch for the heuristic */
 } Builder;
 
 static void sort_along(const Builder *b, Item *items, int count, int axis)
@@ -156,24 +160,11 @@ static int best_split(const Builder *b, Item *items, int count)
     return best;
 }
 
-/* A node's box, widened by more than the rounding of the slab test and of the
- * triangles' edge slack (triangle.h), so that it never turns away a ray that hits. */
-static void set_bounds(BvhNode *node, Box box)
+/* The node over items[0 .. count-1], whose primitives go to order[first ...]; returns
+ * its number. A node whose box centres all coincide cannot be split by them: a leaf. */
+static int build(Builder *b, Item *items, int count, int first, int level)
 {
-    double size = max2(box.upper[0] - box.lower[0],
-                       max2(box.upper[1] - box.lower[1], box.upper[2] - box.lower[2]));
-    double widen = 1e-12 * size + 0x1p-1000;
-    for (int k = 0; k < 3; k++) {
-        node->bounds[0][k] = box.lower[k] - (fabs(box.lower[k]) * 0x1p-50 + widen);
-        node->bounds[1][k] = box.upper[k] + (fabs(box.upper[k]) * 0x1p-50 + widen);
-    }
-}
-
-/* The node over items[0 .. count-1], whose primitives go to primitives[first ...]. A
- * node whose box centres all coincide cannot be split by them: it is a leaf. */
-static void build(Builder *b, Item *items, int count, int first, int level)
-{
-    int index = b->bvh->node_count++;
+    int index = b->node_count++;
     Box box = EMPTY, centres = EMPTY;
     for (int i = 0; i < count; i++) {
         Box primitive = b->boxes[items[i].primitive];
@@ -182,18 +173,16 @@ static void build(Builder *b, Item *items, int count, int first, int level)
             primitive.lower[k] = primitive.upper[k] = primitive.lower[k] + primitive.upper[k];
         centres = box_union(centres, primitive);
     }
-    BvhNode *node = &b->bvh->nodes[index];
-    set_bounds(node, box);
+    BinaryNode *node = &b->nodes[index];
+    *node = (BinaryNode){box, -1, -1, first, count};
     int axis = 0;
     for (int k = 1; k < 3; k++)
         if (centres.upper[k] - centres.lower[k] > centres.upper[axis] - centres.lower[axis])
             axis = k;
     if (count == 1 || !(centres.upper[axis] > centres.lower[axis])) {
-        node->next = first;
-        node->count = count;
         for (int i = 0; i < count; i++)
-            b->bvh->primitives[first + i] = items[i].primitive;
-        return;
+            b->order[first + i] = items[i].primitive;
+        return index;
     }
     int split = count / 2;
     if (level < BVH_SAH_LEVELS)
@@ -201,9 +190,96 @@ static void build(Builder *b, Item *items, int count, int first, int level)
     else
         sort_along(b, items, count, axis);
     node->count = 0;
-    build(b, items, split, first, level + 1);
-    b->bvh->nodes[index].next = b->bvh->node_count;
-    build(b, items + split, count - split, first + split, level + 1);
+    int left = build(b, items, split, first, level + 1);
+    int right = build(b, items + split, count - split, first + split, level + 1);
+    b->nodes[index].left = left;
+    b->nodes[index].right = right;
+    return index;
+}
+
+/* x rounded to floats outward: below <= x <= above, with room for the slab test's own
+ * rounding (docs/chapter1.md derives the step). */
+static void float_bracket(double x, float *below, float *above)
+{
+    float f = (float)x, step = fabsf(f) * 0x1p-21f + 0x1p-100f;
+    *below = f - step;
+    *above = f + step;
+}
+
+/* The children binary node `index` stands for in a four-wide node: itself, then its
+ * inner nodes opened, the largest first, until there are four or only leaves. */
+static int gather_children(const BinaryNode *nodes, int index, int children[BVH_WIDTH])
+{
+    int n = 1;
+    children[0] = index;
+    while (n < BVH_WIDTH) {
+        int largest = -1;
+        for (int k = 0; k < n; k++)
+            if (nodes[children[k]].count == 0 &&
+                (largest < 0 || box_area(nodes[children[k]].box) > box_area(nodes[children[largest]].box)))
+                largest = k;
+        if (largest < 0)
+            break;
+        const BinaryNode *opened = &nodes[children[largest]];
+        children[largest] = opened->left;
+        children[n++] = opened->right;
+    }
+    return n;
+}
+
+/* A leaf's double box, widened by more than the rounding of its slab test and the
+ * triangles' edge slack (triangle.h), so that it never turns away a ray that hits. */
+static int make_leaf(Bvh *bvh, const BinaryNode *node)
+{
+    BvhLeaf *leaf = &bvh->leaves[bvh->leaf_count];
+    const Box *box = &node->box;
+    double widen = 1e-12 * box_size(*box) + 0x1p-1000;
+    for (int k = 0; k < 3; k++) {
+        leaf->bounds[0][k] = box->lower[k] - (fabs(box->lower[k]) * 0x1p-50 + widen);
+        leaf->bounds[1][k] = box->upper[k] + (fabs(box->upper[k]) * 0x1p-50 + widen);
+    }
+    leaf->first = node->first;
+    leaf->count = node->count;
+    return bvh->leaf_count++;
+}
+
+/* The four-wide node for binary node `index`, and its subtree; returns its number. */
+static int make_wide(Bvh *bvh, const BinaryNode *nodes, int index)
+{
+    int wide = bvh->node_count++;
+    int children[BVH_WIDTH];
+    int n = gather_children(nodes, index, children);
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        BvhNode *node = &bvh->nodes[wide];
+        const BinaryNode *c = k < n ? &nodes[children[k]] : NULL;
+        for (int axis = 0; axis < 3; axis++) {
+            float unused;
+            node->bounds[0][axis][k] = INFINITY;
+            node->bounds[1][axis][k] = -INFINITY;
+            if (c) {
+                double lower = (c->box.lower[axis] - bvh->centre[axis]) * bvh->scale;
+                double upper = (c->box.upper[axis] - bvh->centre[axis]) * bvh->scale;
+                float_bracket(lower, &node->bounds[0][axis][k], &unused);
+                float_bracket(upper, &unused, &node->bounds[1][axis][k]);
+            }
+        }
+        node->is_leaf[k] = c && c->count > 0;
+        node->child[k] = !c ? -1 : c->count > 0 ? make_leaf(bvh, c) : make_wide(bvh, nodes, children[k]);
+    }
+    return wide;
+}
+
+/* The frame: the scene's box centred on the origin and scaled by a power of two (so
+ * exactly) into [-1, 1]^3, where floats resolve a scene of any size alike. */
+static void choose_frame(Bvh *bvh, Box box)
+{
+    for (int k = 0; k < 3; k++)
+        bvh->centre[k] = 0.5 * (box.lower[k] + box.upper[k]);
+    double half = 0.5 * box_size(box);
+    int exponent = 0;
+    if (half > 0.0 && isfinite(half))
+        frexp(half, &exponent);
+    bvh->scale = ldexp(1.0, -exponent);
 }
 
 int bvh_build(Bvh *bvh, BvhPrimitives primitives)
@@ -216,24 +292,37 @@ int bvh_build(Bvh *bvh, BvhPrimitives primitives)
     int *kept = malloc((size_t)n * sizeof *kept);
     Item *items = malloc((size_t)n * sizeof *items);
     double *right_area = malloc((size_t)n * sizeof *right_area);
-    bvh->nodes = malloc((size_t)(2 * n - 1) * sizeof *bvh->nodes);
+    BinaryNode *binary = malloc((size_t)(2 * n - 1) * sizeof *binary);
+    bvh->nodes = malloc((size_t)n * sizeof *bvh->nodes);
+    bvh->leaves = malloc((size_t)n * sizeof *bvh->leaves);
     bvh->primitives = malloc((size_t)n * sizeof *bvh->primitives);
+    bvh->triangles = calloc((size_t)n, sizeof *bvh->triangles);
     int count = -1;
-    if (boxes && kept && items && right_area && bvh->nodes && bvh->primitives)
+    if (boxes && kept && items && right_area && binary && bvh->nodes && bvh->leaves &&
+        bvh->primitives && bvh->triangles)
         count = without_copies(primitives, n, kept);
     if (count > 0) {
+        Box all = EMPTY;
         for (int i = 0; i < n; i++)
             boxes[i] = primitive_box(primitives, i);
-        for (int i = 0; i < count; i++)
+        for (int i = 0; i < count; i++) {
             items[i].primitive = kept[i];
-        Builder builder = {bvh, boxes, right_area};
+            all = box_union(all, boxes[kept[i]]);
+        }
+        Builder builder = {binary, 0, bvh->primitives, boxes, right_area};
         build(&builder, items, count, 0, 0);
         bvh->primitive_count = count;
+        for (int i = 0; i < count; i++)
+            if (bvh->primitives[i] < primitives.triangle_count)
+                bvh->triangles[i] = primitives.triangles[bvh->primitives[i]];
+        choose_frame(bvh, all);
+        make_wide(bvh, binary, 0);
     }
     free(boxes);
     free(kept);
     free(items);
     free(right_area);
+    free(binary);
     if (count < 0) {
         bvh_free(bvh);
         return -1;
@@ -244,91 +333,152 @@ int bvh_build(Bvh *bvh, BvhPrimitives primitives)
 void bvh_free(Bvh *bvh)
 {
     free(bvh->nodes);
+    free(bvh->leaves);
     free(bvh->primitives);
+    free(bvh->triangles);
     memset(bvh, 0, sizeof *bvh);
 }
 
-/* What every box test of one ray needs: its origin, 1/d per axis, and which plane of
- * each slab it meets first (the lower one where d >= 0). */
+/* What every box test of one ray needs, worked out once: per axis 1/d and which plane
+ * of the slab it meets first (the lower one where d >= 0). For the float boxes, in the
+ * tree's frame, the origin rounded towards the side that widens each slab, and every
+ * number written four times, once per child. (1/d beyond the floats is infinite.) */
 typedef struct {
-    double origin[3], inverse[3];
-    int near[3];
+    float origin[2][3][BVH_WIDTH]; /* [0] for the near planes, [1] for the far ones */
+    float inverse[3][BVH_WIDTH];
+    int near[3];                   /* 0: the lower plane is met first, 1: the upper */
+    double exact_origin[3], exact_inverse[3];
 } BoxRay;
 
-/* Where the ray enters the node's box within (0, tmax), or infinity if it misses it.
- * A slab the ray runs along (d = 0) gives t = +-inf, or NaN on a plane, which the
- * comparisons skip: the slab counts as met. */
-static double entry(const BvhNode *node, const BoxRay *r, double tmax)
+static void box_ray_axis(BoxRay *r, int axis, double origin, double dir, double centre,
+                         double scale)
+{
+    int near = signbit(dir) ? 1 : 0;
+    double inverse = 1.0 / dir;
+    float below, above;
+    float_bracket((origin - centre) * scale, &below, &above);
+    float inverse_float = fabs(inverse) > FLT_MAX ? (float)copysign(INFINITY, inverse) : (float)inverse;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        r->origin[0][axis][k] = near ? below : above;
+        r->origin[1][axis][k] = near ? above : below;
+        r->inverse[axis][k] = inverse_float;
+    }
+    r->near[axis] = near;
+    r->exact_origin[axis] = origin;
+    r->exact_inverse[axis] = inverse;
+}
+
+/* Where the ray enters each child's box within (0, limit), or infinity where it misses
+ * it: the slab test of four boxes at once. A plain loop over the children, which the
+ * compiler turns into four-wide SSE instructions (`a > b ? a : b` is one of them). */
+static void children_entry(const BvhNode *node, const BoxRay *r, float limit,
+                           float entry[BVH_WIDTH])
+{
+    float near[BVH_WIDTH], far[BVH_WIDTH];
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        near[k] = 0.0f;
+        far[k] = limit;
+    }
+    for (int axis = 0; axis < 3; axis++) {
+        const float *near_plane = node->bounds[r->near[axis]][axis];
+        const float *far_plane = node->bounds[1 - r->near[axis]][axis];
+        for (int k = 0; k < BVH_WIDTH; k++) {
+            float t_near = (near_plane[k] - r->origin[0][axis][k]) * r->inverse[axis][k];
+            float t_far = (far_plane[k] - r->origin[1][axis][k]) * r->inverse[axis][k];
+            near[k] = t_near > near[k] ? t_near : near[k];
+            far[k] = t_far < far[k] ? t_far : far[k];
+        }
+    }
+    for (int k = 0; k < BVH_WIDTH; k++)
+        entry[k] = near[k] <= far[k] ? near[k] : INFINITY;
+}
+
+/* The same test in double for one leaf's box. A slab the ray runs along (d = 0) gives
+ * t = +-inf, or NaN on a plane, which the comparisons skip: the slab counts as met. */
+static int leaf_hit(const BvhLeaf *leaf, const BoxRay *r, double tmax)
 {
     double near = 0.0, far = tmax;
     for (int k = 0; k < 3; k++) {
-        double t_near = (node->bounds[r->near[k]][k] - r->origin[k]) * r->inverse[k];
-        double t_far = (node->bounds[1 - r->near[k]][k] - r->origin[k]) * r->inverse[k];
+        double t_near = (leaf->bounds[r->near[k]][k] - r->exact_origin[k]) * r->exact_inverse[k];
+        double t_far = (leaf->bounds[1 - r->near[k]][k] - r->exact_origin[k]) * r->exact_inverse[k];
         near = t_near > near ? t_near : near;
         far = t_far < far ? t_far : far;
     }
-    return near <= far * (1.0 + 1e-12) ? near : INFINITY;
+    return near <= far * (1.0 + 1e-12);
 }
 
-static double primitive_intersect(BvhPrimitives p, int index, Ray ray, double tmax)
+/* Subtrees still to visit, with where the ray enters their box: one entered beyond the
+ * nearest hit found since is skipped. Each level adds at most BVH_WIDTH - 1 entries. */
+typedef struct {
+    int child, is_leaf;
+    float entry;
+} StackEntry;
+
+/* Push the children the ray meets, those of this node sorted farthest first, so that
+ * the nearest is popped next. */
+static int push_children(const BvhNode *node, const float entry[BVH_WIDTH],
+                         StackEntry *stack, int depth)
 {
+    int bottom = depth;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        if (entry[k] == INFINITY)
+            continue;
+        int i = depth++;
+        for (; i > bottom && stack[i - 1].entry < entry[k]; i--)
+            stack[i] = stack[i - 1];
+        stack[i] = (StackEntry){node->child[k], node->is_leaf[k], entry[k]};
+    }
+    return depth;
+}
+
+static double primitive_intersect(const Bvh *bvh, BvhPrimitives p, int entry, Ray ray,
+                                  double tmax)
+{
+    int index = bvh->primitives[entry];
     if (index < p.triangle_count)
-        return triangle_intersect(&p.triangles[index], ray, 0.0, tmax);
+        return triangle_intersect(&bvh->triangles[entry], ray, 0.0, tmax);
     return sphere_intersect(&p.spheres[index - p.triangle_count], ray, 0.0, tmax);
 }
 
 /* Both queries: any_hit stops at the first hit found. */
 static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int any_hit)
 {
-    BoxRay r = {{ray.origin.x, ray.origin.y, ray.origin.z},
-                {1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z}, {0, 0, 0}};
-    for (int k = 0; k < 3; k++)
-        r.near[k] = signbit(r.inverse[k]) ? 1 : 0;
-    if (bvh->node_count == 0 || entry(&bvh->nodes[0], &r, *tmax) == INFINITY)
+    if (bvh->node_count == 0)
         return -1;
-    /* Second children still to visit, with where the ray enters them: one entered
-     * beyond the nearest hit found since is skipped. */
-    struct { int index; double entry; } stack[BVH_MAX_DEPTH];
-    int depth = 0, nearest = -1, index = 0;
-    for (;;) {
-        const BvhNode *node = &bvh->nodes[index];
-        if (node->count > 0) {
-            for (int i = node->next; i < node->next + node->count; i++) {
-                double t = primitive_intersect(p, bvh->primitives[i], ray, *tmax);
-                if (t < *tmax) {
-                    *tmax = t;
-                    nearest = bvh->primitives[i];
-                    if (any_hit)
-                        return nearest;
-                }
-            }
-        } else {
-            int first = index + 1, second = node->next;
-            double t_first = entry(&bvh->nodes[first], &r, *tmax);
-            double t_second = entry(&bvh->nodes[second], &r, *tmax);
-            if (t_second < t_first) {
-                int swap = first;
-                first = second;
-                second = swap;
-                double t = t_first;
-                t_first = t_second;
-                t_second = t;
-            }
-            if (t_first != INFINITY) {
-                if (t_second != INFINITY) {
-                    stack[depth].index = second;
-                    stack[depth++].entry = t_second;
-                }
-                index = first;
-                continue;
+    BoxRay r;
+    const double origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    const double dir[3] = {ray.dir.x, ray.dir.y, ray.dir.z};
+    for (int k = 0; k < 3; k++)
+        box_ray_axis(&r, k, origin[k], dir[k], bvh->centre[k], bvh->scale);
+    float below, limit; /* *tmax in the frame, rounded up */
+    float_bracket(*tmax * bvh->scale, &below, &limit);
+    StackEntry stack[(BVH_WIDTH - 1) * BVH_MAX_DEPTH + 1] = {{0, 0, 0.0f}};
+    int depth = 1, nearest = -1;
+    while (depth > 0) {
+        StackEntry e = stack[--depth];
+        if (e.entry > limit)
+            continue;
+        if (!e.is_leaf) {
+            float entry[BVH_WIDTH];
+            children_entry(&bvh->nodes[e.child], &r, limit, entry);
+            depth = push_children(&bvh->nodes[e.child], entry, stack, depth);
+            continue;
+        }
+        const BvhLeaf *leaf = &bvh->leaves[e.child];
+        if (!leaf_hit(leaf, &r, *tmax))
+            continue;
+        for (int i = leaf->first; i < leaf->first + leaf->count; i++) {
+            double t = primitive_intersect(bvh, p, i, ray, *tmax);
+            if (t < *tmax) {
+                *tmax = t;
+                nearest = bvh->primitives[i];
+                if (any_hit)
+                    return nearest;
+                float_bracket(t * bvh->scale, &below, &limit);
             }
         }
-        do {
-            if (depth == 0)
-                return nearest;
-            index = stack[--depth].index;
-        } while (stack[depth].entry > *tmax);
     }
+    return nearest;
 }
 
 int bvh_intersect(const Bvh *bvh, BvhPrimitives primitives, Ray ray, double *tmax)

@@ -301,62 +301,77 @@ static void test_random_soups_of_every_size(void **state)
     random_soup(1e45);
 }
 
-/* The depth of the subtree under node `index` (a leaf has depth 1). */
+/* The depth of the subtree under node `index` (a node of leaves only has depth 1). */
 static int depth_of(const Bvh *bvh, int index)
 {
-    const BvhNode *node = &bvh->nodes[index];
-    if (node->count > 0)
-        return 1;
-    int first = depth_of(bvh, index + 1), second = depth_of(bvh, node->next);
-    return 1 + (first > second ? first : second);
+    int deepest = 0;
+    for (int k = 0; k < BVH_WIDTH; k++)
+        if (bvh->nodes[index].child[k] >= 0 && !bvh->nodes[index].is_leaf[k]) {
+            int d = depth_of(bvh, bvh->nodes[index].child[k]);
+            deepest = d > deepest ? d : deepest;
+        }
+    return 1 + deepest;
 }
 
-/* Whether the node's box holds the box [lower, upper] strictly inside it. */
-static int encloses(const BvhNode *node, Vec3 lower, Vec3 upper)
+/* Whether child k's float box holds the box [lower, upper], in the tree's frame. */
+static int encloses(const Bvh *bvh, const BvhNode *node, int k, Vec3 lower, Vec3 upper)
 {
     const double lo[3] = {lower.x, lower.y, lower.z}, hi[3] = {upper.x, upper.y, upper.z};
+    const double *c = bvh->centre;
     for (int axis = 0; axis < 3; axis++)
-        if (!(node->bounds[0][axis] < lo[axis] && node->bounds[1][axis] > hi[axis]))
+        if (!(node->bounds[0][axis][k] <= (lo[axis] - c[axis]) * bvh->scale &&
+              node->bounds[1][axis][k] >= (hi[axis] - c[axis]) * bvh->scale))
             return 0;
     return 1;
 }
 
-/* Every primitive lies strictly inside its leaf's box (widened outward), and every
- * node's children inside the node's own box. Returns the number of primitives found
- * under the node. */
+/* Every primitive lies inside its leaf's float box and strictly inside its leaf's
+ * double box; every node's children inside the node's own box in its parent. Returns
+ * the number of primitives found under the node. */
 static int check_enclosed(const Scene *scene, int index)
 {
     const Bvh *bvh = &scene->bvh;
     const BvhNode *node = &bvh->nodes[index];
-    if (node->count == 0) {
-        const BvhNode *children[2] = {&bvh->nodes[index + 1], &bvh->nodes[node->next]};
-        for (int k = 0; k < 2; k++)
-            for (int axis = 0; axis < 3; axis++)
-                assert_true(children[k]->bounds[0][axis] >= node->bounds[0][axis] &&
-                            children[k]->bounds[1][axis] <= node->bounds[1][axis]);
-        return check_enclosed(scene, index + 1) + check_enclosed(scene, node->next);
-    }
-    for (int i = node->next; i < node->next + node->count; i++) {
-        int prim = bvh->primitives[i];
-        Vec3 lower, upper;
-        if (prim < scene->triangle_count) {
-            const Triangle *t = &scene->triangles[prim];
-            Vec3 a = t->v0, b = vec3_add(t->v0, t->e1), c = vec3_add(t->v0, t->e2);
-            lower = vec3(fmin(a.x, fmin(b.x, c.x)), fmin(a.y, fmin(b.y, c.y)), fmin(a.z, fmin(b.z, c.z)));
-            upper = vec3(fmax(a.x, fmax(b.x, c.x)), fmax(a.y, fmax(b.y, c.y)), fmax(a.z, fmax(b.z, c.z)));
-        } else {
-            const Sphere *s = &scene->spheres[prim - scene->triangle_count];
-            Vec3 r = vec3(s->radius, s->radius, s->radius);
-            lower = vec3_sub(s->center, r);
-            upper = vec3_add(s->center, r);
+    int found = 0;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        if (node->child[k] < 0)
+            continue;
+        if (!node->is_leaf[k]) {
+            const BvhNode *child = &bvh->nodes[node->child[k]];
+            for (int j = 0; j < BVH_WIDTH; j++)
+                for (int axis = 0; axis < 3 && child->child[j] >= 0; axis++)
+                    assert_true(child->bounds[0][axis][j] >= node->bounds[0][axis][k] &&
+                                child->bounds[1][axis][j] <= node->bounds[1][axis][k]);
+            found += check_enclosed(scene, node->child[k]);
+            continue;
         }
-        assert_true(encloses(node, lower, upper));
+        const BvhLeaf *leaf = &bvh->leaves[node->child[k]];
+        for (int i = leaf->first; i < leaf->first + leaf->count; i++, found++) {
+            int prim = bvh->primitives[i];
+            Vec3 lower, upper;
+            if (prim < scene->triangle_count) {
+                const Triangle *t = &scene->triangles[prim];
+                Vec3 a = t->v0, b = vec3_add(t->v0, t->e1), c = vec3_add(t->v0, t->e2);
+                lower = vec3(fmin(a.x, fmin(b.x, c.x)), fmin(a.y, fmin(b.y, c.y)), fmin(a.z, fmin(b.z, c.z)));
+                upper = vec3(fmax(a.x, fmax(b.x, c.x)), fmax(a.y, fmax(b.y, c.y)), fmax(a.z, fmax(b.z, c.z)));
+            } else {
+                const Sphere *s = &scene->spheres[prim - scene->triangle_count];
+                Vec3 r = vec3(s->radius, s->radius, s->radius);
+                lower = vec3_sub(s->center, r);
+                upper = vec3_add(s->center, r);
+            }
+            assert_true(encloses(bvh, node, k, lower, upper));
+            assert_true(leaf->bounds[0][0] < lower.x && leaf->bounds[0][1] < lower.y &&
+                        leaf->bounds[0][2] < lower.z && leaf->bounds[1][0] > upper.x &&
+                        leaf->bounds[1][1] > upper.y && leaf->bounds[1][2] > upper.z);
+        }
     }
-    return node->count;
+    return found;
 }
 
-/* The room's and a soup's boxes enclose what they bound, widened outward, and every
- * primitive is in exactly one leaf. */
+/* The room's and a soup's float boxes enclose what they bound, rounded outward (a box
+ * rounded to nearest instead encloses its primitive only about half the time), and
+ * every primitive is in exactly one leaf. */
 static void test_boxes_enclose_their_primitives(void **state)
 {
     Scene room = load_room();
@@ -395,7 +410,8 @@ static void check_one_leaf(int count, Triangle (*make)(int i, int material), int
     Scene scene = scene_of_triangles(count, make);
     assert_int_equal(scene.bvh.primitive_count, kept);
     assert_int_equal(scene.bvh.node_count, 1);
-    assert_int_equal(scene.bvh.nodes[0].count, kept);
+    assert_int_equal(scene.bvh.leaf_count, 1);
+    assert_int_equal(scene.bvh.leaves[0].count, kept);
     random_rays(&scene, vec3(0, 0, 0), 2.0, 2000);
     scene_free(&scene);
 }
@@ -453,7 +469,7 @@ static void test_empty_and_single(void **state)
     scene_free(&scene);
     Scene one = scene_of_triangles(1, same_triangle);
     assert_int_equal(one.bvh.node_count, 1);
-    assert_int_equal(one.bvh.nodes[0].count, 1);
+    assert_int_equal(one.bvh.leaf_count, 1);
     Ray down = {vec3(0, 0, 2), vec3(0, 0, -1)};
     assert_int_equal(scene_intersect(&one, down, INFINITY, &hit), 1);
     assert_close(hit.t, 2, 0);
