@@ -193,7 +193,7 @@ check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 	done; \
 	markers=$$(grep -c '^#if.*CHAPTER' lib/*.c | awk -F: '{ s += $$2 } END { print s }'); \
 	if [ $$markers -gt 10 ]; then echo "$$markers chapter markers in lib/*.c (at most 10)"; exit 1; fi; \
-	if grep -rnE '\bSPEC\b|[Ii]ssue [0-9]|\.\./shared' lib chapters tests bench; then \
+	if grep -rnE '\bSPEC\b|[Ii]ssue [0-9]|\.\./shared' lib chapters tests bench scenes docs .ci; then \
 	    echo "comments cite documents outside the repository or issues"; exit 1; fi; \
 	for f in lib/*.c lib/*.h; do \
 	    n=$$(awk 'NR == 1 && !/^\/\*/ { print 0; exit } /\*\// { print NR; exit }' $$f); \

@@ -190,10 +190,8 @@ static int build(Builder *b, Item *items, int count, int first, int level)
     else
         sort_along(b, items, count, axis);
     node->count = 0;
-    int left = build(b, items, split, first, level + 1);
-    int right = build(b, items + split, count - split, first + split, level + 1);
-    b->nodes[index].left = left;
-    b->nodes[index].right = right;
+    b->nodes[index].left = build(b, items, split, first, level + 1);
+    b->nodes[index].right = build(b, items + split, count - split, first + split, level + 1);
     return index;
 }
 
@@ -232,14 +230,13 @@ static int gather_children(const BinaryNode *nodes, int index, int children[BVH_
 static int make_leaf(Bvh *bvh, const BinaryNode *node)
 {
     BvhLeaf *leaf = &bvh->leaves[bvh->leaf_count];
+    *leaf = (BvhLeaf){.first = node->first, .count = node->count};
     const Box *box = &node->box;
     double widen = 1e-12 * box_size(*box) + 0x1p-1000;
     for (int k = 0; k < 3; k++) {
         leaf->bounds[0][k] = box->lower[k] - (fabs(box->lower[k]) * 0x1p-50 + widen);
         leaf->bounds[1][k] = box->upper[k] + (fabs(box->upper[k]) * 0x1p-50 + widen);
     }
-    leaf->first = node->first;
-    leaf->count = node->count;
     return bvh->leaf_count++;
 }
 
@@ -350,8 +347,8 @@ typedef struct {
     double exact_origin[3], exact_inverse[3];
 } BoxRay;
 
-static void box_ray_axis(BoxRay *r, int axis, double origin, double dir, double centre,
-                         double scale)
+static inline void box_ray_axis(BoxRay *r, int axis, double origin, double dir, double centre,
+                                double scale)
 {
     int near = signbit(dir) ? 1 : 0;
     double inverse = 1.0 / dir;
@@ -368,27 +365,31 @@ static void box_ray_axis(BoxRay *r, int axis, double origin, double dir, double 
     r->exact_inverse[axis] = inverse;
 }
 
+/* Narrow each child's interval [near, far] to the slab of one axis: a plain loop over
+ * the four children, which the compiler turns into four-wide SSE instructions (`a > b ?
+ * a : b` is one of them). */
+static inline void clip_to_slab(const BvhNode *node, const BoxRay *r, int axis,
+                                float near[BVH_WIDTH], float far[BVH_WIDTH])
+{
+    const float *near_plane = node->bounds[r->near[axis]][axis];
+    const float *far_plane = node->bounds[1 - r->near[axis]][axis];
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        float t_near = (near_plane[k] - r->origin[0][axis][k]) * r->inverse[axis][k];
+        float t_far = (far_plane[k] - r->origin[1][axis][k]) * r->inverse[axis][k];
+        near[k] = t_near > near[k] ? t_near : near[k];
+        far[k] = t_far < far[k] ? t_far : far[k];
+    }
+}
+
 /* Where the ray enters each child's box within (0, limit), or infinity where it misses
- * it: the slab test of four boxes at once. A plain loop over the children, which the
- * compiler turns into four-wide SSE instructions (`a > b ? a : b` is one of them). */
+ * it: the slab test of four boxes at once. */
 static void children_entry(const BvhNode *node, const BoxRay *r, float limit,
                            float entry[BVH_WIDTH])
 {
-    float near[BVH_WIDTH], far[BVH_WIDTH];
-    for (int k = 0; k < BVH_WIDTH; k++) {
-        near[k] = 0.0f;
-        far[k] = limit;
-    }
-    for (int axis = 0; axis < 3; axis++) {
-        const float *near_plane = node->bounds[r->near[axis]][axis];
-        const float *far_plane = node->bounds[1 - r->near[axis]][axis];
-        for (int k = 0; k < BVH_WIDTH; k++) {
-            float t_near = (near_plane[k] - r->origin[0][axis][k]) * r->inverse[axis][k];
-            float t_far = (far_plane[k] - r->origin[1][axis][k]) * r->inverse[axis][k];
-            near[k] = t_near > near[k] ? t_near : near[k];
-            far[k] = t_far < far[k] ? t_far : far[k];
-        }
-    }
+    float near[BVH_WIDTH] = {0}, far[BVH_WIDTH] = {limit, limit, limit, limit};
+    clip_to_slab(node, r, 0, near, far);
+    clip_to_slab(node, r, 1, near, far);
+    clip_to_slab(node, r, 2, near, far);
     for (int k = 0; k < BVH_WIDTH; k++)
         entry[k] = near[k] <= far[k] ? near[k] : INFINITY;
 }
@@ -414,21 +415,17 @@ typedef struct {
     float entry;
 } StackEntry;
 
-/* Push the children the ray meets, those of this node sorted farthest first, so that
- * the nearest is popped next. */
-static int push_children(const BvhNode *node, const float entry[BVH_WIDTH],
-                         StackEntry *stack, int depth)
+/* Push child k if the ray meets it, keeping the children pushed since `bottom` sorted
+ * farthest first, so that the nearest is popped next. */
+static void push_child(const BvhNode *node, int k, float entry, StackEntry *stack,
+                       int bottom, int *depth)
 {
-    int bottom = depth;
-    for (int k = 0; k < BVH_WIDTH; k++) {
-        if (entry[k] == INFINITY)
-            continue;
-        int i = depth++;
-        for (; i > bottom && stack[i - 1].entry < entry[k]; i--)
-            stack[i] = stack[i - 1];
-        stack[i] = (StackEntry){node->child[k], node->is_leaf[k], entry[k]};
-    }
-    return depth;
+    if (entry == INFINITY)
+        return;
+    int i = (*depth)++;
+    for (; i > bottom && stack[i - 1].entry < entry; i--)
+        stack[i] = stack[i - 1];
+    stack[i] = (StackEntry){node->child[k], node->is_leaf[k], entry};
 }
 
 static double primitive_intersect(const Bvh *bvh, BvhPrimitives p, int entry, Ray ray,
@@ -446,13 +443,13 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
     if (bvh->node_count == 0)
         return -1;
     BoxRay r;
-    const double origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
-    const double dir[3] = {ray.dir.x, ray.dir.y, ray.dir.z};
-    for (int k = 0; k < 3; k++)
-        box_ray_axis(&r, k, origin[k], dir[k], bvh->centre[k], bvh->scale);
+    box_ray_axis(&r, 0, ray.origin.x, ray.dir.x, bvh->centre[0], bvh->scale);
+    box_ray_axis(&r, 1, ray.origin.y, ray.dir.y, bvh->centre[1], bvh->scale);
+    box_ray_axis(&r, 2, ray.origin.z, ray.dir.z, bvh->centre[2], bvh->scale);
     float below, limit; /* *tmax in the frame, rounded up */
     float_bracket(*tmax * bvh->scale, &below, &limit);
-    StackEntry stack[(BVH_WIDTH - 1) * BVH_MAX_DEPTH + 1] = {{0, 0, 0.0f}};
+    StackEntry stack[(BVH_WIDTH - 1) * BVH_MAX_DEPTH + 1];
+    stack[0] = (StackEntry){0, 0, 0.0f}; /* the root */
     int depth = 1, nearest = -1;
     while (depth > 0) {
         StackEntry e = stack[--depth];
@@ -461,7 +458,11 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
         if (!e.is_leaf) {
             float entry[BVH_WIDTH];
             children_entry(&bvh->nodes[e.child], &r, limit, entry);
-            depth = push_children(&bvh->nodes[e.child], entry, stack, depth);
+            int bottom = depth; /* four calls, not a loop: the entries stay in registers */
+            push_child(&bvh->nodes[e.child], 0, entry[0], stack, bottom, &depth);
+            push_child(&bvh->nodes[e.child], 1, entry[1], stack, bottom, &depth);
+            push_child(&bvh->nodes[e.child], 2, entry[2], stack, bottom, &depth);
+            push_child(&bvh->nodes[e.child], 3, entry[3], stack, bottom, &depth);
             continue;
         }
         const BvhLeaf *leaf = &bvh->leaves[e.child];
