@@ -15,6 +15,9 @@
 
 #include "figure.h"
 #include "scene_file.h"
+#if CHAPTER >= 7
+#include "sphere_guide.h"
+#endif
 
 /* The bytes of the scene file as read by experiment_load_scene: the scene is read once
  * (a pipe or a FIFO can be read only once), and these bytes name its references and are
@@ -545,6 +548,20 @@ TableRow experiment_path_row(const Options *options, const Scene *scene, Estimat
         image_free(&result.image);
     return row;
 }
+
+#if CHAPTER >= 7
+PathSettings experiment_final_estimator(const Options *options, const MirrorPlanes *mirrors)
+{
+    PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays,
+                         .fresnel = options->fresnel, .mirror_light = options->depth,
+                         .mirrors = mirrors, .sphere_guide = SPHERE_GUIDE_STRENGTH};
+    if (cli_given(options, FLAG_RR))
+        path.rr_survival = options->rr;
+    else
+        path.rr_throughput = 1;
+    return path;
+}
+#endif
 
 void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size)
 {

@@ -142,6 +142,14 @@ TableRow experiment_runs(const Options *options, const Scene *scene,
 int experiment_infinite_variance(const Scene *scene, const PathSettings *path);
 #endif
 
+#if CHAPTER >= 7
+/* Chapter 7's final estimator (Figure 7): M = --shadow-rays, bounded-weight roulette
+ * (or --rr's constant alpha if given), the mirrors' images of the lamps at every diffuse
+ * hit, bounces aimed at the spheres; no mis, which in the room changes nothing
+ * measurable (chapter 7's levers table) for about 2% more work. */
+PathSettings experiment_final_estimator(const Options *options, const MirrorPlanes *mirrors);
+#endif
+
 /* The settings as text for tables and captions, e.g. "depth=16 M=1 schlick rr=0.25". */
 void describe_path(const PathSettings *settings, char *text, int size);
 

@@ -123,7 +123,7 @@ static int render_pass(const Scene *scene, const RenderSettings *whole,
 {
     uint64_t image_seed, photon_seed;
     pass_seeds(whole->image.seed, pass, &image_seed, &photon_seed);
-    PhotonMapSettings photons = {settings->photons, PHOTON_CAUSTIC, settings->path.fresnel,
+    PhotonMapSettings photons = {settings->photons, PHOTON_SPLIT, settings->path.fresnel,
                                  photon_seed};
     PhotonMap map;
     /* As many threads as the render takes: no more than its rows. */

@@ -115,27 +115,11 @@ static TableRow render_setting(const Options *options, const Scene *scene,
                                reference, image);
 }
 
-/* The final image's estimator: M = --shadow-rays, bounded-weight roulette (or --rr's
- * constant alpha if given), the mirror's image of the lamp at every diffuse hit, bounces
- * aimed at the spheres. No mis: in this room it changes nothing measurable (see the
- * levers table) for about 2% more work. */
-static PathSettings final_estimator(const Options *options, const MirrorPlanes *mirrors)
-{
-    PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays,
-                         .fresnel = options->fresnel, .mirror_light = options->depth,
-                         .mirrors = mirrors, .sphere_guide = SPHERE_GUIDE_STRENGTH};
-    if (cli_given(options, FLAG_RR))
-        path.rr_survival = options->rr;
-    else
-        path.rr_throughput = 1;
-    return path;
-}
-
 static void final_image(const Options *options, const Scene *scene, const Reference *reference,
                         const MirrorPlanes *mirrors)
 {
     Image image;
-    PathSettings path = final_estimator(options, mirrors);
+    PathSettings path = experiment_final_estimator(options, mirrors);
     TableRow row = render_path(options, scene, reference, &path, options->spp, "ch07_figure7",
                                options->strata ? " strata" : "", &image);
     char caption[512];

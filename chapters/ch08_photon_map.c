@@ -1,86 +1,74 @@
-/* ch08_photon_map.c (chapter 8): caustics from a photon map, made progressive (beyond the report: its §5
- * names photon mapping, its reference [9], as the way to caustics and shorter renders).
+/* ch08_photon_map.c (chapter 8): caustics from a photon map, made progressive, on top of chapter 7's
+ * final path tracer (beyond the report: its §5 names photon mapping, its reference [9], as
+ * the way to caustics and shorter renders).
  *
  * New concepts (lib/): kdtree (points near a place, fast), photon (shooting photons
  * from the lamps, tracing them through mirrors and glass, the caustic map L S+ D),
  * photon_estimate (reflected radiance from the density of photons, and the progressive
- * radius), and path_caustics, the path tracer under which the photon map, not the path,
- * supplies the light that reaches a diffuse surface through mirrors and glass. The
- * bench renders it in independent passes (bench/ppm.h).
+ * radius), and path_caustics, chapter 7's final path tracer to which the photon map adds
+ * the light that reaches a diffuse surface through mirrors and glass. The bench renders
+ * it in independent passes (bench/ppm.h).
  *
- * Why: chapter 7's image is covered in speckles. The mirror wall, the mirror sphere and
- * the glass sphere send the lamp's light onto the walls and the floor (light, specular,
- * diffuse: L S+ D); a shadow ray cannot see the lamp through a mirror, so the path
- * tracer finds that light only when a path happens to hit the lamp after a specular
- * bounce: rarely, and brightly. Photons go the other way and land there in numbers.
+ * Why: chapter 7 finds the lamp's light by way of the planar mirror wall with shadow
+ * rays to the lamp's image, but the light the glass and mirror spheres focus (light,
+ * specular, diffuse: L S+ D) only when a path happens to hit the lamp after them:
+ * rarely, and brightly. Photons go the other way and land there in numbers. The paths
+ * split: one planar mirror and straight on stays with the images, every other chain of
+ * mirrors and glass goes to the map (path_caustics.h), so nothing is counted twice.
  *
  * The experiment:
- *   - the figure: chapter 7's estimator (its shadow rays, roulette and exact Fresnel)
- *     against the path tracer with photon-mapped caustics, at equal time: the photon
- *     version gets as much processor time as the path tracer took (processor time, all
+ *   - the figure: chapter 7's final estimator (Figure 7's: its sub-pixels and stratified
+ *     pairs, one shadow ray, bounded roulette, the mirror's images, the sphere guide)
+ *     against the same estimator with photon-mapped caustics, at equal time: the photon
+ *     version gets as much processor time as chapter 7's took (processor time, all
  *     threads together, so that other programs sharing the machine do not change the
- *     comparison; the wall-clock time is printed too) and renders as many passes as fit.
- *     Captions give the time and the error against the reference (chapter 7's, the path
- *     tracer at many samples); a second figure enlarges the caustic under the glass
- *     sphere. The reference's own noise is printed, and the errors with its variance
- *     taken out;
+ *     comparison; the wall-clock time is printed too) and renders as many passes as fit,
+ *     each on stratified sub-pixels of its own. Captions give the time and the error
+ *     against the reference; two more figures enlarge the caustic under the glass sphere
+ *     and the lamp's image in the mirror wall;
  *   - a table and a log-log plot of error against time on a quarter-size image, each
- *     setting rendered with SEEDS seeds: the path tracer as its samples double; the
- *     photon map as its passes double, with the radius shrinking (alpha = 2/3) and
- *     fixed (alpha = 1); and the photon count and initial radius varied. The error
- *     splits into bias and variance. For the K images X_1..X_K of one setting, the mean
- *     over pixels of their sample variance is V, one image's variance. Their average X
- *     has error X - T = b + e (bias b, noise e of variance V / K), and each of two
+ *     setting rendered with SEEDS seeds: chapter 7's final estimator as its samples
+ *     double; the photon map as its passes double, with the radius shrinking (alpha =
+ *     2/3) and fixed (alpha = 1); and the photon count and initial radius varied. The
+ *     error splits into bias and variance. For the K images X_1..X_K of one setting, the
+ *     mean over pixels of their sample variance is V, one image's variance. Their average
+ *     X has error X - T = b + e (bias b, noise e of variance V / K), and each of two
  *     references R_1, R_2 of independent seeds has R_j - T = n_j. Then
  *         E[(X - R_1)(X - R_2)] = b^2 + V / K,
  *     the references' noise dropping out of the product (n_1 and n_2 are independent of
  *     each other and of e, with mean 0); so bias^2 is the mean of that product minus
  *     V / K, with no estimate of the references' own noise needed. The mean squared
  *     error of one image is bias^2 + V. These are measured without the lamp and its
- *     images in the mirrors and the glass (lamp_mask): their edges' noise is the same in
- *     every estimator and at a quarter size would hide everything else.
+ *     images in the mirrors and the glass (lamp_mask): their edges' noise is the same
+ *     estimator in both and at a quarter size would hide everything else.
  *
- * Both panels sample random positions in their pixels (the reference's batches of
- * sub-pixels estimate the same image): a photon pass is a render of its own, and
- * sub-pixel centres would put every pass's samples in the same places. The photon version uses one shadow ray (chapter 3's cheapest): with
- * the caustics gone, most of its error is at the edges of the lamp and of its images in
- * the mirrors, which are the same estimator in both panels and which only more camera
- * samples reduce. Photons per pass and the first radius scale with the image: per pass
- * a fixed number of photons per pixel, and the radius in proportion to a pixel's size.
+ * Photons per pass and the first radius scale with the image: per pass a fixed number of
+ * photons per pixel, and the radius in proportion to a pixel's size.
  */
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "atomic_file.h"
 #include "experiment.h"
+#include "path_final.h"
 #include "plot.h"
-#include "path_roulette.h"
 #include "ppm.h"
 
 /* The photon version's settings, for an image 800 pixels wide (they scale: see above);
  * the first radius as a fraction of the view's width at the lights (ppm_first_radius:
- * 15.6 in the room, so about 0.05 there). */
+ * 15.6 in the room, so about 0.05 there). docs/chapter8.md: how they were chosen. */
 #define PHOTONS_PER_PIXEL 0.5
 #define FIRST_RADIUS_AT_800 0.0032
-#define PPM_SHADOW_RAYS 1
-#define PPM_SPP_PER_PASS 2
+#define PPM_SPP_PER_PASS 8
 #define MAX_PASSES 100000
 
-/* The table's settings: seeds per setting, and the largest samples and passes. */
-enum { SEEDS = 4, STEPS = 5 };
+/* The table's settings: seeds per setting, steps of doubling passes (and samples), and
+ * camera samples per pass (chapter 7's estimator takes as many per pass of the photon
+ * map's). */
+enum { SEEDS = 4, STEPS = 5, TABLE_SPP_PER_PASS = 2 };
 
-/* Where the crop of the caustic is, and how much it is enlarged. */
+/* How much the crops are enlarged. */
 enum { CROP_SCALE = 5 };
-
-/* Chapter 7's path tracer as the report built it: M shadow rays and constant-alpha
- * roulette (none of chapter 7's levers: the lamp's mirror images would be counted again
- * by the caustic map, path.h). */
-static PathSettings chapter7_estimator(const Options *options)
-{
-    PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays,
-                         .fresnel = options->fresnel, .rr_survival = options->rr};
-    return path;
-}
 
 /* The reference: the same image as chapter 7's, shared with it through the cache. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
@@ -89,14 +77,13 @@ static void reference_for(const Options *options, const Scene *scene, Reference 
     experiment_path_reference(options, scene, &estimator, NULL, 0.0, reference);
 }
 
-/* The photon version for a width x height image: photons and radius scaled from 800
- * pixels wide, `spp` camera samples per pass, at most `passes` passes. */
-static PpmSettings photon_settings(const Options *options, const Scene *scene, int width,
+/* The photon version of chapter 7's final estimator `path` for a width x height image:
+ * photons and radius scaled from 800 pixels wide, `spp` camera samples per pass, at most
+ * `passes` passes. */
+static PpmSettings photon_settings(const PathSettings *path, const Scene *scene, int width,
                                    int height, int spp, int passes)
 {
-    PathSettings path = {.max_depth = options->depth, .shadow_rays = PPM_SHADOW_RAYS,
-                         .fresnel = options->fresnel, .rr_survival = options->rr};
-    PpmSettings ppm = {path, (int)(PHOTONS_PER_PIXEL * width * height + 0.5),
+    PpmSettings ppm = {*path, (int)(PHOTONS_PER_PIXEL * width * height + 0.5),
                        ppm_first_radius(scene, FIRST_RADIUS_AT_800) * 800.0 / width, PPM_ALPHA,
                        spp, passes, 0.0};
     return ppm;
@@ -133,18 +120,42 @@ static Vec3 channel_means(const Image *image)
     return vec3(sum[0] / pixels, sum[1] / pixels, sum[2] / pixels);
 }
 
-/* Where the caustic of the first glass sphere is seen, in pixels: a ball lens focuses
- * the lamp's light on the line from the lamp through its centre, so the crop is centred
- * where that line, beyond the sphere, meets a surface. Returns 0 if the scene has no
- * glass sphere or that point is not in view. */
-static int caustic_position(const Scene *scene, int width, int height, int *col, int *row)
+/* Where the point p is seen, in pixels: where the line from the eye to p crosses the
+ * image plane. Returns 0 if that is behind the eye or outside the image. */
+static int pixel_of(const Scene *scene, Vec3 p, int width, int height, int *col, int *row)
 {
-    Vec3 lamp = vec3(0, 0, 0); /* the lamps' centre, weighted by area */
+    const Camera *c = &scene->camera;
+    Vec3 normal = vec3_cross(c->right, c->up), to_p = vec3_sub(p, c->eye);
+    double t = vec3_dot(vec3_sub(c->bottom_left, c->eye), normal) / vec3_dot(to_p, normal);
+    if (!(t > 0.0))
+        return 0;
+    Vec3 q = vec3_sub(vec3_add_scaled(c->eye, to_p, t), c->bottom_left);
+    double u = vec3_dot(q, c->right) / vec3_dot(c->right, c->right);
+    double v = vec3_dot(q, c->up) / vec3_dot(c->up, c->up);
+    *col = (int)(u * width);
+    *row = (int)((1.0 - v) * height);
+    return *col >= 0 && *col < width && *row >= 0 && *row < height;
+}
+
+/* The lamps' centre, weighted by area. */
+static Vec3 lamp_centre(const Scene *scene)
+{
+    Vec3 lamp = vec3(0, 0, 0);
     for (int k = 0; k < scene->light_count; k++) {
         const Triangle *t = &scene->triangles[scene->light_triangles[k]];
         Vec3 centroid = vec3_add(t->v0, vec3_scale(vec3_add(t->e1, t->e2), 1.0 / 3.0));
         lamp = vec3_add_scaled(lamp, centroid, t->area / scene->light_area);
     }
+    return lamp;
+}
+
+/* Where the caustic of the first glass sphere is seen: a ball lens focuses the lamp's
+ * light on the line from the lamp through its centre, so where that line, beyond the
+ * sphere, meets a surface. Returns 0 if the scene has no glass sphere or that point is
+ * not in view. */
+static int caustic_position(const Scene *scene, int width, int height, int *col, int *row)
+{
+    Vec3 lamp = lamp_centre(scene);
     for (int i = 0; i < scene->sphere_count; i++) {
         const Sphere *s = &scene->spheres[i];
         if (scene->materials[s->material].kind != MATERIAL_GLASS)
@@ -154,25 +165,33 @@ static int caustic_position(const Scene *scene, int width, int height, int *col,
         Hit hit;
         if (!scene_intersect(scene, beyond, INFINITY, &hit))
             return 0;
-        /* Where the line from the eye to the hit crosses the image plane. */
-        const Camera *c = &scene->camera;
-        Vec3 normal = vec3_cross(c->right, c->up), to_hit = vec3_sub(hit.point, c->eye);
-        double t = vec3_dot(vec3_sub(c->bottom_left, c->eye), normal) / vec3_dot(to_hit, normal);
-        if (!(t > 0.0))
-            return 0;
-        Vec3 q = vec3_sub(vec3_add_scaled(c->eye, to_hit, t), c->bottom_left);
-        double u = vec3_dot(q, c->right) / vec3_dot(c->right, c->right);
-        double v = vec3_dot(q, c->up) / vec3_dot(c->up, c->up);
-        *col = (int)(u * width);
-        *row = (int)((1.0 - v) * height);
-        return *col >= 0 && *col < width && *row >= 0 && *row < height;
+        return pixel_of(scene, hit.point, width, height, col, row);
     }
     return 0;
 }
 
+/* Where the lamps' image in the first planar mirror is seen: their centre mirrored in
+ * its plane, if the eye sees that point in a mirror. Returns 0 otherwise. */
+static int mirror_image_position(const Scene *scene, const MirrorPlanes *mirrors, int width,
+                                 int height, int *col, int *row)
+{
+    if (mirrors->count == 0)
+        return 0;
+    const MirrorPlane *plane = &mirrors->planes[0];
+    Vec3 lamp = lamp_centre(scene);
+    Vec3 image = vec3_add_scaled(lamp, plane->normal,
+                                 -2.0 * (vec3_dot(plane->normal, lamp) - plane->offset));
+    Ray view = {scene->camera.eye, vec3_normalize(vec3_sub(image, scene->camera.eye))};
+    Hit hit;
+    if (!scene_intersect(scene, view, INFINITY, &hit) || hit.triangle < 0 ||
+        scene->materials[hit.material].kind != MATERIAL_MIRROR)
+        return 0;
+    return pixel_of(scene, image, width, height, col, row);
+}
+
 /* A square of side width / CROP_SCALE around (col, row), kept inside the image, each
  * pixel repeated CROP_SCALE times. */
-static Image caustic_crop(const Image *image, int col, int row)
+static Image crop_around(const Image *image, int col, int row)
 {
     int side = image->width / CROP_SCALE < image->height ? image->width / CROP_SCALE : image->height;
     int left = col - side / 2, top = row - side / 2;
@@ -187,41 +206,38 @@ static Image caustic_crop(const Image *image, int col, int row)
     return crop;
 }
 
-static void write_crops(const Options *options, const Scene *scene, const Image images[3],
-                        const char *const captions[3])
+/* The figure NAME of the three images cropped around (col, row). */
+static void write_crops(const Options *options, const char *name, const Image images[3],
+                        const char *const captions[3], int col, int row)
 {
-    int col, row;
-    if (!caustic_position(scene, images[0].width, images[0].height, &col, &row)) {
-        printf("no glass sphere with a floor under it in view: no crop of its caustic\n");
-        return;
-    }
     Image crops[3];
     for (int i = 0; i < 3; i++)
-        crops[i] = caustic_crop(&images[i], col, row);
-    experiment_write_figure(options, "ch08_caustic_crop", crops, captions, 3, PANEL_EXPOSURE);
+        crops[i] = crop_around(&images[i], col, row);
+    experiment_write_figure(options, name, crops, captions, 3, PANEL_EXPOSURE);
     for (int i = 0; i < 3; i++)
         image_free(&crops[i]);
 }
 
-/* The figure: chapter 7's estimator, then the photon version in the same processor time. */
-static void equal_time_figure(const Options *options, const Scene *scene, const Reference *reference)
+/* The figure: chapter 7's final estimator, then the photon version in the same
+ * processor time; and the crops. */
+static void equal_time_figure(const Options *options, const Scene *scene, const PathSettings *path,
+                              const Reference *reference)
 {
-    PathSettings path = chapter7_estimator(options);
     RenderSettings settings = experiment_render_settings(options, scene, options->spp,
-                                                         PIXEL_RANDOM, "chapter 7's path tracer");
-    char description[64], text[96];
-    describe_path(&path, description, sizeof description);
-    snprintf(text, sizeof text, "%d spp, %s", options->spp, description);
+                                                         PIXEL_STRATIFIED, "chapter 7's final estimator");
+    char description[128], text[192];
+    describe_path(path, description, sizeof description);
+    snprintf(text, sizeof text, "%d spp, %s strata", options->spp, description);
     RenderResult traced;
     double cpu_start = stats_cpu_now();
-    experiment_render(scene, &settings, path_roulette_radiance, &path, &traced);
+    experiment_render(scene, &settings, path_final_radiance, path, &traced);
     double path_cpu = stats_cpu_now() - cpu_start;
     experiment_write_panel(options, "ch08_path", &traced);
     TableRow rows[2];
     rows[0] = experiment_row("ch08_path", text, &traced);
     measure_fill_row(&rows[0], &traced.image, reference);
 
-    PpmSettings ppm = photon_settings(options, scene, settings.image.width, settings.image.height,
+    PpmSettings ppm = photon_settings(path, scene, settings.image.width, settings.image.height,
                                       PPM_SPP_PER_PASS, MAX_PASSES);
     ppm.cpu_seconds = path_cpu;
     settings.label = "photon map";
@@ -232,8 +248,8 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
     rows[1] = experiment_row("ch08_photon_map", text, &photons.render);
     measure_fill_row(&rows[1], &photons.render.image, reference);
 
-    char captions[2][256];
-    experiment_caption(&rows[0], "chapter 7: path tracer", captions[0], sizeof captions[0]);
+    char captions[2][320];
+    experiment_caption(&rows[0], "chapter 7: final estimator (Figure 7)", captions[0], sizeof captions[0]);
     experiment_caption(&rows[1], "chapter 8: + photon-mapped caustics, equal time",
                        captions[1], sizeof captions[1]);
     const char *caption_list[] = {captions[0], captions[1]};
@@ -245,7 +261,7 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
     double raw[2], unused;
     measure_error(&traced.image, &reference->image, &raw[0], &unused);
     measure_error(&photons.render.image, &reference->image, &raw[1], &unused);
-    printf("\nequal time: processor time %.1f s (path tracer) and %.1f s (photon map: passes %d, "
+    printf("\nequal time: processor time %.1f s (chapter 7) and %.1f s (photon map: passes %d, "
            "photons per pass %d, stored per pass %.0f); wall clock %.1f s and %.1f s\n",
            path_cpu, photons.cpu_seconds, photons.passes, ppm.photons, photons.stored,
            rows[0].seconds, rows[1].seconds);
@@ -253,6 +269,8 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
            "own variance (its noise %.4f): %.4f and %.4f, ratio %.3f\n", raw[0], raw[1],
            raw[1] / raw[0], reference->noise, rows[0].rmse, rows[1].rmse,
            rows[1].rmse / rows[0].rmse);
+    printf("efficiency (1 / (rel_mse x seconds)): %.3g and %.3g, ratio %.2f\n", rows[0].efficiency,
+           rows[1].efficiency, rows[1].efficiency / rows[0].efficiency);
     Vec3 ref_mean = channel_means(&reference->image), mean = channel_means(&photons.render.image);
     const double ours[3] = {mean.x, mean.y, mean.z}, theirs[3] = {ref_mean.x, ref_mean.y, ref_mean.z};
     printf("image mean per channel, photon map / reference:");
@@ -268,9 +286,17 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
     char reference_caption[128];
     snprintf(reference_caption, sizeof reference_caption, "reference (path tracer, %.0f spp)",
              reference->spp);
-    const char *crop_captions[3] = {reference_caption, "chapter 7: path tracer",
+    const char *crop_captions[3] = {reference_caption, "chapter 7: final estimator",
                                     "chapter 8: photon map, equal time"};
-    write_crops(options, scene, crop_sources, crop_captions);
+    int col, row, width = traced.image.width, height = traced.image.height;
+    if (caustic_position(scene, width, height, &col, &row))
+        write_crops(options, "ch08_caustic_crop", crop_sources, crop_captions, col, row);
+    else
+        printf("no glass sphere with a surface under it in view: no crop of its caustic\n");
+    if (mirror_image_position(scene, path->mirrors, width, height, &col, &row))
+        write_crops(options, "ch08_mirror_crop", crop_sources, crop_captions, col, row);
+    else
+        printf("no lamp seen in a planar mirror: no crop of its image\n");
     render_result_free(&traced);
     ppm_result_free(&photons);
 }
@@ -359,21 +385,21 @@ static RenderSettings seeded_settings(const Options *small, const Scene *scene, 
     Options seeded = *small;
     seeded.seed = small->seed + (uint64_t)k;
     seeded.quiet = 1;
-    return experiment_render_settings(&seeded, scene, spp, PIXEL_RANDOM, "table");
+    return experiment_render_settings(&seeded, scene, spp, PIXEL_STRATIFIED, "table");
 }
 
-static void measure_path(const Options *small, const Scene *scene, const Reference references[2],
-                         const unsigned char *lamp, int spp, Measurement *m)
+static void measure_path(const Options *small, const Scene *scene, const PathSettings *path,
+                         const Reference references[2], const unsigned char *lamp, int spp,
+                         Measurement *m)
 {
-    PathSettings path = chapter7_estimator(small);
-    *m = (Measurement){"path tracer", spp, 0, 0, 0.0, 0.0, 0, 0, 0, 0, 0, 0, 0, 0};
+    *m = (Measurement){"chapter 7 final", spp, 0, 0, 0.0, 0.0, 0, 0, 0, 0, 0, 0, 0, 0};
     SeedImages seeds;
     seeds_begin(&seeds, 3L * references[0].image.width * references[0].image.height, lamp);
     for (int k = 0; k < SEEDS; k++) {
         RenderSettings settings = seeded_settings(small, scene, k, spp);
         RenderResult result;
         double cpu = stats_cpu_now();
-        experiment_render(scene, &settings, path_roulette_radiance, &path, &result);
+        experiment_render(scene, &settings, path_final_radiance, path, &result);
         cpu = stats_cpu_now() - cpu;
         experiment_exit_if_interrupted(&result, NULL);
         seeds_add(&seeds, &result.image, result.seconds, cpu, &references[0]);
@@ -391,7 +417,7 @@ static void measure_photons(const Options *small, const Scene *scene, const Refe
     SeedImages seeds;
     seeds_begin(&seeds, 3L * references[0].image.width * references[0].image.height, lamp);
     for (int k = 0; k < SEEDS; k++) {
-        RenderSettings settings = seeded_settings(small, scene, k, 1);
+        RenderSettings settings = seeded_settings(small, scene, k, ppm->spp);
         PpmResult result;
         render_ppm(scene, &settings, ppm, &result);
         seeds_add(&seeds, &result.render.image, result.render.seconds, result.cpu_seconds,
@@ -443,19 +469,20 @@ static void write_measurements(const Options *options, const Measurement *rows, 
 }
 
 /* The pixels that show the lamp or its images in the mirrors and the glass, and their
- * neighbours: bright in the path tracer's image without caustics (the caustic option
- * with an empty map), which nothing else is. Their noise is the same in every estimator
- * here and, at a quarter size, dominates the RMSE; the bias and variance are measured
- * without them. Returns the mask (1: left out), one byte per pixel. */
-static unsigned char *lamp_mask(const Options *small, const Scene *scene, int *left_out)
+ * neighbours: bright in the image without caustics (the photon version with an empty
+ * map), which nothing else is. Their noise is the same estimator in both here and, at a
+ * quarter size, dominates the RMSE; the bias and variance are measured without them.
+ * Returns the mask (1: left out), one byte per pixel. */
+static unsigned char *lamp_mask(const Options *small, const Scene *scene, const PathSettings *path,
+                                int *left_out)
 {
     PhotonMap empty;
     if (photon_map_build(&empty, NULL, 0, 0) != 0)
         cli_fail(1, "out of memory");
-    CausticPathSettings without = {chapter7_estimator(small), &empty, 1.0};
+    CausticPathSettings without = {*path, &empty, 1.0};
     Options quiet = *small;
     quiet.quiet = 1;
-    RenderSettings settings = experiment_render_settings(&quiet, scene, 16, PIXEL_RANDOM, "mask");
+    RenderSettings settings = experiment_render_settings(&quiet, scene, 16, PIXEL_STRATIFIED, "mask");
     RenderResult result;
     experiment_render(scene, &settings, path_caustics_radiance, &without, &result);
     experiment_exit_if_interrupted(&result, NULL);
@@ -482,7 +509,7 @@ static unsigned char *lamp_mask(const Options *small, const Scene *scene, int *l
 }
 
 /* The table and the plot, on a quarter-size image. */
-static void error_against_time(const Options *options, const Scene *scene)
+static void error_against_time(const Options *options, const Scene *scene, const PathSettings *path)
 {
     Options small = experiment_quarter_size(options);
     /* Two references of independent seeds: the product of an image's errors against the
@@ -496,8 +523,8 @@ static void error_against_time(const Options *options, const Scene *scene)
     int width, height;
     experiment_image_size(&small, scene, &width, &height);
     int left_out;
-    unsigned char *lamp = lamp_mask(&small, scene, &left_out);
-    /* The series of the plot: the path tracer as its samples double, then the photon
+    unsigned char *lamp = lamp_mask(&small, scene, path, &left_out);
+    /* The series of the plot: chapter 7's estimator as its samples double, then the photon
      * map as its passes double: at the figure's settings; and with BLUR times the radius
      * (BLUR^2 times the photons in each estimate: far less variance, but a wide blur),
      * shrinking and fixed. */
@@ -509,9 +536,10 @@ static void error_against_time(const Options *options, const Scene *scene)
         for (int step = 0; step < STEPS; step++) {
             Measurement *row = &rows[s * STEPS + step];
             if (s == 0) {
-                measure_path(&small, scene, references, lamp, 1 << step, row);
+                measure_path(&small, scene, path, references, lamp, TABLE_SPP_PER_PASS << step, row);
             } else {
-                PpmSettings ppm = photon_settings(&small, scene, width, height, 1, 1 << step);
+                PpmSettings ppm = photon_settings(path, scene, width, height, TABLE_SPP_PER_PASS,
+                                                  1 << step);
                 ppm.radius *= series_radius[s];
                 ppm.alpha = series_alpha[s];
                 measure_photons(&small, scene, references, lamp, &ppm, row);
@@ -523,7 +551,8 @@ static void error_against_time(const Options *options, const Scene *scene)
      * photons, and half the radius. */
     const double photon_factor[EXTRA] = {4.0, 0.25, 1.0}, radius_factor[EXTRA] = {1.0, 1.0, 0.5};
     for (int e = 0; e < EXTRA; e++) {
-        PpmSettings ppm = photon_settings(&small, scene, width, height, 1, 1 << (STEPS - 1));
+        PpmSettings ppm = photon_settings(path, scene, width, height, TABLE_SPP_PER_PASS,
+                                          1 << (STEPS - 1));
         ppm.photons = (int)(ppm.photons * photon_factor[e] + 0.5);
         ppm.radius *= radius_factor[e];
         measure_photons(&small, scene, references, lamp, &ppm, &rows[SERIES * STEPS + e]);
@@ -536,8 +565,10 @@ static void error_against_time(const Options *options, const Scene *scene)
 
     const Vec3 colours[SERIES] = {{0.85, 0.1, 0.1}, {0.1, 0.2, 0.9}, {0.1, 0.6, 0.1}, {0.95, 0.55, 0.0}};
     char labels[SERIES][64];
-    snprintf(labels[0], sizeof labels[0], "path tracer, 1 to %d spp", 1 << (STEPS - 1));
-    snprintf(labels[1], sizeof labels[1], "photon map, 1 to %d passes", 1 << (STEPS - 1));
+    snprintf(labels[0], sizeof labels[0], "chapter 7 final, %d to %d spp", TABLE_SPP_PER_PASS,
+             TABLE_SPP_PER_PASS << (STEPS - 1));
+    snprintf(labels[1], sizeof labels[1], "photon map, 1 to %d passes of %d spp", 1 << (STEPS - 1),
+             TABLE_SPP_PER_PASS);
     snprintf(labels[2], sizeof labels[2], "%d x the radius, shrinking", BLUR);
     snprintf(labels[3], sizeof labels[3], "%d x the radius, fixed", BLUR);
     PlotSeries series[SERIES];
@@ -563,21 +594,27 @@ static void error_against_time(const Options *options, const Scene *scene)
 int main(int argc, char **argv)
 {
     ProgramInfo info = {
-        "Chapter 8, caustics from a photon map: chapter 7's path tracer against the path tracer\n"
-        "with progressive photon-mapped caustics at equal time, and their error against time.",
+        "Chapter 8, caustics from a photon map: chapter 7's final estimator against the same\n"
+        "estimator with progressive photon-mapped caustics at equal time, and their error against\n"
+        "time. Both use roulette with bounded weights unless --rr is given.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_RR | FLAG_DEPTH | FLAG_FRESNEL |
             FLAG_REFERENCE_SPP,
-        {.scene = "scenes/room.scene", .size = 800, .spp = 16, .shadow_rays = 4, .rr = 0.75,
+        {.scene = "scenes/room.scene", .size = 800, .spp = 64, .shadow_rays = 1, .rr = 0.75,
          .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = REFERENCE_SPP},
     };
     Options options;
     Scene scene;
     experiment_start(argc, argv, &info, NEEDS_AREA_LIGHT, &options, &scene);
+    MirrorPlanes mirrors;
+    if (mirror_light_find_planes(&scene, &mirrors) != 0)
+        cli_fail(1, "out of memory");
+    PathSettings path = experiment_final_estimator(&options, &mirrors);
     Reference reference;
     reference_for(&options, &scene, &reference);
-    equal_time_figure(&options, &scene, &reference);
+    equal_time_figure(&options, &scene, &path, &reference);
     measure_reference_free(&reference);
-    error_against_time(&options, &scene);
+    error_against_time(&options, &scene, &path);
+    mirror_planes_free(&mirrors);
     scene_free(&scene);
     return 0;
 }

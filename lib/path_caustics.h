@@ -1,12 +1,12 @@
-/* path_caustics.h (chapter 8): the path tracer with its caustics from a photon map
- * (photon.h), beyond the report.
+/* path_caustics.h (chapter 8): chapter 7's final path tracer (path_final.h) with the
+ * caustics from a photon map (photon.h), beyond the report.
  *
  * Light reaching a diffuse vertex splits by the way it came from the lamp: straight
- * (L D) to the shadow rays; through mirrors and glass (L S+ D) to the caustic map's
- * estimate (photon_estimate.h); via another diffuse surface to the rest of the path.
- * So after a diffuse bounce, emission the path hits after mirrors or glass is not added:
- * the map counted it. Each light path is counted by exactly one estimator, and chapter
- * 6's estimator, which finds caustics by hitting the lamp, is its oracle.
+ * (L D) to the shadow rays; by one planar mirror straight on (L M D) to the mirror's
+ * images where the vertex samples them, else to the path hitting the lamp; through any
+ * other chain of mirrors and glass (L S+ D) to the map (PHOTON_SPLIT), so the path adds
+ * no emission it hits that way. Each light path is counted by exactly one estimator;
+ * chapter 7's final estimator is its oracle.
  */
 #ifndef PATH_CAUSTICS_H
 #define PATH_CAUSTICS_H
@@ -16,7 +16,7 @@
 
 typedef struct {
     PathSettings path;
-    const PhotonMap *caustics; /* the caustic map (PHOTON_CAUSTIC) */
+    const PhotonMap *caustics; /* the caustic map (PHOTON_SPLIT) */
     double radius;             /* of its radiance estimate */
 } CausticPathSettings;
 

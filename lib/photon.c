@@ -27,6 +27,7 @@ int photon_trace(const Scene *scene, PhotonRay photon, PhotonPaths paths, Fresne
     Ray ray = photon.ray;
     Vec3 power = photon.power;
     PathSettings glass = {.fresnel = fresnel};
+    int planar_mirror_first = 0;
     for (int bounce = 0; bounce <= PHOTON_MAX_BOUNCES; bounce++) {
         Vertex x;
         counts->bounce++;
@@ -34,11 +35,14 @@ int photon_trace(const Scene *scene, PhotonRay photon, PhotonPaths paths, Fresne
             return 0; /* gone, or at an emitter, which reflects nothing */
         if (material_is_diffuse(x.material)) {
             int specular_before = bounce > 0;
-            if (specular_before != (paths == PHOTON_CAUSTIC))
+            if (specular_before != (paths != PHOTON_DIRECT) ||
+                (paths == PHOTON_SPLIT && bounce == 1 && planar_mirror_first))
                 return 0;
             *stored = (Photon){x.hit.point, x.wo, x.normal, power};
             return 1;
         }
+        if (bounce == 0)
+            planar_mirror_first = x.material->kind == MATERIAL_MIRROR && x.hit.triangle >= 0;
         Vec3 direction;
         power = vec3_mul(power, path_specular(&x, ray.dir, &glass, rng, &direction));
         ray = ray_spawn(x.hit.point, x.normal, direction, x.hit.scale);

@@ -5,8 +5,8 @@
  * direction, carrying pi A Le / N of the lights' flux. Mirrors filter its power by
  * their colour; glass reflects or refracts it by R (glass.h), power unchanged. At its
  * first diffuse surface it is stored if a specular bounce came before (the caustic
- * map, L S+ D) and ends there. Shooting them is independent per photon, so any number
- * of threads can shoot a map's photons (docs/chapter8.md).
+ * map, L S+ D; PHOTON_SPLIT leaves out one planar mirror alone) and ends there. Photons
+ * are independent, so any number of threads can shoot a map's (docs/chapter8.md).
  */
 #ifndef PHOTON_H
 #define PHOTON_H
@@ -26,6 +26,8 @@ typedef struct {
 /* Which photons a map stores. */
 typedef enum {
     PHOTON_CAUSTIC, /* L S+ D: at the first diffuse surface after a specular bounce */
+    PHOTON_SPLIT,   /* L S+ D but for L M D, one planar mirror and straight on, which the
+                     * mirror's images find (path_caustics.h) */
     PHOTON_DIRECT   /* L D (tests only): at the first surface, if it is diffuse */
 } PhotonPaths;
 

@@ -1,38 +1,31 @@
-/* test_caustic_path.c (chapter 8): Tests of the path tracer with caustics from photon maps (lib/path.c's chapter 8
- * option, and progressive photon mapping, bench/ppm.c): the two estimators together
- * count every light path exactly once, so they estimate chapter 7's image.
+/* test_caustic_path.c (chapter 8): Tests of chapter 8's estimator (lib/path_caustics.c: chapter 7's final
+ * estimator plus the caustic map, PHOTON_SPLIT) and of progressive photon mapping
+ * (bench/ppm.c): the images, the map and the path count every light path exactly once.
  *
  * 1. A room without mirrors or glass (the report's room with both made white Lambert):
- *    no photon reaches a diffuse surface after a specular bounce, so the caustic map is
- *    empty, and the path tracer with it draws exactly chapter 7's samples: the images
- *    are bit for bit the same. Progressive photon mapping's pass-averaged image then
- *    equals chapter 7's within noise.
+ *    the map is empty, and chapter 8's estimator draws exactly chapter 7's final
+ *    estimator's samples: the images are bit for bit the same. Progressive photon
+ *    mapping's pass-averaged image then equals chapter 7's within noise.
  *    Per pixel and channel, z = (a - b) / sqrt(se_a^2 + se_b^2) must stay under the
  *    Sidak-corrected level for 768 tests at a family-wise 0.1% (|z| < 4.87); and over
  *    4 x 4-pixel blocks, the sum of the blocks' z^2 is a chi-square with 48 degrees of
  *    freedom, tested at the 0.1% level.
  * 2. The report's room, 16 x 16 pixels: progressive photon mapping (many passes, the
- *    radius shrinking as in ppm.h) against the path tracer's reference, chapter 7's
- *    estimator (with one shadow ray) at 4000 samples per pixel: the block test. Not the per-pixel test: the
- *    reference finds caustics only by hitting the lamp, so single pixels of it are
- *    heavy-tailed. One pixel of this reference (on the red wall) is 8 of its own
- *    standard errors below what 40,000 samples give, where the photon map agrees with
- *    those; a block of 16 pixels averages such misses out.
- * 3. No double counting, on the image's mean (over every pixel but the lamp and its
- *    images in the mirrors, which are the same in every estimator and the noisiest;
- *    the kernel's blur cancels in a mean): the caustic map's share (the combined image
- *    minus the path tracer's with an empty map) is many standard errors, and the
- *    combined image's mean equals the reference's within 4 standard errors. Counting
- *    the caustics twice, or leaving them out, moves the mean by that share; the test
- *    checks that either would be rejected.
- * Planted bugs, each rejected by both 2 and 3 (mean 0.17004 +- 0.00054 for the
- * reference, 0.16980 +- 0.00059 combined, when correct):
- *   - the path tracer still adding emission it hits after a diffuse and then a specular
- *     bounce (L S+ D counted twice): combined mean 0.19691, block p = 2e-106;
- *   - the photon tracer also storing photons whose first surface is diffuse (direct
- *     light counted by the shadow rays and again by the map): 0.30212, p = 0 (and 1
- *     fails: the map is no longer empty);
- *   - the caustic estimate left out (L S+ D counted by neither): 0.14246, p = 0.
+ *    radius shrinking as in ppm.h) against chapter 7's final estimator at 4000 samples
+ *    per pixel: the block test; and no double counting, on the image's mean (over every
+ *    pixel but the lamp and its images in the mirrors, the noisiest; the kernel's blur
+ *    cancels in a mean): the map's share (the combined image minus the path's with an
+ *    empty map) is many standard errors, and the combined mean equals the reference's
+ *    within 4 standard errors, so counting the share twice or not at all is rejected.
+ * 3. The mirrored glass furnace (radiance 2 everywhere): light through the mirror wall
+ *    alone, through the glass, and through both.
+ * Planted bugs, each rejected by 2 (block p and mean) and 3 (when correct: reference
+ * 0.17152 +- 0.00034, combined 0.16950 +- 0.00058, block p = 0.91; furnace 1.979 +- 0.008):
+ *   - the path adding emission it hits after a diffuse vertex and glass or a mirror
+ *     sphere (L S+ D counted by the map and again by the path): combined 0.18035, block
+ *     p = 2e-149; furnace 2.201 +- 0.009;
+ *   - the photon tracer storing one planar mirror straight on too (L M D counted by the
+ *     mirror's images and again by the map): combined 0.18548, p = 0; furnace 2.220.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -45,15 +38,24 @@
 #include "renderer.h"
 #include "chi_square.h"
 #include "measure.h"
-#include "path_roulette.h"
+#include "furnace.h"
+#include "path_check.h"
+#include "path_final.h"
 #include "ppm.h"
 #include "scene_file.h"
+#include "sphere_guide.h"
 
 #define SIDE 16
 #define BLOCK 4
 
-static const PathSettings CHAPTER7 = {.max_depth = 64, .shadow_rays = 4, .fresnel = FRESNEL_EXACT,
-                                      .rr_survival = 0.75};
+/* Chapter 7's final estimator (Figure 7's), with the scene's mirror planes. */
+static PathSettings final_estimator(const MirrorPlanes *mirrors)
+{
+    PathSettings path = {.max_depth = 64, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
+                         .rr_throughput = 1, .mirror_light = 64, .mirrors = mirrors,
+                         .sphere_guide = SPHERE_GUIDE_STRENGTH};
+    return path;
+}
 
 static void load_room(Scene *scene, int specular)
 {
@@ -108,15 +110,18 @@ static void test_room_without_specular_is_chapter7(void **state)
 {
     Scene scene;
     load_room(&scene, 0);
+    MirrorPlanes mirrors;
+    assert_int_equal(mirror_light_find_planes(&scene, &mirrors), 0);
+    const PathSettings CHAPTER7 = final_estimator(&mirrors);
     RayCounts counts = {0, 0, 0};
-    PhotonMapSettings photons = {20000, PHOTON_CAUSTIC, FRESNEL_EXACT, 3};
+    PhotonMapSettings photons = {20000, PHOTON_SPLIT, FRESNEL_EXACT, 3};
     PhotonMap map;
     assert_int_equal(ppm_photon_map(&map, &scene, &photons, 0, &counts), 0);
     assert_int_equal(map.count, 0);
     CausticPathSettings with_map = {CHAPTER7, &map, 0.2};
     RenderSettings settings = {{SIDE, SIDE, 64, PIXEL_RANDOM, 5}, 0, 0, "test"};
     RenderResult a, b;
-    assert_int_equal(render(&scene, &settings, path_roulette_radiance, &CHAPTER7, &a), 0);
+    assert_int_equal(render(&scene, &settings, path_final_radiance, &CHAPTER7, &a), 0);
     assert_int_equal(render(&scene, &settings, path_caustics_radiance, &with_map, &b), 0);
     assert_int_equal(memcmp(a.image.pixels, b.image.pixels, sizeof(float) * 3 * SIDE * SIDE), 0);
     photon_map_free(&map);
@@ -134,6 +139,7 @@ static void test_room_without_specular_is_chapter7(void **state)
     assert_true(block_p_value(&a, &progressive.render) > 0.001);
     ppm_result_free(&progressive);
     render_result_free(&a);
+    mirror_planes_free(&mirrors);
     scene_free(&scene);
 }
 
@@ -160,17 +166,18 @@ static void test_room_converges_and_counts_once(void **state)
 {
     Scene scene;
     load_room(&scene, 1);
-    PathSettings one_shadow_ray = CHAPTER7;
-    one_shadow_ray.shadow_rays = 1; /* the same expectation, cheaper per sample */
+    MirrorPlanes mirrors;
+    assert_int_equal(mirror_light_find_planes(&scene, &mirrors), 0);
+    const PathSettings CHAPTER7 = final_estimator(&mirrors);
     RenderSettings many = {{SIDE, SIDE, 4000, PIXEL_RANDOM, 11}, 0, 0, "test"};
     RenderResult reference;
-    assert_int_equal(render(&scene, &many, path_roulette_radiance, &one_shadow_ray, &reference), 0);
+    assert_int_equal(render(&scene, &many, path_final_radiance, &CHAPTER7, &reference), 0);
 
     RenderSettings passes = {{SIDE, SIDE, 1, PIXEL_RANDOM, 12}, 0, 0, "test"};
     PpmSettings ppm = {CHAPTER7, 20000, 0.1, PPM_ALPHA, 16, 64, 0.0};
     PpmResult combined;
     assert_int_equal(ppm_render(&scene, &passes, &ppm, &combined), 0);
-    assert_true(combined.stored > 1000);
+    assert_true(combined.stored > 100);
     print_message("    %d passes of %d photons (%.0f stored), radius %.3f to %.3f\n",
                   combined.passes, ppm.photons, combined.stored, ppm.radius, combined.radius);
     double p = block_p_value(&reference, &combined.render);
@@ -178,7 +185,7 @@ static void test_room_converges_and_counts_once(void **state)
     /* The path tracer's own share: caustic option on, the map empty. */
     PhotonMap empty;
     RayCounts counts = {0, 0, 0};
-    PhotonMapSettings none = {0, PHOTON_CAUSTIC, FRESNEL_EXACT, 1};
+    PhotonMapSettings none = {0, PHOTON_SPLIT, FRESNEL_EXACT, 1};
     assert_int_equal(ppm_photon_map(&empty, &scene, &none, 0, &counts), 0);
     CausticPathSettings without = {CHAPTER7, &empty, 0.15};
     RenderSettings path_only = {{SIDE, SIDE, 1024, PIXEL_RANDOM, 13}, 0, 0, "test"};
@@ -204,6 +211,50 @@ static void test_room_converges_and_counts_once(void **state)
     render_result_free(&path_part);
     ppm_result_free(&combined);
     render_result_free(&reference);
+    mirror_planes_free(&mirrors);
+    scene_free(&scene);
+}
+
+/* The mirrored furnace: furnace.h's bordered box (radiance 2 everywhere) with its wall
+ * at x = +1 a perfect mirror and a glass sphere inside: light reaches the walls through
+ * the mirror alone (the images'), through the glass, and through both (the map's). The
+ * map of 10^6 photons is one random draw, which the 200,000 camera rays share: over
+ * the whole box its error is that of ~10^5 stored photons (0.3% of a share of ~10%);
+ * the radius 0.01 leaves a blur bias only along the box's edges (~0.1% of the walls'
+ * area within reach of another wall). So the mean must be 2 within 4 standard errors
+ * (the 99.99% level; seed 7). */
+static void test_mirrored_glass_furnace(void **state)
+{
+    Scene scene;
+    furnace_box_bordered(&scene);
+    Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
+    Material glass = {.name = "glass", .kind = MATERIAL_GLASS, .ior = 1.5};
+    int mirror_index = scene_add_material(&scene, mirror);
+    Sphere sphere = {vec3(-0.2, 0.0, 0.0), 0.5, scene_add_material(&scene, glass)};
+    assert_true(mirror_index >= 0 && sphere.material >= 0);
+    for (int i = 0; i < scene.triangle_count; i++)
+        if (scene.triangles[i].normal.x < -0.5)
+            scene.triangles[i].material = mirror_index;
+    assert_true(scene_add_sphere(&scene, sphere) >= 0);
+    assert_int_equal(scene_prepare(&scene), 0);
+    MirrorPlanes mirrors;
+    assert_int_equal(mirror_light_find_planes(&scene, &mirrors), 0);
+    PhotonMapSettings photons = {1000000, PHOTON_SPLIT, FRESNEL_EXACT, 5};
+    PhotonMap map;
+    RayCounts counts = {0, 0, 0};
+    assert_int_equal(ppm_photon_map(&map, &scene, &photons, 0, &counts), 0);
+    print_message("    %d photons stored of %d\n", map.count, photons.emitted);
+    CausticPathSettings settings = {{.max_depth = 200, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
+                                     .rr_throughput = 3, .mirror_light = 200, .mirrors = &mirrors,
+                                     .sphere_guide = SPHERE_GUIDE_STRENGTH},
+                                    &map, 0.01};
+    double mean, std_error;
+    /* The path settings are the first member: the estimator is handed the whole. */
+    estimate(&scene, path_caustics_radiance, &settings.path, vec3(0.6, 0.1, 0.05), 7, &mean,
+             &std_error);
+    assert_estimate(mean, std_error, FURNACE_BORDERED_RADIANCE, 0.01);
+    photon_map_free(&map);
+    mirror_planes_free(&mirrors);
     scene_free(&scene);
 }
 
@@ -212,6 +263,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_room_without_specular_is_chapter7),
         cmocka_unit_test(test_room_converges_and_counts_once),
+        cmocka_unit_test(test_mirrored_glass_furnace),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
