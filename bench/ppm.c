@@ -135,9 +135,14 @@ static int render_pass(const Scene *scene, const RenderSettings *whole,
                                      ppm_radius(settings->radius, settings->alpha, pass)};
     RenderSettings pass_render = *whole;
     pass_render.image.spp = settings->spp;
-    pass_render.image.seed = image_seed;
     pass_render.progress = 0;
-    int status = render(scene, &pass_render, path_caustics_radiance, &estimator, image);
+    /* Progressive sampling continues one sequence per pixel over the passes; the
+     * others take independent samples in every pass. */
+    int progressive = whole->image.sampling == PIXEL_PROGRESSIVE;
+    if (!progressive)
+        pass_render.image.seed = image_seed;
+    int status = render_from(scene, &pass_render, progressive ? (pass - 1) * settings->spp : 0,
+                             path_caustics_radiance, &estimator, image);
     photon_map_free(&map);
     return status;
 }

@@ -42,7 +42,8 @@ int ppm_photon_map(PhotonMap *map, const Scene *scene, const PhotonMapSettings *
                    int threads, RayCounts *counts);
 
 /* Render with `render`'s size, threads, seed and progress (its spp and sampling are
- * those of each pass: settings->spp, and render->sampling). A SIGINT stops after the
+ * those of each pass: settings->spp, and render->sampling; PIXEL_PROGRESSIVE continues
+ * each pixel's one sequence from pass to pass). A SIGINT stops after the
  * pass in progress, which is dropped; result->render.interrupted says so. Returns 0,
  * or -1 when memory runs out (nothing is then allocated). */
 int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettings *settings,

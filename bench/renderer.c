@@ -17,7 +17,7 @@ typedef struct {
     Estimator estimate;
     const void *estimator_settings;
     PixelSum *pixels;
-    int pass;
+    int first_sample, pass;
     atomic_int next_row;
     atomic_long rows_done;   /* over all passes, for the progress display */
     double start_time;
@@ -102,8 +102,8 @@ static void render_row(Worker *worker, int row)
     RayCounts rays = {0, 0, 0};
     uint64_t samples = 0, nonfinite = 0;
     for (int col = 0; col < image->width; col++) {
-        Vec3 radiance = render_sample(job->scene, image, col, row, job->pass, job->estimate,
-                                      job->estimator_settings, &rays);
+        Vec3 radiance = render_sample(job->scene, image, col, row, job->first_sample + job->pass,
+                                      job->estimate, job->estimator_settings, &rays);
         samples++;
         if (!vec3_is_finite(radiance)) {
             nonfinite++;
@@ -156,6 +156,12 @@ void pixel_sums_finish(const PixelSum *pixels, RenderResult *result)
 int render(const Scene *scene, const RenderSettings *settings, Estimator estimate,
            const void *estimator_settings, RenderResult *result)
 {
+    return render_from(scene, settings, 0, estimate, estimator_settings, result);
+}
+
+int render_from(const Scene *scene, const RenderSettings *settings, int first_sample,
+                Estimator estimate, const void *estimator_settings, RenderResult *result)
+{
     RenderResult r = {0};
     r.threads = settings->threads > 0 ? settings->threads : render_core_count();
     if (r.threads > settings->image.height)
@@ -175,7 +181,7 @@ int render(const Scene *scene, const RenderSettings *settings, Estimator estimat
         return -1;
     }
 
-    Job job = {scene, settings, estimate, estimator_settings, pixels, 0, 0, 0, stats_now()};
+    Job job = {scene, settings, estimate, estimator_settings, pixels, first_sample, 0, 0, 0, stats_now()};
     for (int i = 0; i < r.threads; i++)
         workers[i] = (Worker){&job, i, {0, 0, 0}, 0, 0};
     for (job.pass = 0; job.pass < settings->image.spp && !render_interrupted(); job.pass++) {

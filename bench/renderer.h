@@ -57,6 +57,11 @@ void pixel_sums_finish(const PixelSum *pixels, RenderResult *result);
 int render(const Scene *scene, const RenderSettings *settings, Estimator estimate,
            const void *estimator_settings, RenderResult *result);
 
+/* Render samples first_sample .. first_sample + spp - 1 of every pixel (render: from 0),
+ * as one of several renders that continue each other (PIXEL_PROGRESSIVE). */
+int render_from(const Scene *scene, const RenderSettings *settings, int first_sample,
+                Estimator estimate, const void *estimator_settings, RenderResult *result);
+
 void render_result_free(RenderResult *result);
 
 /* Mean samples per pixel actually taken (less than spp after an interruption). */

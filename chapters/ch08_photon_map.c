@@ -23,7 +23,8 @@
  *     version gets as much processor time as chapter 7's took (processor time, all
  *     threads together, so that other programs sharing the machine do not change the
  *     comparison; the wall-clock time is printed too) and renders as many passes as fit,
- *     each on stratified sub-pixels of its own. Captions give the time and the error
+ *     each continuing the others' samples (PIXEL_PROGRESSIVE: all of them together are
+ *     as stratified as chapter 7's sub-pixels and pairs). Captions give the time and the error
  *     against the reference; two more figures enlarge the caustic under the glass sphere
  *     and the lamp's image in the mirror wall;
  *   - a table and a log-log plot of error against time on a quarter-size image, each
@@ -241,6 +242,7 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
                                       PPM_SPP_PER_PASS, MAX_PASSES);
     ppm.cpu_seconds = path_cpu;
     settings.label = "photon map";
+    settings.image.sampling = PIXEL_PROGRESSIVE; /* stratified over all passes */
     PpmResult photons;
     render_ppm(scene, &settings, &ppm, &photons);
     experiment_write_image(options, "ch08_photon_map", &photons.render.image, PANEL_EXPOSURE);
@@ -418,6 +420,7 @@ static void measure_photons(const Options *small, const Scene *scene, const Refe
     seeds_begin(&seeds, 3L * references[0].image.width * references[0].image.height, lamp);
     for (int k = 0; k < SEEDS; k++) {
         RenderSettings settings = seeded_settings(small, scene, k, ppm->spp);
+        settings.image.sampling = PIXEL_PROGRESSIVE;
         PpmResult result;
         render_ppm(scene, &settings, ppm, &result);
         seeds_add(&seeds, &result.render.image, result.render.seconds, result.cpu_seconds,

@@ -16,7 +16,13 @@ typedef enum {
     PIXEL_SUBPIXELS,
     PIXEL_RANDOM,
 #if CHAPTER >= 7
-    PIXEL_STRATIFIED /* sub-pixels, and the estimator's pairs of numbers too (sobol.h) */
+    PIXEL_STRATIFIED, /* sub-pixels, and the estimator's pairs of numbers too (sobol.h) */
+#endif
+#if CHAPTER >= 8
+    /* Stratified across renders (the passes of a photon map): sample s takes its
+     * position and pairs from point s of the pixel's Sobol sequences, whichever render
+     * draws it (sobol.h) */
+    PIXEL_PROGRESSIVE
 #endif
 } PixelSampling;
 

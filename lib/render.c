@@ -22,6 +22,12 @@ Vec3 render_sample(const Scene *scene, const ImageSettings *image, int col, int 
     if (image->sampling == PIXEL_STRATIFIED)
         rng_stratify(&rng, image->seed, pixel, (uint32_t)sample);
 #endif
+#if CHAPTER >= 8
+    if (image->sampling == PIXEL_PROGRESSIVE) {
+        rng_stratify(&rng, image->seed, pixel, (uint32_t)sample);
+        sobol_pair((uint32_t)sample, rng_hash(~rng.strata_key), &u, &v); /* a key no pair uses */
+    }
+#endif
     Ray ray = camera_ray(&scene->camera, image->width, image->height, col, row, u, v);
     counts->camera++;
     return estimate(scene, ray, &rng, settings, counts);

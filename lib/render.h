@@ -16,6 +16,9 @@
 #if CHAPTER >= 2
 #include "pixel_sampling.h"
 #endif
+#if CHAPTER >= 8
+#include "sobol.h" /* PIXEL_PROGRESSIVE's positions */
+#endif
 
 /* Rays traced, by purpose: one camera ray per sample; bounce rays, every ray a path
  * continues with; shadow rays, visibility tests towards a light. */

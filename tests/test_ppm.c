@@ -12,7 +12,9 @@
  *   measured 1.004; a standard error of one pass instead of their mean gives 5.7, and
  *   the same seed for every pass 0); and the image's mean agrees with that render's;
  * - the passes asked for are rendered, and a time budget too small for two passes
- *   gives exactly one.
+ *   gives exactly one;
+ * - progressive pixel sampling (PIXEL_PROGRESSIVE, render_from) continues each pixel's
+ *   samples from pass to pass, so that all the passes together are stratified.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -120,6 +122,75 @@ static void test_time_budget(void **state)
     scene_free(&scene);
 }
 
+/* Where each sample of a one-pixel image looks (the point of the image plane its
+ * camera ray crosses, in [0, 1)^2) and the first pair it draws. */
+typedef struct {
+    double position[64][2], pair[64][2];
+    int count;
+} Samples;
+typedef struct {
+    Samples *out;
+} Recorder;
+
+static Vec3 record_sample(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                          RayCounts *counts)
+{
+    Samples *s = ((const Recorder *)settings)->out;
+    const Camera *c = &scene->camera;
+    Vec3 normal = vec3_cross(c->right, c->up);
+    double t = vec3_dot(vec3_sub(c->bottom_left, c->eye), normal) / vec3_dot(ray.dir, normal);
+    Vec3 q = vec3_sub(vec3_add_scaled(c->eye, ray.dir, t), c->bottom_left);
+    assert_true(s->count < 64);
+    s->position[s->count][0] = vec3_dot(q, c->right) / vec3_dot(c->right, c->right);
+    s->position[s->count][1] = vec3_dot(q, c->up) / vec3_dot(c->up, c->up);
+    rng_pair(rng, &s->pair[s->count][0], &s->pair[s->count][1]);
+    s->count++;
+    return vec3(0, 0, 0);
+}
+
+/* The number of the 8 x 8 cells of [0, 1)^2 that hold none of the 64 points. */
+static int empty_cells(double points[64][2])
+{
+    int seen[64] = {0}, empty = 0;
+    for (int i = 0; i < 64; i++) {
+        int cu = (int)(points[i][0] * 8), cv = (int)(points[i][1] * 8);
+        assert_true(cu >= 0 && cu < 8 && cv >= 0 && cv < 8);
+        seen[cv * 8 + cu]++;
+    }
+    for (int k = 0; k < 64; k++)
+        empty += seen[k] == 0;
+    return empty;
+}
+
+/* Eight passes of eight samples (first samples 0, 8, ..., 56) of a one-pixel image:
+ * their 64 positions, and their 64 first pairs, put one point in each cell of the
+ * pixel's 8 x 8 grid (the first 2^6 points of a (0,2)-sequence, sobol.h), for three
+ * seeds. Passes of independent samples leave about 64/e = 23.5 cells empty (shown to
+ * fail with every pass starting at sample 0: 56 cells empty). */
+static void test_progressive_passes_stratify_together(void **state)
+{
+    Scene scene;
+    load_room(&scene);
+    for (uint64_t seed = 1; seed <= 3; seed++) {
+        Samples samples = {.count = 0};
+        Recorder recorder = {&samples};
+        RenderSettings settings = {{1, 1, 8, PIXEL_PROGRESSIVE, seed}, 1, 0, "test"};
+        for (int pass = 0; pass < 8; pass++) {
+            RenderResult result;
+            assert_int_equal(render_from(&scene, &settings, 8 * pass, record_sample, &recorder,
+                                         &result), 0);
+            render_result_free(&result);
+        }
+        assert_int_equal(samples.count, 64);
+        int empty_positions = empty_cells(samples.position), empty_pairs = empty_cells(samples.pair);
+        print_message("    seed %d: empty cells %d (positions), %d (pairs)\n", (int)seed,
+                      empty_positions, empty_pairs);
+        assert_int_equal(empty_positions, 0);
+        assert_int_equal(empty_pairs, 0);
+    }
+    scene_free(&scene);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -127,6 +198,7 @@ int main(void)
         cmocka_unit_test(test_same_image_for_any_thread_count),
         cmocka_unit_test(test_standard_error_from_passes),
         cmocka_unit_test(test_time_budget),
+        cmocka_unit_test(test_progressive_passes_stratify_together),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
