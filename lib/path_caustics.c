@@ -2,6 +2,8 @@
  * path_caustics.h. */
 #include "path_caustics.h"
 
+#include <stddef.h>
+
 #include "direct_light.h"
 #include "photon_estimate.h"
 #include "roulette.h"
@@ -42,8 +44,10 @@ Vec3 path_caustics_radiance(const Scene *scene, Ray ray, Rng *rng, const void *s
                 Vec3 direct = direct_light(scene, &x, images, s, rng, counts);
                 radiance = vec3_add(radiance, vec3_mul(throughput, direct));
             }
-            Vec3 caustic = photon_estimate_radiance(c->caustics, c->radius, x.hit.point,
-                                                    x.normal, x.wo, x.material);
+            /* The disc's reachable area where the camera sees it; after a diffuse
+             * bounce, pi r^2 (the bounce blurs an edge more than the kernel does). */
+            Vec3 caustic = photon_estimate_radiance(diffuse_vertices == 0 ? scene : NULL,
+                                                    c->caustics, c->radius, &x);
             radiance = vec3_add(radiance, vec3_mul(throughput, caustic));
             emission = s->shadow_rays > 0 ? EMISSION_SHARE : EMISSION_ALL;
             if (!roulette_continues(s, segment, &throughput, rng))

@@ -2,6 +2,9 @@
  * See photon_estimate.h. */
 #include "photon_estimate.h"
 
+#include <math.h>
+#include <string.h>
+
 #include "diffuse.h"
 
 /* Lambert's f is the same for every photon, so it multiplies their summed power once. */
@@ -23,13 +26,45 @@ static void add_photon(int index, double distance2, void *context)
     g->sum = vec3_add(g->sum, weighted);
 }
 
-Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 n, Vec3 wo,
-                              const Material *m)
+/* The area of the disc of radius r around x, on x's surface, that photons can reach:
+ * the share of EDGE_POINTS points spread evenly over it (a sunflower: point i at radius
+ * r sqrt((i + 1/2) / K), turned by the golden angle) that a ray from just above x
+ * reaches on the same surface (at least one). A wall in the way stops the ray short;
+ * past the edge of the surface it goes on. The pattern turns by an angle hashed from
+ * x, so that its steps average out over neighbouring points. */
+static double reachable_area(const Scene *scene, const Vertex *x, double r)
 {
+    Vec3 u, v, p = x->hit.point, n = x->normal;
+    vec3_basis(n, &u, &v);
+    Vec3 above = vec3_add_scaled(p, n, 0.1 * r);
+    uint64_t bits[3];
+    memcpy(bits, &p, sizeof bits);
+    double turn = 2.0 * PI * (rng_hash(bits[0] ^ rng_hash(bits[1] ^ rng_hash(bits[2]))) >> 11) * 0x1p-53;
+    int reached = 0;
+    for (int i = 0; i < EDGE_POINTS; i++) {
+        double rho = r * sqrt((i + 0.5) / EDGE_POINTS), angle = turn + 2.39996322972865332 * i;
+        Vec3 q = vec3_add_scaled(vec3_add_scaled(p, u, rho * cos(angle)), v, rho * sin(angle));
+        Vec3 to_q = vec3_sub(q, above);
+        double distance = vec3_length(to_q);
+        Hit hit;
+        reached += scene_intersect(scene, (Ray){above, vec3_scale(to_q, 1.0 / distance)},
+                                   1.01 * distance, &hit) &&
+                   hit.t > 0.99 * distance && vec3_dot(hit.normal, n) >= PHOTON_NORMAL_COS;
+    }
+    return PI * r * r * (reached > 0 ? reached : 1) / EDGE_POINTS;
+}
+
+Vec3 photon_estimate_radiance(const Scene *scene, const PhotonMap *map, double radius,
+                              const Vertex *x)
+{
+    Vec3 n = x->normal, wo = x->wo;
+    const Material *m = x->material;
     Gather g = {map, n, wo, m, m->kind == MATERIAL_LAMBERT, vec3(0, 0, 0)};
-    kdtree_query_radius(&map->tree, x, radius, add_photon, &g);
+    kdtree_query_radius(&map->tree, x->hit.point, radius, add_photon, &g);
+    if (g.sum.x == 0.0 && g.sum.y == 0.0 && g.sum.z == 0.0)
+        return g.sum; /* no photons: no need to know the area */
     Vec3 sum = g.lambert ? vec3_mul(diffuse_brdf(m, n, wo, wo), g.sum) : g.sum;
-    return vec3_scale(sum, 1.0 / (PI * radius * radius));
+    return vec3_scale(sum, 1.0 / (scene ? reachable_area(scene, x, radius) : PI * radius * radius));
 }
 
 double ppm_first_radius(const Scene *scene, double fraction)

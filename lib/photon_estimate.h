@@ -14,10 +14,16 @@
 
 #define PHOTON_NORMAL_COS 0.9
 
-/* L(x, wo) from `map`'s photons within `radius` of x, for the diffuse material m at a
- * surface with unit normal n facing wo. */
-Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 n, Vec3 wo,
-                              const Material *m);
+/* The points of the disc tested for whether photons can reach them. */
+#define EDGE_POINTS 16
+
+/* L(x, wo) from `map`'s photons within `radius` of the diffuse vertex x. The flux is
+ * divided by the area of the disc that photons can reach in `scene` (photon_estimate.c):
+ * near an edge or a wall, where part of the disc is off the surface or behind the wall,
+ * pi r^2 would darken the edge. Without a scene (NULL), by pi r^2: cheaper, where a
+ * dark edge would not be seen. */
+Vec3 photon_estimate_radiance(const Scene *scene, const PhotonMap *map, double radius,
+                              const Vertex *x);
 
 /* Progressive photon mapping (Knaus and Zwicker 2011): pass j's radius,
  *     r_j = r_1 sqrt(j^(alpha - 1)),   0 < alpha < 1,

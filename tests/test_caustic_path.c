@@ -20,7 +20,7 @@
  * 3. The mirrored glass furnace (radiance 2 everywhere): light through the mirror wall
  *    alone, through the glass, and through both.
  * Planted bugs, each rejected by 2 (block p and mean) and 3 (when correct: reference
- * 0.17152 +- 0.00034, combined 0.16950 +- 0.00058, block p = 0.91; furnace 1.979 +- 0.008):
+ * 0.17152 +- 0.00034, combined 0.16957 +- 0.00058, block p = 0.91; furnace 1.979 +- 0.008):
  *   - the path adding emission it hits after a diffuse vertex and glass or a mirror
  *     sphere (L S+ D counted by the map and again by the path): combined 0.18035, block
  *     p = 2e-149; furnace 2.201 +- 0.009;
