@@ -103,12 +103,12 @@ typedef struct {
 /* The per-pixel z-test, filling the z-map: each pixel's colour from its channel of
  * largest |z|. */
 static PixelTest pixel_test(const RenderResult *yours, const Image *reference, const Image *se,
-                            double level, Image *zmap)
+                            double spp_ratio, double level, Image *zmap)
 {
     PixelTest t = {0, 0, level, 1.0, 0.0, -1, -1};
     long pixels = (long)reference->width * reference->height;
     for (long i = 0; i < 3 * pixels; i++) {
-        double sa = yours->std_error.pixels[i], sb = se->pixels[i];
+        double sb = se->pixels[i], sa = fmax(yours->std_error.pixels[i], sb * spp_ratio);
         double difference = (double)yours->image.pixels[i] - reference->pixels[i];
         if (sa == 0.0 && sb == 0.0 && difference == 0.0)
             continue;
@@ -119,7 +119,7 @@ static PixelTest pixel_test(const RenderResult *yours, const Image *reference, c
         double largest = 0.0, smallest_p = 1.0;
         for (int c = 0; c < 3; c++) {
             long i = 3 * p + c;
-            double sa = yours->std_error.pixels[i], sb = se->pixels[i];
+            double sb = se->pixels[i], sa = fmax(yours->std_error.pixels[i], sb * spp_ratio);
             double difference = (double)yours->image.pixels[i] - reference->pixels[i];
             double spread = sqrt(sa * sa + sb * sb);
             double z = spread > 0.0 ? difference / spread : (difference == 0.0 ? 0.0 : copysign(INFINITY, difference));
@@ -189,7 +189,11 @@ int grading_render(Grading *g, const RenderCheck *check, double level, const cha
         grading_fail(g, "out of memory");
         goto free_render;
     }
-    PixelTest t = pixel_test(&yours, &reference, &se, level, &zmap);
+    /* Under the hypothesis that the student's estimator is the solution's, a pixel's
+     * standard error is the reference's times sqrt(reference_spp / spp): a pixel whose
+     * few samples all missed the light does not claim to be exact. */
+    double spp_ratio = sqrt((double)check->reference_spp / check->spp);
+    PixelTest t = pixel_test(&yours, &reference, &se, spp_ratio, level, &zmap);
     double combined = sqrt(mean_se * mean_se + ref_se * ref_se);
     double mean_z = (mean - ref_mean) / combined;
     double share = t.tests > 0 ? (double)t.failing_pixels / (reference.width * reference.height) : 0.0;

@@ -6,6 +6,7 @@
  * scene with the same estimator and many more samples, once, as the reference. After
  * Mitsuba 3's render tests, each pixel and channel gives
  *     z = (x - r) / sqrt(se_x^2 + se_r^2),   p = erfc(|z| / sqrt 2),
+ * se_x at least se_r sqrt(reference spp / spp) (what the solution's noise would be),
  * and the images agree when every p is at least Sidak's 1 - (1 - level)^(1 / N) over
  * the N values, and their means agree within 4 standard errors. The picture
  * OUT/exercise-ID-zmap.png shows the image, the reference and the z-map: red where
