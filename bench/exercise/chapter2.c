@@ -121,22 +121,8 @@ static void grade_lambert(Grading *g)
     }
 }
 
-/* A closed room with a large ceiling lamp, a red and a green wall and a sphere: seen
- * from the front, every pixel sees light after a bounce or two. */
-static const char room[] =
-    "camera  0 -3.2 0   -1 -2 -1   1 -2 -1   -1 -2 1\n"
-    "material white lambert 0.7 0.7 0.7\n"
-    "material red   lambert 0.7 0.15 0.15\n"
-    "material green lambert 0.15 0.7 0.15\n"
-    "material lamp  light   4 4 4\n"
-    "box white -1.5 -3.5 -1.5   1.5 1.5 1.5\n"
-    "quad red   -1.49 -3.5 -1.5   -1.49 1.5 -1.5   -1.49 1.5 1.5   -1.49 -3.5 1.5\n"
-    "quad green  1.49 -3.5 -1.5    1.49 -3.5 1.5   1.49 1.5 1.5    1.49 1.5 -1.5\n"
-    "quad lamp  -1 -1 1.49   -1 1 1.49   1 1 1.49   1 -1 1.49\n"
-    "sphere white 0.3 0 -0.9 0.6\n";
-
 static const PathSettings path_settings = {.max_depth = 4};
-static const RenderCheck path_check = {room, path_radiance, &path_settings, 24, 64, 2048};
+static const RenderCheck path_check = {render_check_room, path_radiance, &path_settings, 24, 64, 2048};
 
 static void grade_path(Grading *g)
 {

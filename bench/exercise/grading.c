@@ -10,6 +10,7 @@
 #include "chi_square.h"
 #include "figure.h"
 #include "font.h"
+#include "scene_file.h"
 
 #define PANEL 200
 
@@ -76,6 +77,15 @@ char *grading_p(double p, char *text, size_t size)
     else
         snprintf(text, size, "p = %.2g", p);
     return text;
+}
+
+int grading_scene(Grading *g, const char *text, Scene *scene)
+{
+    char error[512];
+    if (scene_parse(text, strlen(text), "exercise.scene", scene, NULL, error, sizeof error) == 0)
+        return 0;
+    grading_fail(g, "the exercise's scene does not load: %s", error);
+    return -1;
 }
 
 Vec3 grading_direction(Rng *rng)

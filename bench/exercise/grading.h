@@ -62,6 +62,10 @@ char *grading_count(double count, char *text, size_t size);
 /* The p-value as text: "p < 1e-9" below 1e-9, else "p = 0.0123". Returns text. */
 char *grading_p(double p, char *text, size_t size);
 
+/* Parse the scene `text` (docs/scene-format.md) into *scene. Returns 0, or fails the
+ * exercise and returns -1. */
+int grading_scene(Grading *g, const char *text, Scene *scene);
+
 /* A direction uniformly distributed over the unit sphere. */
 Vec3 grading_direction(Rng *rng);
 

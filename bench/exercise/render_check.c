@@ -14,6 +14,18 @@
 
 #define ZOOM 12
 
+const char render_check_room[] =
+    "camera  0 -3.2 0   -1 -2 -1   1 -2 -1   -1 -2 1\n"
+    "material white lambert 0.7 0.7 0.7\n"
+    "material red   lambert 0.7 0.15 0.15\n"
+    "material green lambert 0.15 0.7 0.15\n"
+    "material lamp  light   4 4 4\n"
+    "box white -1.5 -3.5 -1.5   1.5 1.5 1.5\n"
+    "quad red   -1.49 -3.5 -1.5   -1.49 1.5 -1.5   -1.49 1.5 1.5   -1.49 -3.5 1.5\n"
+    "quad green  1.49 -3.5 -1.5    1.49 -3.5 1.5   1.49 1.5 1.5    1.49 1.5 -1.5\n"
+    "quad lamp  -1 -1 1.49   -1 1 1.49   1 1 1.49   1 -1 1.49\n"
+    "sphere white 0.3 0 -0.9 0.6\n";
+
 static int load_scene(const RenderCheck *check, Scene *scene, char *error, size_t size)
 {
     return scene_parse(check->scene, strlen(check->scene), "exercise.scene", scene, NULL, error,

@@ -25,6 +25,10 @@ struct RenderCheck {
     int spp, reference_spp;
 };
 
+/* A closed room with a large ceiling lamp, a red and a green wall and a sphere: seen
+ * from the front, every pixel sees light after a bounce or two. */
+extern const char render_check_room[];
+
 /* Render the reference of exercise `e` (its solution) into
  * FOLDER/exercise-ID-reference.pfm and its standard errors into ...-reference-se.pfm.
  * Returns 0, or -1 with a message in error[size]. */
