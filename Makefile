@@ -185,7 +185,8 @@ check-exercise-chapter$(1): $(call grader_of,$(1))
 	@student=$$(if $$(STUDENT),$$(STUDENT),$(EXERCISE_DIR)/chapter$(1)); \
 	if [ ! -d "$$$$student/lib" ]; then echo "no exercise tree in $$$$student: make exercise-chapter$(1) first (or STUDENT=DIR)"; exit 2; fi; \
 	CC="$$(CC)" CFLAGS="$$(CFLAGS)" LDFLAGS="$$(LDFLAGS)" LIBS="$$(LIBS)" PKG_CFLAGS="$$(PKG_CFLAGS)" \
-	BENCH_FILES="$$(addprefix $$(CURDIR)/,$(call upto,$(1),$(BENCH_SOURCES)) $(call grader_sources,$(1)))" \
+	BENCH_OBJECTS="$$(addprefix $$(CURDIR)/,$(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call upto,$(1),$(BENCH_SOURCES))))" \
+	GRADER_FILES="$$(addprefix $$(CURDIR)/,$(call grader_sources,$(1)))" \
 	sh bench/exercise/check.sh $(1) "$$$$student" $(call grader_of,$(1)) $(EXERCISE_DIR)/references/chapter$(1) $$(ONLY)
 else
 exercise-chapter$(1) check-exercise-chapter$(1):
@@ -272,7 +273,7 @@ test: all check-sources
 	@rm -rf $(TEST_LOGS) && mkdir -p $(TEST_LOGS); \
 	printf '%s\n' $(CHAPTER_TESTS) $(FINAL_TESTS) | xargs -P $$(nproc) -I TEST sh -c \
 	    'log=$(TEST_LOGS)/$$(echo TEST | tr / _); \
-	     if CHAPTER_DIR=$(BUILD) TEST > $$log 2>&1; then echo passed; else echo failed; fi > $$log.result'; \
+	     if CHAPTER_DIR=$(BUILD) CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" TEST > $$log 2>&1; then echo passed; else echo failed; fi > $$log.result'; \
 	passed=0; failed=0; \
 	for t in $(CHAPTER_TESTS) $(FINAL_TESTS); do \
 	    log=$(TEST_LOGS)/$$(echo $$t | tr / _); \

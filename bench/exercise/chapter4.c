@@ -53,7 +53,7 @@ static void grade_polarised(Grading *g)
             /* the same incidence seen from the other side: the indices swapped */
             double cos_other = sin_t < 1.0 ? sqrt(1.0 - sin_t * sin_t) : 0.0;
             right_fresnel(acos(cos_other) * 180.0 / PI, n_t, n_i, &swapped_s, &swapped_p);
-            if (s == 1.0 && (got_s < 1.0 || got_p < 1.0))
+            if (s == 1.0 && (got_s != 1.0 || got_p != 1.0))
                 grading_fail(g, "R_s = %.4f, R_p = %.4f at %d degrees from index %.2f into %.2f, "
                              "beyond the critical angle %.1f degrees: with no transmitted ray "
                              "both must be 1 (total internal reflection)", got_s, got_p, a, n_i,
@@ -98,6 +98,11 @@ static void grade_unpolarised(Grading *g)
                 grading_fail(g, "R = %.4f > 1 at %d degrees from index %.2f into %.2f: more light "
                              "reflected than arrives; unpolarised light is half s, half p: R = "
                              "(R_s + R_p) / 2 = %.4f (eq. 3)", got, a, n_i, n_t, want);
+            else if (fabs(got - (s + p)) <= 1e-9)
+                grading_fail(g, "R = %.4f at %d degrees from index %.2f into %.2f is R_s + R_p: "
+                             "unpolarised light is half s, half p, R = (R_s + R_p) / 2 = %.4f "
+                             "(eq. 3); the sum reflects twice the light that arrives beyond the "
+                             "critical angle", got, a, n_i, n_t, want);
             else if (fabs(got - s) <= 1e-9 || fabs(got - p) <= 1e-9)
                 grading_fail(g, "R = %.4f at %d degrees from index %.2f into %.2f is R_%s alone; "
                              "unpolarised light is half s, half p: (R_s + R_p) / 2 = %.4f (eq. 3)",

@@ -74,6 +74,8 @@ static void grade_continues(Grading *g)
     if (!roulette_trials(g, &alpha, 3, t, 0.6, "alpha = 0.6") ||
         !roulette_trials(g, &bounded, 3, t, 0.5, "bounded weights from segment 2, at segment 3 "
                          "with throughput (0.3, 0.5, 0.2)") ||
+        !roulette_trials(g, &bounded, 2, t, 0.5, "bounded weights from segment 2, at segment 2 "
+                         "with throughput (0.3, 0.5, 0.2)") ||
         !roulette_trials(g, &bounded, 1, t, 1.0, "bounded weights from segment 2, at segment 1") ||
         !roulette_trials(g, &off, 3, t, 1.0, "no roulette (rr_survival 0, rr_throughput 0)"))
         return;

@@ -47,14 +47,16 @@ static void grade_density(Grading *g)
     const double radii[] = {0.1, 0.25, 0.4};
     Vec3 n = vec3(0, 0, 1), wo = vec3_normalize(vec3(0.2, 0.1, 1.0));
     for (int k = 0; k < 3 && !g->failed; k++) {
-        double r = radii[k], all = 0.0, counted = 0.0, from_below = 0.0;
+        double r = radii[k], all = 0.0, counted = 0.0, from_below = 0.0, other_surface = 0.0;
         for (int i = 0; i < PHOTONS; i++) {
             const Photon *p = &photons[i];
             if (vec3_length(vec3_sub(p->position, points[k])) > r)
                 continue;
             all += p->power.x;
-            if (vec3_dot(p->normal, n) < PHOTON_NORMAL_COS)
+            if (vec3_dot(p->normal, n) < PHOTON_NORMAL_COS) {
+                other_surface += vec3_dot(p->incoming, n) > 0.0 ? p->power.x : 0.0;
                 continue;
+            }
             if (vec3_dot(p->incoming, n) <= 0.0) {
                 from_below += p->power.x;
                 continue;
@@ -72,8 +74,10 @@ static void grade_density(Grading *g)
             fabs(got.z - 2.0 * want) <= 1e-9 * want)
             continue;
         double ratio = got.x / want;
-        if (fabs(got.x - 0.5 / PI * all / (PI * r * r)) <= 1e-9 * want ||
-            fabs(got.x - 0.5 / PI * (counted + from_below) / (PI * r * r)) <= 1e-9 * want)
+        double scale = 0.5 / PI / (PI * r * r);
+        if (fabs(got.x - scale * all) <= 1e-9 * want ||
+            fabs(got.x - scale * (counted + from_below)) <= 1e-9 * want ||
+            fabs(got.x - scale * (counted + other_surface)) <= 1e-9 * want)
             grading_fail(g, "L = %.5f where %.5f is right: photons on another surface or arriving "
                          "from behind are counted (keep those with normal . n >= "
                          "PHOTON_NORMAL_COS and incoming . n > 0)", got.x, want);

@@ -2,9 +2,9 @@
 # check.sh CHAPTER STUDENT SOLUTION REFERENCES [ID...]: grade a student's tree.
 #
 # Builds STUDENT (a copy of make exercise-chapterN's tree) with bench/exercise/student.mk
-# (BENCH_FILES, CC, CFLAGS, PKG_CFLAGS, LDFLAGS, LIBS from the environment), then runs
-# its grader once per exercise (every exercise of the chapter, or the IDs given), each
-# in a process of its own under a time limit of TIME_LIMIT seconds (default 60): a
+# (GRADER_FILES, BENCH_OBJECTS, CC, CFLAGS, PKG_CFLAGS, LDFLAGS, LIBS from the
+# environment), then runs its grader once per exercise (every exercise of the chapter,
+# or the IDs given), each in a process of its own under a time limit of TIME_LIMIT seconds (default 60): a
 # crash or a hang is a verdict too. SOLUTION is the grader built from the solution: it
 # lists the exercises and renders the references into REFERENCES (again whenever it is
 # newer than them). The verdicts go to stdout and STUDENT/check/verdicts.txt, the
