@@ -91,7 +91,8 @@ TEST_SOURCES  := $(wildcard tests/test_*.c bench/tests/test_*.c)
 REFERENCE_BIN := $(BUILD)/reference
 GALLERY       := $(BUILD)/gallery
 
-.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery check-exercises
+.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery check-exercises \
+        exercise-solutions
 .DEFAULT_GOAL := all
 .SECONDARY:
 
@@ -195,21 +196,31 @@ endif
 endef
 $(foreach n,$(CHAPTERS),$(eval $(call EXERCISE_RULES,$(n))))
 
-# CI: every chapter's exercises on the solution (the clean source: all pass) and blank
-# (every one fails).
-check-exercises: $(foreach n,$(EXERCISE_CHAPTERS),source-chapter$(n))
-	@for n in $(EXERCISE_CHAPTERS); do \
-	    rm -rf $(EXERCISE_DIR)/solution/chapter$$n && mkdir -p $(EXERCISE_DIR)/solution && \
-	    cp -R $(BUILD)/source/chapter$$n $(EXERCISE_DIR)/solution/chapter$$n && \
-	    $(MAKE) --no-print-directory check-exercise-chapter$$n STUDENT=$(EXERCISE_DIR)/solution/chapter$$n || exit 1; \
-	done
+# The solution's checks (the clean source: every exercise passes), their verdicts and
+# pictures copied into $(FIGURES) as chNN_exercise* for the gallery; then (CI) the blank
+# exercises of every chapter, each of which must fail.
+exercise-solutions: $(foreach n,$(EXERCISE_CHAPTERS),source-chapter$(n))
+	@mkdir -p $(FIGURES); for n in $(EXERCISE_CHAPTERS); do \
+	    tree=$(EXERCISE_DIR)/solution/chapter$$n; prefix=$(FIGURES)/$$(printf 'ch%02d' $$n)_; \
+	    rm -rf $$tree && mkdir -p $(EXERCISE_DIR)/solution && cp -R $(BUILD)/source/chapter$$n $$tree && \
+	    $(MAKE) --no-print-directory check-exercise-chapter$$n STUDENT=$$tree || exit 1; \
+	    rm -f $${prefix}exercise*; \
+	    sed "s|$$tree/check/||g" $$tree/check/verdicts.txt > $${prefix}exercises.txt; \
+	    for picture in $$tree/check/exercise-*.png; do \
+	        [ -e "$$picture" ] && cp "$$picture" "$$prefix$$(basename $$picture)"; \
+	    done; \
+	done; true
+
+check-exercises: exercise-solutions
 	@for n in $(EXERCISE_CHAPTERS); do \
 	    $(MAKE) --no-print-directory exercise-chapter$$n > /dev/null || exit 1; \
 	    $(MAKE) --no-print-directory check-exercise-chapter$$n > $(EXERCISE_DIR)/blank-chapter$$n.txt; \
 	    status=$$?; cat $(EXERCISE_DIR)/blank-chapter$$n.txt; \
-	    if [ $$status -ne 1 ]; then echo "chapter $$n's blank exercises: exit status $$status, not 1"; exit 1; fi; \
-	    if grep -q '^exercise .*: pass$$' $(EXERCISE_DIR)/blank-chapter$$n.txt; then \
-	        echo "chapter $$n: a blank exercise passes"; exit 1; fi; \
+	    if [ $$status -eq 0 ]; then echo "chapter $$n's blank exercises: the check passes"; exit 1; fi; \
+	    total=$$($(call grader_of,$$n) --list | wc -l); \
+	    failed=$$(grep -c '^exercise .*: FAIL: ' $(EXERCISE_DIR)/blank-chapter$$n.txt); \
+	    if [ "$$failed" -ne "$$total" ]; then \
+	        echo "chapter $$n: $$failed of $$total blank exercises fail"; exit 1; fi; \
 	done
 	@echo "check-exercises: every chapter's solution passes and every blank exercise fails"
 
@@ -307,6 +318,7 @@ figures:
 	    "$$(date '+%Y-%m-%d %H:%M:%S %z')" "$$seconds" "$$(nproc)" \
 	    "$(if $(QUICK),1,0)" > $(FIGURES)/run.txt.tmp && mv $(FIGURES)/run.txt.tmp $(FIGURES)/run.txt; \
 	echo "make figures: $$seconds s"
+	@$(MAKE) --no-print-directory exercise-solutions
 	@for n in $(CHAPTERS); do $(MAKE) --no-print-directory diff-chapter$$n > /dev/null || exit 1; done
 	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
 browser-test: $(GALLERY)
