@@ -25,8 +25,8 @@ double oren_nayar_b(double sigma)
     return 0.45 * roughness_ratio(sigma, 0.09);
 }
 
-/* Exercise 5.3: eq. 13 divided by rho / pi, with sin(alpha) tan(beta) (not sin(beta)), written as
- * max(0, x_i x_o + y_i y_o) / max(z_i, z_o) (see oren_nayar.h). */
+/* Exercise 5.3: eq. 13 divided by rho / pi, with sin(alpha) tan(beta) (not sin(beta)),
+ * written as max(0, x_i x_o + y_i y_o) / max(z_i, z_o) (see oren_nayar.h). */
 double oren_nayar_factor(double sigma, Vec3 wi, Vec3 wo)
 {
     double a = oren_nayar_a(sigma);

@@ -14,8 +14,8 @@
 
 #define PHOTON_NORMAL_COS 0.9
 
-/* Exercise 8.1: L(x, wo) from `map`'s photons within `radius` of x, for the diffuse material m at a
- * surface with unit normal n facing wo. */
+/* Exercise 8.1: L(x, wo) from `map`'s photons within `radius` of x, for the diffuse
+ * material m at a surface with unit normal n facing wo. */
 Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 n, Vec3 wo,
                               const Material *m);
 

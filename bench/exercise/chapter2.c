@@ -22,16 +22,12 @@
 
 static void grade_cosine_sample(Grading *g)
 {
+    const WarpLabels labels = {"ring", "nearest the pole", "nearest the horizon",
+                               "sector around the normal",
+                               "below the surface, off the unit sphere or at NaN"};
     Warp warp;
-    if (warp_new(&warp, RINGS, SECTORS, 4000) != 0) {
-        grading_fail(g, "out of memory");
+    if (warp_new(g, &warp, RINGS, SECTORS, 4000, labels) != 0)
         return;
-    }
-    warp.row_name = "ring";
-    warp.first_row = "nearest the pole";
-    warp.last_row = "nearest the horizon";
-    warp.col_name = "sector around the normal";
-    warp.impossible = "below the surface, off the unit sphere or at NaN";
     for (long i = 0; i < WARP_SAMPLES; i++) {
         Rng rng = rng_for_sample(21, 1, (uint64_t)i);
         double u1, u2;

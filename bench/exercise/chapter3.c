@@ -33,17 +33,15 @@ static void grade_light_sample(Grading *g)
     Scene scene;
     if (grading_scene(g, lamps, &scene) != 0)
         return;
+    const WarpLabels labels = {"row", "the lamps' far edge, y near 1",
+                               "the lamps' near edge, y near 0",
+                               "column (1-4: the small lamp, 5-12: the large one)",
+                               "off the lamps, or with the wrong normal or emission"};
     Warp warp;
-    if (warp_new(&warp, ROWS, COLS, 4000) != 0) {
+    if (warp_new(g, &warp, ROWS, COLS, 4000, labels) != 0) {
         scene_free(&scene);
-        grading_fail(g, "out of memory");
         return;
     }
-    warp.row_name = "row";
-    warp.first_row = "the lamps' far edge, y near 1";
-    warp.last_row = "the lamps' near edge, y near 0";
-    warp.col_name = "column (1-4: the small lamp, 5-12: the large one)";
-    warp.impossible = "off the lamps, or with the wrong normal or emission";
     for (long i = 0; i < WARP_SAMPLES; i++) {
         Rng rng = rng_for_sample(31, 1, (uint64_t)i);
         double u_select = rng_uniform(&rng), u1, u2;

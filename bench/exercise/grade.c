@@ -32,25 +32,16 @@ static const Exercise *find(const char *id)
 /* The task as a comment, wrapped at spaces, then the neutral body, indented. */
 static void print_blank(const Exercise *e)
 {
-    const char *text = e->task;
-    printf("    /* Exercise %s. ", e->id);
-    int column = (int)strlen("    /* Exercise . ") + (int)strlen(e->id);
-    while (*text) {
-        size_t word = strcspn(text, " ");
-        if (column + (int)word > TASK_WIDTH) {
-            printf("\n     * ");
-            column = 7;
-        }
-        printf("%.*s", (int)word, text);
-        column += (int)word;
+    int column = printf("    /* Exercise %s.", e->id);
+    for (const char *text = e->task; *text;) {
+        text += strspn(text, " ");
+        int word = (int)strcspn(text, " ");
+        if (word == 0)
+            break;
+        if (column + 1 + word > TASK_WIDTH)
+            column = printf("\n     *") - 1;
+        column += printf(" %.*s", word, text);
         text += word;
-        if (*text == ' ') {
-            text++;
-            if (*text && column + 1 + (int)strcspn(text, " ") <= TASK_WIDTH) {
-                putchar(' ');
-                column++;
-            }
-        }
     }
     printf(" */\n");
     for (const char *line = e->blank; *line;) {

@@ -95,9 +95,10 @@ Vec3 grading_direction(Rng *rng)
     return vec3(s * cos(phi), s * sin(phi), z);
 }
 
-int warp_new(Warp *warp, int rows, int cols, int shown)
+int warp_new(Grading *g, Warp *warp, int rows, int cols, int shown, WarpLabels labels)
 {
     memset(warp, 0, sizeof *warp);
+    warp->labels = labels;
     warp->rows = rows;
     warp->cols = cols;
     warp->shown = shown;
@@ -108,6 +109,7 @@ int warp_new(Warp *warp, int rows, int cols, int shown)
     warp->mapped = calloc(2 * (size_t)shown, sizeof *warp->mapped);
     if (!warp->observed || !warp->expected || !warp->square || !warp->mapped) {
         warp_free(warp);
+        grading_fail(g, "out of memory");
         return -1;
     }
     return 0;
@@ -194,9 +196,10 @@ static void write_warp_picture(Grading *g, const Warp *warp, const char *what, c
     histogram_panel(&panels[3], warp, warp->expected, top);
     char mapped[400], observed[400], expected[400];
     snprintf(mapped, sizeof mapped, "where they went: %s", what);
-    snprintf(observed, sizeof observed, "observed counts (%d x %d %ss)\n%s", warp->rows,
-             warp->cols, warp->row_name, verdict);
-    snprintf(expected, sizeof expected, "expected counts\n(%s at the top)", warp->first_row);
+    snprintf(observed, sizeof observed, "observed counts (%d %ss of %d cells)\n%s",
+             warp->rows, warp->labels.row_name, warp->cols, verdict);
+    snprintf(expected, sizeof expected, "expected counts\n(%s at the top)",
+             warp->labels.first_row);
     const char *captions[4] = {"the samples (u1, u2)\non the unit square", mapped, observed,
                                expected};
     char path[1024], error[256];
@@ -251,7 +254,7 @@ int grading_warp(Grading *g, const Warp *warp, const char *what, double level, i
     if (impossible > 0.0) {
         grading_fail(g, "%s of the samples fell %s, where the density is 0 (%s): %s",
                      grading_count(impossible, observed_text, sizeof observed_text),
-                     warp->impossible, verdict, hint);
+                     warp->labels.impossible, verdict, hint);
         return 0;
     }
     /* The row or column whose total is furthest from its expected total, in standard
@@ -272,12 +275,12 @@ int grading_warp(Grading *g, const Warp *warp, const char *what, double level, i
             }
         }
     int count = worst_row ? warp->rows : warp->cols;
-    const char *name = worst_row ? warp->row_name : warp->col_name;
+    const char *name = worst_row ? warp->labels.row_name : warp->labels.col_name;
     char where[200] = "";
     if (worst_row && worst_index == 0)
-        snprintf(where, sizeof where, " (%s)", warp->first_row);
+        snprintf(where, sizeof where, " (%s)", warp->labels.first_row);
     else if (worst_row && worst_index == count - 1)
-        snprintf(where, sizeof where, " (%s)", warp->last_row);
+        snprintf(where, sizeof where, " (%s)", warp->labels.last_row);
     grading_fail(g, "too %s samples in %s %d of %d%s: %s observed where %s are expected (%s): %s",
                  worst_observed < worst_expected ? "few" : "many", name, worst_index + 1, count,
                  where, grading_count(worst_observed, observed_text, sizeof observed_text),

@@ -69,23 +69,28 @@ int grading_scene(Grading *g, const char *text, Scene *scene);
 /* A direction uniformly distributed over the unit sphere. */
 Vec3 grading_direction(Rng *rng);
 
-/* The warp test's histogram: rows x cols cells, row 0 and column 0 named as below, and
- * one more cell, the impossible one, where the density is 0 (expected count 0). */
+/* What a warp test's cells are called: row 0 and the last row named where they are,
+ * and the impossible cell, where the density is 0 (expected count 0). */
+typedef struct {
+    const char *row_name;             /* "ring" */
+    const char *first_row, *last_row; /* where row 0 and the last row are: "nearest the pole" */
+    const char *col_name;             /* "sector around the normal" */
+    const char *impossible;           /* where the impossible cell is: "below the surface" */
+} WarpLabels;
+
+/* The warp test's histogram: rows x cols cells and the impossible one. */
 typedef struct {
     int rows, cols;
     double *observed, *expected; /* rows * cols + 1 */
-    const char *row_name;        /* "ring" */
-    const char *first_row, *last_row; /* where row 0 and the last row are: "nearest the pole" */
-    const char *col_name;        /* "sector around the normal" */
-    const char *impossible;      /* where the impossible cell is: "below the surface" */
+    WarpLabels labels;
     int shown;                   /* samples kept for the picture */
     double *square, *mapped;     /* their (u1, u2) in [0, 1)^2 and where they went, in
                                     [-1, 1]^2 (x right, y up) */
 } Warp;
 
-/* A warp test of rows x cols cells keeping `shown` samples for the picture (names
- * are set by the caller). Returns 0, or -1 when memory runs out. */
-int warp_new(Warp *warp, int rows, int cols, int shown);
+/* A warp test of rows x cols cells keeping `shown` samples for the picture. Returns 0,
+ * or fails the exercise (out of memory) and returns -1. */
+int warp_new(Grading *g, Warp *warp, int rows, int cols, int shown, WarpLabels labels);
 void warp_free(Warp *warp);
 
 /* Sample `index` drawn from (u1, u2) fell into cell (row, col), or into the impossible
