@@ -14,12 +14,12 @@
 
 #define PHOTON_NORMAL_COS 0.9
 
-/* L(x, wo) from `map`'s photons within `radius` of x, for the diffuse material m at a
- * surface with unit normal n facing wo. */
+/* Exercise 8.1: L(x, wo) from `map`'s photons within `radius` of x, for the diffuse
+ * material m at a surface with unit normal n facing wo. */
 Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 n, Vec3 wo,
                               const Material *m);
 
-/* Progressive photon mapping (Knaus and Zwicker 2011): pass j's radius,
+/* Exercise 8.2, progressive photon mapping (Knaus and Zwicker 2011): pass j's radius,
  *     r_j = r_1 sqrt(j^(alpha - 1)),   0 < alpha < 1,
  * so that both the bias (which shrinks with r) and the variance (which grows as
  * 1 / (N r^2) in one pass, but is averaged over the passes) go to zero. */
