@@ -8,6 +8,11 @@
 #   make diff-chapterN    what chapter N adds to chapter N-1: the lesson first (lib/ and the
 #                         chapter's program), then its tests (TESTS=no: the lesson only)
 #   make source-chapterN  the clean source of chapter N in build/source/chapterN/
+#   make exercise-chapterN      chapter N's tree with its exercises blank, in
+#                               build/exercise/chapterN/ (README: "Do the chapters yourself")
+#   make check-exercise-chapterN  grade it (STUDENT=DIR: another copy; ONLY="2.1 2.3": some)
+#   make check-exercises  every chapter's check on the solution (all pass) and on the blank
+#                         exercises (every one fails)
 #   make check-sources    every chapter's clean source: compiles alone, no markers left,
 #                         no placeholders, the lesson never reaches into the bench
 #   make sanitize         the tests under AddressSanitizer and UndefinedBehaviorSanitizer
@@ -60,7 +65,8 @@ DEPS_OK     := $(BUILD)/.deps-ok
 
 # ---- which chapter introduces each file -------------------------------------------------
 LESSON   := $(wildcard lib/*.c lib/*.h chapters/*.c tests/*.c tests/*.h)
-BENCH    := $(wildcard bench/*.c bench/*.h bench/tests/*.c bench/tests/*.h bench/fuzz/*.c)
+BENCH    := $(wildcard bench/*.c bench/*.h bench/tests/*.c bench/tests/*.h bench/fuzz/*.c \
+                      bench/exercise/*.c bench/exercise/*.h)
 SOURCES  := $(LESSON) $(BENCH)
 TAGS     := $(shell awk 'FNR == 1 && match($$0, /^\/\* [^ ]+ \((bench, )?chapter [0-9]+\)/) { \
                 t = substr($$0, RSTART, RLENGTH); sub(/.*chapter /, "", t); gsub(/[^0-9]/, "", t); \
@@ -85,7 +91,8 @@ TEST_SOURCES  := $(wildcard tests/test_*.c bench/tests/test_*.c)
 REFERENCE_BIN := $(BUILD)/reference
 GALLERY       := $(BUILD)/gallery
 
-.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery
+.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery check-exercises \
+        exercise-solutions
 .DEFAULT_GOAL := all
 .SECONDARY:
 
@@ -151,6 +158,72 @@ $(BUILD)/tests/%: $(BUILD)/chapter$(FINAL)/bench/tests/%
 	cp $< $@
 CHAPTER_TESTS := $(filter-out $(CHAPTER$(FINAL)_TESTS),$(ALL_TESTS))
 
+# ---- exercises (README.md, "Do the chapters yourself") ----------------------------------
+# Chapter N's exercises are the functions its lesson marks "Exercise N.k"; its grader,
+# bench/exercise/chapterN.c with grade.c and what they share, is built twice: from the
+# solution (chapter N's library), which lists the exercises and renders the references,
+# and by bench/exercise/check.sh from the student's tree (bench/exercise/student.mk).
+# A chapter without bench/exercise/chapterN.c has no exercises yet.
+EXERCISE_COMMON   := $(wildcard bench/exercise/grade.c bench/exercise/grading.c bench/exercise/render_check.c)
+EXERCISE_CHAPTERS := $(foreach n,$(CHAPTERS),$(if $(wildcard bench/exercise/chapter$(n).c),$(n)))
+EXERCISE_DIR      := $(BUILD)/exercise
+STUDENT           ?=
+ONLY              ?=
+grader_of          = $(BUILD)/chapter$(1)/bench/exercise/grade
+grader_sources     = $(call upto,$(1),$(EXERCISE_COMMON)) bench/exercise/chapter$(1).c
+SOLUTION_GRADERS  := $(foreach n,$(EXERCISE_CHAPTERS),$(call grader_of,$(n)))
+
+define EXERCISE_RULES
+.PHONY: exercise-chapter$(1) check-exercise-chapter$(1)
+ifneq ($(filter $(1),$(EXERCISE_CHAPTERS)),)
+$(call grader_of,$(1)): $(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call grader_sources,$(1))) $(BUILD)/chapter$(1)/libmc.a
+	$$(CC) $$^ $$(LDFLAGS) $$(LIBS) -o $$@
+
+exercise-chapter$(1): source-chapter$(1) $(call grader_of,$(1))
+	@sh bench/exercise/exercise.sh $(1) $(BUILD)/source/chapter$(1) $(call grader_of,$(1)) $(EXERCISE_DIR)/chapter$(1)
+
+check-exercise-chapter$(1): $(call grader_of,$(1))
+	@student=$$(if $$(STUDENT),$$(STUDENT),$(EXERCISE_DIR)/chapter$(1)); \
+	if [ ! -d "$$$$student/lib" ]; then echo "no exercise tree in $$$$student: make exercise-chapter$(1) first (or STUDENT=DIR)"; exit 2; fi; \
+	CC="$$(CC)" CFLAGS="$$(CFLAGS)" LDFLAGS="$$(LDFLAGS)" LIBS="$$(LIBS)" PKG_CFLAGS="$$(PKG_CFLAGS)" \
+	BENCH_OBJECTS="$$(addprefix $$(CURDIR)/,$(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call upto,$(1),$(BENCH_SOURCES))))" \
+	GRADER_FILES="$$(addprefix $$(CURDIR)/,$(call grader_sources,$(1)))" \
+	sh bench/exercise/check.sh $(1) "$$$$student" $(call grader_of,$(1)) $(EXERCISE_DIR)/references/chapter$(1) $$(ONLY)
+else
+exercise-chapter$(1) check-exercise-chapter$(1):
+	@echo "chapter $(1) has no exercises yet (bench/exercise/chapter$(1).c)"; exit 2
+endif
+endef
+$(foreach n,$(CHAPTERS),$(eval $(call EXERCISE_RULES,$(n))))
+
+# The solution's checks (the clean source: every exercise passes), their verdicts and
+# pictures copied into $(FIGURES) as chNN_exercise* for the gallery; then (CI) the blank
+# exercises of every chapter, each of which must fail.
+exercise-solutions: $(foreach n,$(EXERCISE_CHAPTERS),source-chapter$(n))
+	@mkdir -p $(FIGURES); for n in $(EXERCISE_CHAPTERS); do \
+	    tree=$(EXERCISE_DIR)/solution/chapter$$n; prefix=$(FIGURES)/$$(printf 'ch%02d' $$n)_; \
+	    rm -rf $$tree && mkdir -p $(EXERCISE_DIR)/solution && cp -R $(BUILD)/source/chapter$$n $$tree && \
+	    $(MAKE) --no-print-directory check-exercise-chapter$$n STUDENT=$$tree || exit 1; \
+	    rm -f $${prefix}exercise*; \
+	    sed "s|$$tree/check/||g" $$tree/check/verdicts.txt > $${prefix}exercises.txt; \
+	    for picture in $$tree/check/exercise-*.png; do \
+	        [ -e "$$picture" ] && cp "$$picture" "$$prefix$$(basename $$picture)"; \
+	    done; \
+	done; true
+
+check-exercises: exercise-solutions
+	@for n in $(EXERCISE_CHAPTERS); do \
+	    $(MAKE) --no-print-directory exercise-chapter$$n > /dev/null || exit 1; \
+	    $(MAKE) --no-print-directory check-exercise-chapter$$n > $(EXERCISE_DIR)/blank-chapter$$n.txt; \
+	    status=$$?; cat $(EXERCISE_DIR)/blank-chapter$$n.txt; \
+	    if [ $$status -eq 0 ]; then echo "chapter $$n's blank exercises: the check passes"; exit 1; fi; \
+	    total=$$($(call grader_of,$$n) --list | wc -l); \
+	    failed=$$(grep -c '^exercise .*: FAIL: ' $(EXERCISE_DIR)/blank-chapter$$n.txt); \
+	    if [ "$$failed" -ne "$$total" ]; then \
+	        echo "chapter $$n: $$failed of $$total blank exercises fail"; exit 1; fi; \
+	done
+	@echo "check-exercises: every chapter's solution passes and every blank exercise fails"
+
 # The reference renderer: the final library's best estimator. It links the physics and
 # what measures it, not the files that draw figures, plots and tables, so that editing
 # those does not make every reference render again (the cache key holds this program's
@@ -161,7 +234,7 @@ $(REFERENCE_BIN): $(BUILD)/chapter$(FINAL)/bench/reference.o $(REFERENCE_OBJS)
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 
 CHAPTER_BINS := $(foreach n,$(CHAPTERS),$(call program_of,$(n)))
-all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) $(CHAPTER_TESTS) $(FINAL_TESTS)
+all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) $(CHAPTER_TESTS) $(FINAL_TESTS) $(SOLUTION_GRADERS)
 
 # Every chapter's clean source: no chapter markers left; its lesson (lib/) compiles
 # with nothing but its own headers (it never includes the bench, nor a later chapter),
@@ -211,7 +284,7 @@ test: all check-sources
 	@rm -rf $(TEST_LOGS) && mkdir -p $(TEST_LOGS); \
 	printf '%s\n' $(CHAPTER_TESTS) $(FINAL_TESTS) | xargs -P $$(nproc) -I TEST sh -c \
 	    'log=$(TEST_LOGS)/$$(echo TEST | tr / _); \
-	     if CHAPTER_DIR=$(BUILD) TEST > $$log 2>&1; then echo passed; else echo failed; fi > $$log.result'; \
+	     if CHAPTER_DIR=$(BUILD) CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" TEST > $$log 2>&1; then echo passed; else echo failed; fi > $$log.result'; \
 	passed=0; failed=0; \
 	for t in $(CHAPTER_TESTS) $(FINAL_TESTS); do \
 	    log=$(TEST_LOGS)/$$(echo $$t | tr / _); \
@@ -245,6 +318,7 @@ figures:
 	    "$$(date '+%Y-%m-%d %H:%M:%S %z')" "$$seconds" "$$(nproc)" \
 	    "$(if $(QUICK),1,0)" > $(FIGURES)/run.txt.tmp && mv $(FIGURES)/run.txt.tmp $(FIGURES)/run.txt; \
 	echo "make figures: $$seconds s"
+	@$(MAKE) --no-print-directory exercise-solutions
 	@for n in $(CHAPTERS); do $(MAKE) --no-print-directory diff-chapter$$n > /dev/null || exit 1; done
 	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
 browser-test: $(GALLERY)
@@ -296,4 +370,4 @@ bench: $(BUILD)/bench $(REFERENCE_BIN)
 clean:
 	rm -rf $(BUILD)
 
--include $(shell find $(BUILD) -name '*.d' -not -path '$(BUILD)/sanitize/*' 2>/dev/null)
+-include $(shell find $(BUILD) -name '*.d' -not -path '$(BUILD)/sanitize/*' -not -path '$(BUILD)/exercise/*' 2>/dev/null)

@@ -33,7 +33,7 @@ typedef struct {
     int error_size;
 } Writer;
 
-typedef enum { FILE_FIGURE, FILE_PLOT, FILE_TABLE, FILE_TEXT, FILE_OTHER } FileKind;
+typedef enum { FILE_FIGURE, FILE_PLOT, FILE_TABLE, FILE_TEXT, FILE_EXERCISE, FILE_OTHER } FileKind;
 
 static int fail(Writer *w, const char *what, const char *name)
 {
@@ -206,6 +206,9 @@ static int listed(const char *list, const char *word, size_t length)
 /* A PNG is a figure unless a PFM of its name and its size lies beside it (gallery.h). */
 static FileKind kind_of(const Writer *w, const GalleryChapter *chapter, const char *name)
 {
+    if (strlen(name) > strlen("chNN_") && strncmp(name + strlen("chNN_"), "exercise", 8) == 0 &&
+        (ends_with(name, ".png") || ends_with(name, ".txt")))
+        return FILE_EXERCISE;
     if (ends_with(name, ".csv"))
         return FILE_TABLE;
     if (ends_with(name, ".txt"))
@@ -629,12 +632,13 @@ static int write_kind(Writer *w, const GalleryChapter *chapter, FileKind kind,
         if (shown++ == 0)
             fprintf(w->out, "<h3>%s</h3>\n%s", heading,
                     kind == FILE_OTHER ? "<ul class=\"files\">\n" : "");
-        if (kind == FILE_FIGURE || kind == FILE_PLOT) {
+        if (kind == FILE_FIGURE || kind == FILE_PLOT ||
+            (kind == FILE_EXERCISE && ends_with(name, ".png"))) {
             write_image(w, name);
         } else if (kind == FILE_TABLE) {
             if (write_table(w, name) != 0)
                 return -1;
-        } else if (kind == FILE_TEXT) {
+        } else if (kind == FILE_TEXT || kind == FILE_EXERCISE) {
             if (write_text(w, name) != 0)
                 return -1;
         } else {
@@ -700,6 +704,9 @@ static int write_chapter(Writer *w, const GalleryChapter *chapter)
     char prefix[16];
     chapter_prefix(prefix, chapter->number);
     int n = chapter->number;
+    char exercises[128];
+    snprintf(exercises, sizeof exercises, "Exercises: the solution's verdicts and pictures "
+             "(make check-exercise-chapter%d)", n);
     fprintf(out, "<section id=\"chapter%d\">\n<h2>Chapter %d: ", n, n);
     html_text(out, chapter->title);
     fputs("</h2>\n<p>", out);
@@ -716,7 +723,8 @@ static int write_chapter(Writer *w, const GalleryChapter *chapter)
         write_missing_figures(w, chapter);
     if (write_kind(w, chapter, FILE_FIGURE, "Figures") != 0 ||
         write_kind(w, chapter, FILE_TABLE, "Tables") != 0 ||
-        write_kind(w, chapter, FILE_PLOT, "Plots") != 0)
+        write_kind(w, chapter, FILE_PLOT, "Plots") != 0 ||
+        write_kind(w, chapter, FILE_EXERCISE, exercises) != 0)
         return -1;
     fprintf(out,
             "<h3>Settings</h3>\n<p>To reproduce: <code>make chapter%d%s</code>. The settings "

@@ -15,6 +15,8 @@
  *   chNN_*.csv  an HTML table: the first row names the columns, whatever they are; cells
  *               are shown as the CSV has them, numbers right-aligned;
  *   chNN_*.txt  shown as it is, under the chapter's settings (e.g. the settings a run used);
+ *   chNN_exercise*.png, .txt  the solution's exercise pictures and verdicts (README.md, "Do
+ *               the chapters yourself"), under their own heading;
  *   any other   linked (the panels' PFM radiance, ...).
  * A chapter without any file is listed with a note that it is not rendered yet.
  *

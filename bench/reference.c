@@ -23,6 +23,7 @@
  * --parent PID it ends when that program does (Linux: the parent-death signal), so a
  * chapter program stopped by SIGTERM does not leave it rendering on its own.
  */
+#include <ctype.h>
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
@@ -54,9 +55,10 @@ static void fail(int status, const char *format, const char *detail)
 }
 
 typedef struct {
-    const char *scene, *name, *fresnel, *sigma, *out, *key;
+    const char *scene, *name, *fresnel, *sigma, *out;
     long size, spp, depth, parent;
-    unsigned long long seed;
+    unsigned long long seed, key;
+    int has_key;
     int quiet;
 } Request;
 
@@ -74,6 +76,17 @@ static long whole_number(const char *flag, const char *text, long min, long max)
     long value = strtol(text, &end, 10);
     if (*text == '\0' || *end != '\0' || errno != 0 || value < min || value > max)
         fail(2, "%s: expected a whole number in range", flag);
+    return value;
+}
+
+/* A seed (base 10) or a cache key (base 16): digits only, the whole of a 64-bit word. */
+static unsigned long long unsigned_word(const char *flag, const char *text, int base)
+{
+    char *end;
+    errno = 0;
+    unsigned long long value = strtoull(text, &end, base);
+    if (!isxdigit((unsigned char)*text) || *end != '\0' || errno != 0)
+        fail(2, base == 16 ? "%s: expected hexadecimal digits" : "%s: expected digits", flag);
     return value;
 }
 
@@ -98,15 +111,18 @@ static Request parse(int argc, char **argv)
         else if (strcmp(flag, "--fresnel") == 0) r.fresnel = value;
         else if (strcmp(flag, "--sigma") == 0) r.sigma = value;
         else if (strcmp(flag, "--out") == 0) r.out = value;
-        else if (strcmp(flag, "--key") == 0) r.key = value;
+        else if (strcmp(flag, "--key") == 0) {
+            r.key = unsigned_word(flag, value, 16);
+            r.has_key = 1;
+        }
         else if (strcmp(flag, "--size") == 0) r.size = whole_number(flag, value, 1, 16384);
         else if (strcmp(flag, "--reference-spp") == 0) r.spp = whole_number(flag, value, 1, 1 << 24);
         else if (strcmp(flag, "--depth") == 0) r.depth = whole_number(flag, value, 1, 1000);
-        else if (strcmp(flag, "--seed") == 0) r.seed = strtoull(value, NULL, 10);
+        else if (strcmp(flag, "--seed") == 0) r.seed = unsigned_word(flag, value, 10);
         else if (strcmp(flag, "--parent") == 0) r.parent = whole_number(flag, value, 1, 1L << 30);
         else fail(2, "unknown option '%s' (this program is run by the chapter programs)", flag);
     }
-    if (!r.scene || !r.out || !r.key || r.size == 0 || r.spp == 0 || r.depth == 0)
+    if (!r.scene || !r.out || !r.has_key || r.size == 0 || r.spp == 0 || r.depth == 0)
         fail(2, "%s", "needs --scene, --size, --reference-spp, --depth, --out and --key");
     if (strcmp(r.fresnel, "schlick") != 0 && strcmp(r.fresnel, "exact") != 0)
         fail(2, "--fresnel: expected 'schlick' or 'exact', got '%s'", r.fresnel);
@@ -173,8 +189,7 @@ int main(int argc, char **argv)
     measure_image_mean(&result.image, &result.average_std_error, &reference.mean,
                        &reference.mean_std_error);
     image_free(&result.average_std_error);
-    uint64_t key = strtoull(request.key, NULL, 16);
-    if (measure_save_reference(request.out, key, &reference) != 0)
+    if (measure_save_reference(request.out, request.key, &reference) != 0)
         fail(1, "cannot write the reference into %s", request.out);
     render_result_free(&result);
     mirror_planes_free(&mirrors);

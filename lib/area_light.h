@@ -20,8 +20,8 @@ typedef struct {
     Vec3 emission; /* its radiance */
 } LightSample;
 
-/* A point uniformly distributed over all lights' area; density 1 / scene->light_area.
- * The scene must have at least one light. */
+/* Exercise 3.1: a point uniformly distributed over all lights' area; density
+ * 1 / scene->light_area. The scene must have at least one light. */
 LightSample area_light_sample(const Scene *scene, double u_select, double u1, double u2);
 
 /* One term of eq. 21: the light from one point y, and the direction to it with its
@@ -33,8 +33,8 @@ typedef struct {
     double pdf;
 } ShadowRay;
 
-/* One shadow ray from surface point x (unit normal n facing the viewer, direction wo)
- * of the diffuse material m. */
+/* Exercise 3.3: one shadow ray from surface point x (unit normal n facing the viewer,
+ * direction wo) of the diffuse material m. */
 ShadowRay area_light_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Material *m,
                                 Rng *rng, RayCounts *counts);
 
@@ -42,9 +42,9 @@ ShadowRay area_light_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, con
 Vec3 area_light_direct(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Material *m,
                        int shadow_rays, Rng *rng, RayCounts *counts);
 
-/* The density in solid angle of the direction towards a light point drawn by area, a
- * distance d away, whose normal makes the angle beta with the way back: dA = d^2 dw /
- * cos(beta) turns the density 1/A into d^2 / (A cos beta). */
+/* Exercise 3.2: the density in solid angle of the direction towards a light point drawn
+ * by area, a distance d away, whose normal makes the angle beta with the way back:
+ * dA = d^2 dw / cos(beta) turns the density 1/A into d^2 / (A cos beta). */
 double area_light_pdf(const Scene *scene, double distance, double cos_beta);
 
 #endif

@@ -13,8 +13,8 @@ static double squared_ratio(double numerator, double denominator)
     return r * r;
 }
 
-/* R_s and R_p at one incidence: 1 and 1 for total internal reflection, 0 and 0 with no
- * interface (n_i = n_t, where at grazing incidence both fractions would be 0 / 0). */
+/* Exercise 4.1: R_s and R_p at one incidence: 1 and 1 for total internal reflection, 0
+ * and 0 with no interface (n_i = n_t, where at grazing incidence both would be 0 / 0). */
 static Polarised fresnel_polarised(double cos_i, double n_i, double n_t)
 {
     Polarised r = {0.0, 0.0};
@@ -43,7 +43,7 @@ double fresnel_p(double cos_i, double n_i, double n_t)
     return fresnel_polarised(cos_i, n_i, n_t).p;
 }
 
-/* Eq. 3: unpolarised light is half s, half p. */
+/* Exercise 4.2, eq. 3: unpolarised light is half s, half p. */
 double fresnel_reflectance(double cos_i, double n_i, double n_t)
 {
     Polarised r = fresnel_polarised(cos_i, n_i, n_t);

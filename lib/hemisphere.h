@@ -12,11 +12,11 @@
 
 #include "vec.h"
 
-/* A unit direction with density cos(theta) / pi, from u1, u2 in [0, 1).
+/* Exercise 2.1: a unit direction with density cos(theta) / pi, from u1, u2 in [0, 1).
  * Its z is sqrt(1 - u1) > 0: never below or exactly on the surface. */
 Vec3 hemisphere_sample_cosine(double u1, double u2);
 
-/* The density cos(theta) / pi of a unit local direction; 0 below the surface. */
+/* Exercise 2.2: the density cos(theta) / pi of a unit local direction; 0 below the surface. */
 double hemisphere_pdf_cosine(Vec3 w_local);
 
 #endif

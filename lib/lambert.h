@@ -10,7 +10,7 @@
 
 #include "vec.h"
 
-/* Eq. 8: the BRDF rho / pi, the same for every pair of directions. */
+/* Exercise 2.3, eq. 8: the BRDF rho / pi, the same for every pair of directions. */
 Vec3 lambert_brdf(Vec3 rho);
 
 #endif

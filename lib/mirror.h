@@ -9,6 +9,7 @@
 
 #include "vec.h"
 
+/* Exercise 1.4: the mirror direction R(d) of direction d at the unit normal n. */
 static inline Vec3 mirror_reflect(Vec3 d, Vec3 n)
 {
     return vec3_add_scaled(d, n, -2.0 * vec3_dot(d, n));

@@ -29,10 +29,10 @@ typedef struct {
 int mirror_light_find_planes(const Scene *scene, MirrorPlanes *mirrors);
 void mirror_planes_free(MirrorPlanes *mirrors);
 
-/* One shadow ray at diffuse point x (normal n facing the viewer, direction wo, material
- * m) to the image of a light point in `plane`: its value, direction and density (zero
- * value when the light or the surface faces away, the ray's first hit is not a mirror
- * triangle in this plane, or the way from the mirror to the lamp is blocked). */
+/* Exercise 7.2: one shadow ray at diffuse point x (normal n facing the viewer, direction
+ * wo, material m) to the image of a light point in `plane`: its value, direction and
+ * density (zero value when the light or the surface faces away, the ray's first hit is
+ * not a mirror triangle in this plane, or the way from the mirror to the lamp is blocked). */
 ShadowRay mirror_light_shadow_ray(const Scene *scene, const MirrorPlane *plane, Vec3 x, Vec3 n,
                                   Vec3 wo, const Material *m, Rng *rng, RayCounts *counts);
 

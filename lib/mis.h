@@ -10,8 +10,8 @@
 #ifndef MIS_H
 #define MIS_H
 
-/* The power heuristic's weight of strategy f, taking count_f samples of density pdf_f,
- * against strategy g (count_g samples of density pdf_g), for the same direction:
+/* Exercise 7.1: the power heuristic's weight of strategy f, taking count_f samples of
+ * density pdf_f, against strategy g (count_g samples of density pdf_g), for one direction:
  *     (count_f pdf_f)^2 / ((count_f pdf_f)^2 + (count_g pdf_g)^2);  0 when both are 0. */
 double mis_power_heuristic(int count_f, double pdf_f, int count_g, double pdf_g);
 

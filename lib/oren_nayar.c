@@ -13,20 +13,20 @@ static double roughness_ratio(double sigma, double c)
     return s2 / (s2 + c);
 }
 
-/* Eq. 14, A with the "1 -" the report leaves out. */
+/* Exercise 5.1, eq. 14: A with the "1 -" the report leaves out. */
 double oren_nayar_a(double sigma)
 {
     return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);
 }
 
-/* Eq. 14, B. */
+/* Exercise 5.2, eq. 14: B. */
 double oren_nayar_b(double sigma)
 {
     return 0.45 * roughness_ratio(sigma, 0.09);
 }
 
-/* Eq. 13 divided by rho / pi, with sin(alpha) tan(beta) (not sin(beta)), written as
- * max(0, x_i x_o + y_i y_o) / max(z_i, z_o) (see oren_nayar.h). */
+/* Exercise 5.3: eq. 13 divided by rho / pi, with sin(alpha) tan(beta) (not sin(beta)),
+ * written as max(0, x_i x_o + y_i y_o) / max(z_i, z_o) (see oren_nayar.h). */
 double oren_nayar_factor(double sigma, Vec3 wi, Vec3 wo)
 {
     double a = oren_nayar_a(sigma);

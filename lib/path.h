@@ -61,8 +61,8 @@ Vec3 path_diffuse_bounce(const Vertex *x, Rng *rng, Vec3 *direction);
 Vec3 path_specular(const Vertex *x, Vec3 d, const PathSettings *settings, Rng *rng,
                    Vec3 *direction);
 
-/* The path tracer that finds light only by hitting it. An Estimator (render.h);
- * settings points to a PathSettings. */
+/* Exercise 2.4: the path tracer that finds light only by hitting it. An Estimator
+ * (render.h); settings points to a PathSettings. */
 Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                    RayCounts *counts);
 

@@ -2,8 +2,6 @@
  * path_caustics.h. */
 #include "path_caustics.h"
 
-#include <stddef.h>
-
 #include "direct_light.h"
 #include "photon_estimate.h"
 #include "roulette.h"
@@ -46,8 +44,10 @@ Vec3 path_caustics_radiance(const Scene *scene, Ray ray, Rng *rng, const void *s
             }
             /* The disc's reachable area where the camera sees it; after a diffuse
              * bounce, pi r^2 (the bounce blurs an edge more than the kernel does). */
-            Vec3 caustic = photon_estimate_radiance(diffuse_vertices == 0 ? scene : NULL,
-                                                    c->caustics, c->radius, &x);
+            Vec3 caustic = diffuse_vertices == 0
+                               ? photon_estimate_reachable(scene, c->caustics, c->radius, &x)
+                               : photon_estimate_radiance(c->caustics, c->radius, x.hit.point,
+                                                          x.normal, x.wo, x.material);
             radiance = vec3_add(radiance, vec3_mul(throughput, caustic));
             emission = s->shadow_rays > 0 ? EMISSION_SHARE : EMISSION_ALL;
             if (!roulette_continues(s, segment, &throughput, rng))

@@ -54,17 +54,22 @@ static double reachable_area(const Scene *scene, const Vertex *x, double r)
     return PI * r * r * (reached > 0 ? reached : 1) / EDGE_POINTS;
 }
 
-Vec3 photon_estimate_radiance(const Scene *scene, const PhotonMap *map, double radius,
-                              const Vertex *x)
+Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 n, Vec3 wo,
+                              const Material *m)
 {
-    Vec3 n = x->normal, wo = x->wo;
-    const Material *m = x->material;
     Gather g = {map, n, wo, m, m->kind == MATERIAL_LAMBERT, vec3(0, 0, 0)};
-    kdtree_query_radius(&map->tree, x->hit.point, radius, add_photon, &g);
-    if (g.sum.x == 0.0 && g.sum.y == 0.0 && g.sum.z == 0.0)
-        return g.sum; /* no photons: no need to know the area */
+    kdtree_query_radius(&map->tree, x, radius, add_photon, &g);
     Vec3 sum = g.lambert ? vec3_mul(diffuse_brdf(m, n, wo, wo), g.sum) : g.sum;
-    return vec3_scale(sum, 1.0 / (scene ? reachable_area(scene, x, radius) : PI * radius * radius));
+    return vec3_scale(sum, 1.0 / (PI * radius * radius));
+}
+
+Vec3 photon_estimate_reachable(const Scene *scene, const PhotonMap *map, double radius,
+                               const Vertex *x)
+{
+    Vec3 box = photon_estimate_radiance(map, radius, x->hit.point, x->normal, x->wo, x->material);
+    if (box.x == 0.0 && box.y == 0.0 && box.z == 0.0)
+        return box; /* no photons: no need to know the area */
+    return vec3_scale(box, PI * radius * radius / reachable_area(scene, x, radius));
 }
 
 double ppm_first_radius(const Scene *scene, double fraction)

@@ -14,18 +14,21 @@
 
 #define PHOTON_NORMAL_COS 0.9
 
+/* Exercise 8.1: L(x, wo) from `map`'s photons within `radius` of x, for the diffuse
+ * material m at a surface with unit normal n facing wo. */
+Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 n, Vec3 wo,
+                              const Material *m);
+
 /* The points of the disc tested for whether photons can reach them. */
 #define EDGE_POINTS 16
 
-/* L(x, wo) from `map`'s photons within `radius` of the diffuse vertex x. The flux is
- * divided by the area of the disc that photons can reach in `scene` (photon_estimate.c):
- * near an edge or a wall, where part of the disc is off the surface or behind the wall,
- * pi r^2 would darken the edge. Without a scene (NULL), by pi r^2: cheaper, where a
- * dark edge would not be seen. */
-Vec3 photon_estimate_radiance(const Scene *scene, const PhotonMap *map, double radius,
-                              const Vertex *x);
+/* The same at the diffuse vertex x of `scene`, its flux divided by the area of the disc
+ * that photons can reach (photon_estimate.c) instead of pi r^2: near an edge or a wall,
+ * where part of the disc is off the surface or behind the wall, pi r^2 darkens the edge. */
+Vec3 photon_estimate_reachable(const Scene *scene, const PhotonMap *map, double radius,
+                               const Vertex *x);
 
-/* Progressive photon mapping (Knaus and Zwicker 2011): pass j's radius,
+/* Exercise 8.2, progressive photon mapping (Knaus and Zwicker 2011): pass j's radius,
  *     r_j = r_1 sqrt(j^(alpha - 1)),   0 < alpha < 1,
  * so that both the bias (which shrinks with r) and the variance (which grows as
  * 1 / (N r^2) in one pass, but is averaged over the passes) go to zero. */

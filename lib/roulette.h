@@ -16,11 +16,12 @@
  * drawing a random number. */
 int roulette_survives(double alpha, Rng *rng);
 
-/* The bounded-weight survival probability min(1, max component of throughput). */
+/* Exercise 6.2: the bounded-weight survival probability min(1, max component of throughput). */
 double roulette_survival_from_throughput(Vec3 throughput);
 
-/* Roulette at a diffuse vertex on `segment` with the settings' alpha or bounded weights:
- * 0 if the path ends, else 1 with the survivor's throughput divided by its probability. */
+/* Exercise 6.1: roulette at a diffuse vertex on `segment` with the settings' alpha or
+ * bounded weights: 0 if the path ends, else 1 with the survivor's throughput divided by
+ * its probability. */
 int roulette_continues(const PathSettings *settings, int segment, Vec3 *throughput, Rng *rng);
 
 #endif

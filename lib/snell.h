@@ -17,9 +17,9 @@
 
 #define SNELL_GRAZING_MARGIN (256 * DBL_EPSILON)
 
-/* Refract unit direction d at a surface with unit normal n facing the incident side
- * (d . n <= 0), from index n_i into index n_t. Returns 1 and the unit refracted
- * direction in *t, or 0 for total internal reflection. */
+/* Exercise 1.5: refract unit direction d at a surface with unit normal n facing the
+ * incident side (d . n <= 0), from index n_i into index n_t. Returns 1 and the unit
+ * refracted direction in *t, or 0 for total internal reflection. */
 int snell_refract(Vec3 d, Vec3 n, double n_i, double n_t, Vec3 *t);
 
 /* cos(theta_t) for incidence cosine cos_i, or -1 for total internal reflection

@@ -16,7 +16,7 @@ typedef struct {
     int material;
 } Sphere;
 
-/* Smallest t in (tmin, tmax) where the ray meets the sphere, or INFINITY. */
+/* Exercise 1.1: the smallest t in (tmin, tmax) where the ray meets the sphere, or INFINITY. */
 double sphere_intersect(const Sphere *sphere, Ray ray, double tmin, double tmax);
 
 /* Outward unit normal at surface point p. */

@@ -27,8 +27,8 @@ typedef struct {
 
 Triangle triangle_make(Vec3 v0, Vec3 v1, Vec3 v2, int material);
 
-/* Smallest t in (tmin, tmax) where the ray meets the triangle (either side), or INFINITY.
- * Defined here, inline, because the hierarchy's leaves call it for nearly every ray. */
+/* Exercise 1.2: the smallest t in (tmin, tmax) where the ray meets the triangle (either
+ * side), or INFINITY. Inline here: the hierarchy's leaves call it for nearly every ray. */
 static inline double triangle_intersect(const Triangle *tri, Ray ray, double tmin, double tmax)
 {
     Vec3 p = vec3_cross(ray.dir, tri->e2);

@@ -291,7 +291,7 @@ static void test_scene_from_a_fifo(void **state)
 #endif
 
 /* The bench's own programs speak as the chapters' do: the reference renderer prints its
- * usage for --help; the gallery makes its --out folder however deep, and fails, rather
+ * usage for --help and refuses a cache key or seed that is not all digits; the gallery makes its --out folder however deep, and fails, rather
  * than exit 0, when what it prints is lost (standard output on a full device). */
 static void test_bench_programs(void **state)
 {
@@ -300,6 +300,16 @@ static void test_bench_programs(void **state)
     snprintf(command, sizeof command, "%s/reference --help 2>&1", directory);
     assert_int_equal(capture(command, output, sizeof output), 0);
     assert_non_null(strstr(output, "usage: reference"));
+    const char *bad_numbers[][2] = {{"room", "1"}, {"-1", "1"}, {"12345678901234567", "1"},
+                                    {"ab", "x"}, {"ab", "-2"}};
+    for (size_t i = 0; i < sizeof bad_numbers / sizeof bad_numbers[0]; i++) {
+        snprintf(command, sizeof command, "%s/reference --scene scenes/room.scene --size 8 "
+                 "--reference-spp 8 --depth 2 --out %s --key %s --seed %s --quiet 2>&1",
+                 directory, out_dir, bad_numbers[i][0], bad_numbers[i][1]);
+        if (capture(command, output, sizeof output) != 2 || !strstr(output, "expected"))
+            fail_msg("reference with --key %s --seed %s: %s", bad_numbers[i][0],
+                     bad_numbers[i][1], output);
+    }
     snprintf(command, sizeof command, "%s/gallery --out %s/deep/er/gallery 2>&1", directory, out_dir);
     assert_int_equal(capture(command, output, sizeof output), 0);
     snprintf(command, sizeof command, "%s/deep/er/gallery/index.html", out_dir);

@@ -10,7 +10,8 @@
  *     escape (space, #, ?); every file of a chapter is reachable;
  *   - each table carries its CSV cell by cell, numbers right-aligned;
  *   - a chapter without files has its section and says it is not rendered yet;
- *   - figures are shown, panels (a PFM of the same size beside them) only linked;
+ *   - figures are shown, panels (a PFM of the same size beside them) only linked, the
+ *     solution's exercise pictures and verdicts under their own heading after the plots;
  *   - text from files is escaped, and the page has no script.
  */
 #include <stdarg.h>
@@ -106,7 +107,7 @@ static void empty_fixture(void)
 }
 
 /* Chapter 1: a figure, a panel (PNG and PFM), a table, a settings file; chapter 2: a
- * figure, a plot, a CRLF table; chapter 3: nothing; chapter 4: a figure whose name needs
+ * figure, a plot, a CRLF table, an exercise's picture and verdicts; chapter 3: nothing; chapter 4: a figure whose name needs
  * escaping. A run record (QUICK) and a diff for chapter 2. */
 static void make_fixture(void)
 {
@@ -118,6 +119,8 @@ static void make_fixture(void)
     write_png("ch02_figure2", 8, 5, 0);
     write_png("ch02_plot", 10, 7, 0);
     write_text("ch02_data.csv", DATA_CSV);
+    write_png("ch02_exercise-2.1-warp", 7, 4, 0);
+    write_text("ch02_exercises.txt", "exercise 2.1 (hemisphere_sample_cosine): pass\n");
     write_png("ch04_a b&c#d", 5, 5, 0);
     write_text("run.txt", "started=2026-01-02 03:04:05 +0000\nfinished=2026-01-02 03:05:20 "
                           "+0000\nseconds=75\nthreads=2\nquick=1\n");
@@ -229,7 +232,8 @@ static void test_links_resolve(void **state)
     char *page = make_page();
     const char *const files[] = {"ch01_figure1.png", "ch01_panel.png", "ch01_panel.pfm",
                                  "ch01_table.csv", "ch01_settings.txt", "ch02_figure2.png",
-                                 "ch02_plot.png", "ch02_data.csv", "ch04_a b&c#d.png"};
+                                 "ch02_plot.png", "ch02_data.csv", "ch04_a b&c#d.png",
+                                 "ch02_exercise-2.1-warp.png", "ch02_exercises.txt"};
     const int count = (int)(sizeof files / sizeof files[0]);
     int reached[sizeof files / sizeof files[0]] = {0};
     int links = check_links(page, files, count, reached);
@@ -350,6 +354,12 @@ static void test_layout(void **state)
     const char *plots = strstr(two, "<h3>Plots</h3>");
     assert_true(plots && plots < end && strstr(plots, "<img src=\"ch02_plot.png\"") < end);
     assert_true(strstr(two, "<img src=\"ch02_figure2.png\"") < plots);
+    const char *exercises = strstr(two, "<h3>Exercises: the solution's verdicts and pictures "
+                                        "(make check-exercise-chapter2)</h3>");
+    assert_true(exercises && exercises > plots && exercises < end);
+    assert_true(in_range(exercises, end, "<img src=\"ch02_exercise-2.1-warp.png\""));
+    assert_true(in_range(exercises, end, "exercise 2.1 (hemisphere_sample_cosine): pass"));
+    assert_false(in_range(two, exercises, "ch02_exercise"));
     assert_true(in_range(two, end, "<details>"));
     assert_true(in_range(two, end, "<span class=\"add\">+int y &lt; 1;</span>"));
     assert_false(in_range(one, section(page, 2, &end), "<details>"));

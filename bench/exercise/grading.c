@@ -1,0 +1,290 @@
+/* grading.c (bench, chapter 1): verdicts, numbers and the warp test. See grading.h. */
+#include "grading.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "chi_square.h"
+#include "figure.h"
+#include "font.h"
+#include "scene_file.h"
+
+#define PANEL 200
+
+static void append(char *text, size_t size, const char *format, va_list args)
+{
+    size_t used = strlen(text);
+    if (used + 1 < size)
+        vsnprintf(text + used, size - used, format, args);
+}
+
+void grading_note(Grading *g, const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    append(g->numbers, sizeof g->numbers, format, args);
+    va_end(args);
+    size_t used = strlen(g->numbers);
+    if (used + 1 < sizeof g->numbers)
+        strcpy(g->numbers + used, "\n");
+}
+
+int grading_fail(Grading *g, const char *format, ...)
+{
+    if (g->failed)
+        return 0;
+    g->failed = 1;
+    va_list args;
+    va_start(args, format);
+    vsnprintf(g->message, sizeof g->message, format, args);
+    va_end(args);
+    return 0;
+}
+
+int grading_not_finite(Grading *g, double value, const char *what)
+{
+    if (isfinite(value))
+        return 0;
+    grading_fail(g, "%s is %s", what, isnan(value) ? "NaN (a 0 / 0, a sqrt of a negative "
+                                                     "number or an uninitialised variable?)"
+                                                   : "infinite (a division by 0?)");
+    return 1;
+}
+
+char *grading_count(double count, char *text, size_t size)
+{
+    char digits[64];
+    snprintf(digits, sizeof digits, "%.0f", fabs(count));
+    size_t n = strlen(digits), out = 0;
+    if (count < 0 && out + 1 < size)
+        text[out++] = '-';
+    for (size_t i = 0; i < n && out + 2 < size; i++) {
+        if (i > 0 && (n - i) % 3 == 0)
+            text[out++] = ',';
+        text[out++] = digits[i];
+    }
+    text[out] = '\0';
+    return text;
+}
+
+char *grading_p(double p, char *text, size_t size)
+{
+    if (p < 1e-9)
+        snprintf(text, size, "p < 1e-9");
+    else
+        snprintf(text, size, "p = %.2g", p);
+    return text;
+}
+
+int grading_scene(Grading *g, const char *text, Scene *scene)
+{
+    char error[512];
+    if (scene_parse(text, strlen(text), "exercise.scene", scene, NULL, error, sizeof error) == 0)
+        return 0;
+    grading_fail(g, "the exercise's scene does not load: %s", error);
+    return -1;
+}
+
+Vec3 grading_direction(Rng *rng)
+{
+    double z = 2.0 * rng_uniform(rng) - 1.0, phi = 2.0 * PI * rng_uniform(rng);
+    double s = sqrt(fmax(0.0, 1.0 - z * z));
+    return vec3(s * cos(phi), s * sin(phi), z);
+}
+
+int warp_new(Grading *g, Warp *warp, int rows, int cols, int shown, WarpLabels labels)
+{
+    memset(warp, 0, sizeof *warp);
+    warp->labels = labels;
+    warp->rows = rows;
+    warp->cols = cols;
+    warp->shown = shown;
+    size_t cells = (size_t)rows * cols + 1;
+    warp->observed = calloc(cells, sizeof *warp->observed);
+    warp->expected = calloc(cells, sizeof *warp->expected);
+    warp->square = calloc(2 * (size_t)shown, sizeof *warp->square);
+    warp->mapped = calloc(2 * (size_t)shown, sizeof *warp->mapped);
+    if (!warp->observed || !warp->expected || !warp->square || !warp->mapped) {
+        warp_free(warp);
+        grading_fail(g, "out of memory");
+        return -1;
+    }
+    return 0;
+}
+
+void warp_free(Warp *warp)
+{
+    free(warp->observed);
+    free(warp->expected);
+    free(warp->square);
+    free(warp->mapped);
+    memset(warp, 0, sizeof *warp);
+}
+
+void warp_add(Warp *warp, long index, int row, int col, double u1, double u2, double x, double y)
+{
+    int cell = row < 0 ? warp->rows * warp->cols : row * warp->cols + col;
+    warp->observed[cell] += 1.0;
+    if (index < warp->shown) {
+        warp->square[2 * index] = u1;
+        warp->square[2 * index + 1] = u2;
+        warp->mapped[2 * index] = x;
+        warp->mapped[2 * index + 1] = y;
+    }
+}
+
+/* A sample's colour: where it started on the square, as a 4 x 4 checkerboard of hues. */
+static Vec3 sample_colour(double u1, double u2)
+{
+    int check = ((int)(u1 * 4) + (int)(u2 * 4)) % 2;
+    Vec3 base = vec3(0.15 + 0.85 * u1, 0.15 + 0.85 * u2, 0.9 - 0.7 * u1);
+    return check ? base : vec3_scale(base, 0.45);
+}
+
+static void dot(Image *image, double x, double y, Vec3 colour)
+{
+    int col = (int)floor(x), row = (int)floor(y);
+    for (int dy = 0; dy < 2; dy++)
+        for (int dx = 0; dx < 2; dx++)
+            if (col + dx >= 0 && col + dx < image->width && row + dy >= 0 && row + dy < image->height)
+                image_set(image, col + dx, row + dy, colour);
+}
+
+/* Counts as grey levels, the same scale for observed and expected; the impossible cell
+ * (when it has samples) makes the whole panel's border red. */
+static void histogram_panel(Image *image, const Warp *warp, const double *counts, double top)
+{
+    for (int row = 0; row < PANEL; row++)
+        for (int col = 0; col < PANEL; col++) {
+            int r = row * warp->rows / PANEL, c = col * warp->cols / PANEL;
+            double v = top > 0.0 ? counts[r * warp->cols + c] / top : 0.0;
+            image_set(image, col, row, vec3(v, v, v));
+        }
+    if (counts[warp->rows * warp->cols] > 0.0)
+        for (int i = 0; i < PANEL; i++)
+            for (int k = 0; k < 3; k++) {
+                image_set(image, i, k, vec3(1, 0, 0));
+                image_set(image, i, PANEL - 1 - k, vec3(1, 0, 0));
+                image_set(image, k, i, vec3(1, 0, 0));
+                image_set(image, PANEL - 1 - k, i, vec3(1, 0, 0));
+            }
+}
+
+static void write_warp_picture(Grading *g, const Warp *warp, const char *what, const char *verdict)
+{
+    Image panels[4];
+    for (int i = 0; i < 4; i++)
+        panels[i] = image_new(PANEL, PANEL);
+    for (int i = 0; i < 4; i++)
+        if (!panels[i].pixels)
+            goto done;
+    for (int i = 0; i < warp->shown; i++) {
+        double u1 = warp->square[2 * i], u2 = warp->square[2 * i + 1];
+        Vec3 colour = sample_colour(u1, u2);
+        dot(&panels[0], u1 * (PANEL - 2), (1.0 - u2) * (PANEL - 2), colour);
+        double x = warp->mapped[2 * i], y = warp->mapped[2 * i + 1];
+        if (isfinite(x) && isfinite(y))
+            dot(&panels[1], (0.5 + 0.5 * x) * (PANEL - 2), (0.5 - 0.5 * y) * (PANEL - 2), colour);
+    }
+    double top = 0.0;
+    for (int i = 0; i < warp->rows * warp->cols; i++)
+        top = fmax(top, fmax(warp->observed[i], warp->expected[i]));
+    histogram_panel(&panels[2], warp, warp->observed, top);
+    histogram_panel(&panels[3], warp, warp->expected, top);
+    char mapped[400], observed[400], expected[400];
+    snprintf(mapped, sizeof mapped, "where they went: %s", what);
+    snprintf(observed, sizeof observed, "observed counts (%d %ss of %d cells)\n%s",
+             warp->rows, warp->labels.row_name, warp->cols, verdict);
+    snprintf(expected, sizeof expected, "expected counts\n(%s at the top)",
+             warp->labels.first_row);
+    const char *captions[4] = {"the samples (u1, u2)\non the unit square", mapped, observed,
+                               expected};
+    char path[1024], error[256];
+    snprintf(path, sizeof path, "%s/exercise-%s-warp.png", g->out, g->id);
+    Font font;
+    if (font_load(&font, FONT_PATH, error, sizeof error) != 0) {
+        grading_note(g, "no picture: %s", error);
+        goto done;
+    }
+    if (figure_write_png(path, &font, panels, captions, 4, 1.0) == 0)
+        grading_note(g, "picture: %s", path);
+    font_free(&font);
+done:
+    for (int i = 0; i < 4; i++)
+        image_free(&panels[i]);
+}
+
+/* Sum of the histogram over one row (by_row) or one column. */
+static void marginal(const Warp *warp, int by_row, int index, double *observed, double *expected)
+{
+    *observed = *expected = 0.0;
+    int count = by_row ? warp->cols : warp->rows;
+    for (int k = 0; k < count; k++) {
+        int cell = by_row ? index * warp->cols + k : k * warp->cols + index;
+        *observed += warp->observed[cell];
+        *expected += warp->expected[cell];
+    }
+}
+
+int grading_warp(Grading *g, const Warp *warp, const char *what, double level, int tests,
+                 const char *hint)
+{
+    int cells = warp->rows * warp->cols + 1, dof;
+    double statistic = chi_square_statistic(warp->observed, warp->expected, cells, &dof);
+    double p = chi_square_p_value(statistic, dof);
+    double corrected = -expm1(log1p(-level) / tests);
+    char ptext[32], verdict[200];
+    grading_p(p, ptext, sizeof ptext);
+    snprintf(verdict, sizeof verdict, "chi^2 = %.0f on %d degrees of freedom, %s", statistic,
+             dof, ptext);
+    grading_note(g, "warp test of %s: %s (level %.2g, Sidak-corrected for %d tests)", what,
+                 verdict, corrected, tests);
+    int passed = p >= corrected;
+    char picture_verdict[300];
+    snprintf(picture_verdict, sizeof picture_verdict, "%s: %s", verdict,
+             passed ? "passes" : "FAILS");
+    write_warp_picture(g, warp, what, picture_verdict);
+    if (passed)
+        return 1;
+    char observed_text[32], expected_text[32];
+    double impossible = warp->observed[cells - 1];
+    if (impossible > 0.0) {
+        grading_fail(g, "%s of the samples fell %s, where the density is 0 (%s): %s",
+                     grading_count(impossible, observed_text, sizeof observed_text),
+                     warp->labels.impossible, verdict, hint);
+        return 0;
+    }
+    /* The row or column whose total is furthest from its expected total, in standard
+     * deviations. */
+    int worst_row = 1, worst_index = 0;
+    double worst = -1.0, worst_observed = 0.0, worst_expected = 0.0;
+    for (int by_row = 1; by_row >= 0; by_row--)
+        for (int i = 0; i < (by_row ? warp->rows : warp->cols); i++) {
+            double o, e;
+            marginal(warp, by_row, i, &o, &e);
+            double z = e > 0.0 ? fabs(o - e) / sqrt(e) : (o > 0.0 ? INFINITY : 0.0);
+            if (z > worst) {
+                worst = z;
+                worst_row = by_row;
+                worst_index = i;
+                worst_observed = o;
+                worst_expected = e;
+            }
+        }
+    int count = worst_row ? warp->rows : warp->cols;
+    const char *name = worst_row ? warp->labels.row_name : warp->labels.col_name;
+    char where[200] = "";
+    if (worst_row && worst_index == 0)
+        snprintf(where, sizeof where, " (%s)", warp->labels.first_row);
+    else if (worst_row && worst_index == count - 1)
+        snprintf(where, sizeof where, " (%s)", warp->labels.last_row);
+    grading_fail(g, "too %s samples in %s %d of %d%s: %s observed where %s are expected (%s): %s",
+                 worst_observed < worst_expected ? "few" : "many", name, worst_index + 1, count,
+                 where, grading_count(worst_observed, observed_text, sizeof observed_text),
+                 grading_count(worst_expected, expected_text, sizeof expected_text), verdict,
+                 hint);
+    return 0;
+}

@@ -1,0 +1,109 @@
+/* grading.h (bench, chapter 1): what the exercise graders share (README.md, "Do the chapters
+ * yourself").
+ *
+ * An exercise is one marked function of the lesson ("Exercise N.k" in the comment that
+ * documents it). `make exercise-chapterN` replaces chapter N's marked bodies by a
+ * neutral one under the task; `make check-exercise-chapterN` builds the student's tree
+ * with bench/exercise/grade.c and that chapter's table (bench/exercise/chapterN.c), and
+ * grades each exercise in a process of its own. A grader knows the right answer (a
+ * closed form, a property every right answer has, or the solution's render) and says
+ * what is wrong in a student's words, computed from the test that caught it, with the
+ * numbers behind it. A sampler is graded by the warp test: Pearson's chi-square
+ * (chi_square.h) of its samples' histogram against the exact density integrated over
+ * each cell, and a picture of both.
+ */
+#ifndef GRADING_H
+#define GRADING_H
+
+#include <stddef.h>
+
+#include "render.h"
+
+typedef struct {
+    const char *id;         /* "2.1" */
+    const char *out;        /* the folder the pictures go to */
+    const char *references; /* the folder with the solution's reference renders */
+    int failed;
+    char message[1024];     /* what is wrong (the first failure found), when failed */
+    char numbers[4096];     /* the numbers behind the verdict, one line each */
+} Grading;
+
+/* A render the grader compares, pixel by pixel, with the solution's (render_check.h). */
+typedef struct RenderCheck RenderCheck;
+
+typedef struct {
+    const char *id;       /* "N.k" */
+    const char *function; /* the function whose body the student writes */
+    const char *task;     /* what to compute, from what, by which equation and section */
+    const char *blank;    /* the body the exercise starts from: it compiles and returns a
+                             neutral value */
+    void (*grade)(Grading *g);
+    const RenderCheck *render; /* its reference render, or NULL */
+} Exercise;
+
+/* Each chapter's table, bench/exercise/chapterN.c; the grader links one of them. */
+extern const Exercise exercises[];
+extern const int exercise_count;
+
+/* Append one line to the numbers behind the verdict. */
+void grading_note(Grading *g, const char *format, ...)
+    __attribute__((format(printf, 2, 3)));
+
+/* The exercise fails with this message, unless it has already failed (the first
+ * failure is the one to fix). Returns 0, so that a grader may `return grading_fail(...)`. */
+int grading_fail(Grading *g, const char *format, ...) __attribute__((format(printf, 2, 3)));
+
+/* Fails and returns 1 when `value` is NaN or infinite, naming `what` it is. */
+int grading_not_finite(Grading *g, double value, const char *what);
+
+/* A count with thousands separated: 1310 as "1,310". Returns text. */
+char *grading_count(double count, char *text, size_t size);
+
+/* The p-value as text: "p < 1e-9" below 1e-9, else "p = 0.0123". Returns text. */
+char *grading_p(double p, char *text, size_t size);
+
+/* Parse the scene `text` (docs/scene-format.md) into *scene. Returns 0, or fails the
+ * exercise and returns -1. */
+int grading_scene(Grading *g, const char *text, Scene *scene);
+
+/* A direction uniformly distributed over the unit sphere. */
+Vec3 grading_direction(Rng *rng);
+
+/* What a warp test's cells are called: row 0 and the last row named where they are,
+ * and the impossible cell, where the density is 0 (expected count 0). */
+typedef struct {
+    const char *row_name;             /* "ring" */
+    const char *first_row, *last_row; /* where row 0 and the last row are: "nearest the pole" */
+    const char *col_name;             /* "sector around the normal" */
+    const char *impossible;           /* where the impossible cell is: "below the surface" */
+} WarpLabels;
+
+/* The warp test's histogram: rows x cols cells and the impossible one. */
+typedef struct {
+    int rows, cols;
+    double *observed, *expected; /* rows * cols + 1 */
+    WarpLabels labels;
+    int shown;                   /* samples kept for the picture */
+    double *square, *mapped;     /* their (u1, u2) in [0, 1)^2 and where they went, in
+                                    [-1, 1]^2 (x right, y up) */
+} Warp;
+
+/* A warp test of rows x cols cells keeping `shown` samples for the picture. Returns 0,
+ * or fails the exercise (out of memory) and returns -1. */
+int warp_new(Grading *g, Warp *warp, int rows, int cols, int shown, WarpLabels labels);
+void warp_free(Warp *warp);
+
+/* Sample `index` drawn from (u1, u2) fell into cell (row, col), or into the impossible
+ * cell when row < 0; (x, y) shows where it went. */
+void warp_add(Warp *warp, long index, int row, int col, double u1, double u2, double x,
+              double y);
+
+/* The chi-square test of the histogram at significance level `level`, Sidak-corrected
+ * for `tests` such tests of the exercise; the picture OUT/exercise-ID-warp.png (samples
+ * on the square, where they went, observed and expected counts); on failure the row or
+ * column furthest from its expected count, in words, then `hint`. Returns 1 when it
+ * passes. */
+int grading_warp(Grading *g, const Warp *warp, const char *what, double level, int tests,
+                 const char *hint);
+
+#endif

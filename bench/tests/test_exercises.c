@@ -1,0 +1,246 @@
+/* test_exercises.c (bench, chapter 8): planted student mistakes, each caught by its exercise.
+ *
+ * For every chapter with exercises, the chapter's clean source ($CHAPTER_DIR/source/
+ * chapterN, written by make check-sources) is graded untouched (every exercise must
+ * pass), then each classic mistake below is grafted into a copy of it (one exact edit
+ * of the solution) and only the exercise it belongs to is graded again, through make
+ * check-exercise-chapterN STUDENT=... ONLY=...: it must fail, and its verdict must
+ * name the symptom. Copies keep the graded tree's objects, so a mistake rebuilds only
+ * the file it edits. The graders' own statistical tests run at significance level 0.01
+ * with fixed seeds (bench/exercise/chapterN.c).
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+
+typedef struct {
+    int chapter;
+    const char *id;      /* the exercise that must catch it */
+    const char *mistake; /* in a student's words */
+    const char *file;    /* in the chapter's tree */
+    const char *from, *to;
+    const char *symptom; /* a phrase its verdict must hold */
+} Mistake;
+
+static const Mistake mistakes[] = {
+    {1, "1.1", "the far root first", "lib/sphere.c", "if (t0 > t1) {", "if (t0 < t1) {",
+     "far side"},
+    {1, "1.2", "u + v <= 1 not tested", "lib/triangle.h", "& (u + v <= 1.0 + slack)", "",
+     "u + v > 1"},
+    {1, "1.3", "the direction not normalised", "lib/camera.c",
+     "vec3_normalize(vec3_sub(on_plane, camera->eye))", "vec3_sub(on_plane, camera->eye)",
+     "normalise"},
+    {1, "1.4", "the normal part subtracted once, not twice", "lib/mirror.h", "-2.0 * vec3_dot(d, n)",
+     "-vec3_dot(d, n)", "should be 2"},
+    {1, "1.5", "Snell's ratio inverted", "lib/snell.c",
+     "vec3_scale(d, eta), vec3_scale(n, eta * cos_i - cos_t)",
+     "vec3_scale(d, 1.0 / eta), vec3_scale(n, cos_i / eta - cos_t)", "Snell"},
+    {2, "2.1", "cos(theta) = u instead of sqrt(1 - u)", "lib/hemisphere.c",
+     "double sin_theta = sqrt(u1);\n    double cos_theta = sqrt(1.0 - u1);",
+     "double sin_theta = sqrt(1.0 - u1 * u1);\n    double cos_theta = u1;", "nearest the horizon"},
+    {2, "2.1", "phi over half a turn", "lib/hemisphere.c", "double phi = 2.0 * PI * u2;",
+     "double phi = PI * u2;", "sector"},
+    {2, "2.2", "the pdf without 1 / pi", "lib/hemisphere.c", "w_local.z / PI : 0.0",
+     "w_local.z : 0.0", "pi times too large"},
+    {2, "2.2", "the uniform hemisphere's pdf", "lib/hemisphere.c", "w_local.z / PI : 0.0",
+     "1.0 / (2.0 * PI) : 0.0", "uniform hemisphere"},
+    {2, "2.3", "Lambert without 1 / pi", "lib/lambert.c", "vec3_scale(rho, 1.0 / PI)", "rho",
+     "missing 1 / pi"},
+    {2, "2.4", "the throughput never multiplied", "lib/path.c",
+     "throughput = vec3_mul(throughput, weight);",
+     "throughput = vec3_add(throughput, vec3_scale(weight, 0.0));", "too bright"},
+    {3, "3.1", "the point on the triangle with u1, not sqrt(u1)", "lib/area_light.c",
+     "double s = sqrt(u1);", "double s = u1;", "too many samples"},
+    {3, "3.1", "every lamp equally likely", "lib/area_light.c",
+     "double target = u_select * scene->light_area;",
+     "double target = scene->light_cumulative[(int)(u_select * scene->light_count)] - 1e-12;",
+     "column"},
+    {3, "3.2", "the pdf without the cosine at the lamp", "lib/area_light.c",
+     "(scene->light_area * cos_beta)", "scene->light_area", "cosine at the lamp is missing"},
+    {3, "3.3", "eq. 21 without cos(beta)", "lib/area_light.c",
+     "scene->light_area * cos_alpha * cos_beta / distance2", "scene->light_area * cos_alpha / distance2",
+     "too bright"},
+    {3, "3.3", "the distance not squared", "lib/area_light.c", "cos_beta / distance2);",
+     "cos_beta / sqrt(distance2));", "too bright"},
+    {4, "4.1", "R_s and R_p swapped", "lib/fresnel.c",
+     "r.s = squared_ratio(n_i * cos_i - n_t * cos_t", "r.p = squared_ratio(n_i * cos_i - n_t * cos_t",
+     "R_p"},
+    {4, "4.1", "no total internal reflection", "lib/fresnel.c",
+     "if (cos_t < 0.0) {\n        r.s = r.p = 1.0;\n        return r;\n    }", "",
+     "total internal reflection"},
+    {4, "4.2", "R_s + R_p, not their mean", "lib/fresnel.c", "return 0.5 * (r.s + r.p);",
+     "return r.s + r.p;", "is R_s + R_p"},
+    {5, "5.1", "the report's A, without \"1 -\"", "lib/oren_nayar.c",
+     "return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);", "return 0.5 * roughness_ratio(sigma, 0.33);",
+     "misprint"},
+    {5, "5.1", "sigma taken as degrees", "lib/oren_nayar.c",
+     "return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);",
+     "return 1.0 - 0.5 * roughness_ratio(sigma * PI / 180.0, 0.33);", "radians"},
+    {5, "5.3", "sin(beta) for tan(beta)", "lib/oren_nayar.c",
+     "fmax(0.0, projected_dot) / cos_beta;", "fmax(0.0, projected_dot);", "sin(beta)"},
+    {6, "6.1", "survivors not divided by the survival probability", "lib/roulette.c",
+     "*throughput = vec3_scale(*throughput, 1.0 / survival);", "", "not divided"},
+    {6, "6.1", "bounded weights a segment late", "lib/roulette.c",
+     "segment >= settings->rr_throughput", "segment > settings->rr_throughput", "go on"},
+    {6, "6.2", "the channels' mean for their maximum", "lib/roulette.c",
+     "fmin(1.0, vec3_max_component(throughput))",
+     "fmin(1.0, (throughput.x + throughput.y + throughput.z) / 3.0)", "mean"},
+    {7, "7.1", "the balance heuristic", "lib/mis.c", "return 1.0 / (1.0 + ratio * ratio);",
+     "return 1.0 / (1.0 + ratio);", "balance heuristic"},
+    {7, "7.1", "weights that do not sum to one", "lib/mis.c", "return 1.0 / (1.0 + ratio * ratio);",
+     "return 1.0 / (1.0 + g * g);", "sum to"},
+    {7, "7.2", "the mirror's reflectance left out", "lib/mirror_light.c",
+     "vec3_mul(diffuse_brdf(m, n, wi, wo), mirror->reflectance)", "diffuse_brdf(m, n, wi, wo)",
+     "reflectance"},
+    {8, "8.1", "divided by pi r, not pi r^2", "lib/photon_estimate.c",
+     "1.0 / (PI * radius * radius)", "1.0 / (PI * radius)", "pi r,"},
+    {8, "8.1", "photons of other surfaces counted", "lib/photon_estimate.c",
+     "vec3_dot(p->normal, g->n) < PHOTON_NORMAL_COS || ", "", "are counted"},
+    {8, "8.2", "the radius growing", "lib/photon_estimate.c", "pow((double)pass, alpha - 1.0)",
+     "pow((double)pass, 1.0 - alpha)", "must shrink"},
+    {8, "8.2", "the radius without its square root", "lib/photon_estimate.c",
+     "first_radius * sqrt(pow((double)pass, alpha - 1.0))",
+     "first_radius * pow((double)pass, alpha - 1.0)", "square root"},
+};
+#define MISTAKES (int)(sizeof mistakes / sizeof mistakes[0])
+
+static const char *build_dir(void)
+{
+    return getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
+}
+
+/* Run a shell command; its output into *out (malloc'd). Returns its exit status. */
+static int run(const char *command, char **out)
+{
+    FILE *pipe = popen(command, "r");
+    assert_non_null(pipe);
+    size_t size = 0, cap = 4096;
+    char *text = malloc(cap);
+    assert_non_null(text);
+    size_t n;
+    while ((n = fread(text + size, 1, cap - size - 1, pipe)) > 0) {
+        size += n;
+        if (cap - size < 2) {
+            cap *= 2;
+            text = realloc(text, cap);
+            assert_non_null(text);
+        }
+    }
+    text[size] = '\0';
+    int status = pclose(pipe);
+    *out = text;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/* Grade tree DIR (all of chapter N's exercises, or ONLY id) through the Makefile. */
+static int grade(int chapter, const char *dir, const char *only, char **out)
+{
+    char command[2048];
+    snprintf(command, sizeof command,
+             "env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory -s BUILD=%s "
+             "check-exercise-chapter%d STUDENT=%s ONLY='%s' 2>&1",
+             build_dir(), chapter, dir, only);
+    return run(command, out);
+}
+
+/* Replace the one occurrence of `from` in `path` by `to`; 0, or -1 when `from` is not
+ * there exactly once. */
+static int graft(const char *path, const char *from, const char *to)
+{
+    FILE *file = fopen(path, "rb");
+    if (!file)
+        return -1;
+    static char text[1 << 20];
+    size_t size = fread(text, 1, sizeof text - 1, file);
+    fclose(file);
+    text[size] = '\0';
+    char *at = strstr(text, from);
+    if (!at || strstr(at + 1, from))
+        return -1;
+    file = fopen(path, "wb");
+    if (!file)
+        return -1;
+    fwrite(text, 1, (size_t)(at - text), file);
+    fputs(to, file);
+    fputs(at + strlen(from), file);
+    return fclose(file);
+}
+
+/* The verdict line of exercise `id` in a check's output. */
+static const char *verdict_of(const char *output, const char *id, char *line, size_t size)
+{
+    char prefix[32];
+    snprintf(prefix, sizeof prefix, "exercise %s (", id);
+    const char *at = strstr(output, prefix);
+    if (!at)
+        return NULL;
+    size_t length = strcspn(at, "\n");
+    snprintf(line, size, "%.*s", (int)(length < size ? length : size - 1), at);
+    return line;
+}
+
+static void test_planted_mistakes(void **state)
+{
+    (void)state;
+    char root[1024], command[4096];
+    snprintf(root, sizeof root, "%s/exercise/mistakes", build_dir());
+    snprintf(command, sizeof command, "rm -rf %s && mkdir -p %s", root, root);
+    assert_int_equal(system(command), 0);
+    int caught = 0, prepared = 0;
+    for (int i = 0; i < MISTAKES; i++) {
+        const Mistake *m = &mistakes[i];
+        char base[1200], tree[1200], *out = NULL;
+        snprintf(base, sizeof base, "%s/chapter%d", root, m->chapter);
+        if (prepared != m->chapter) {
+            /* The untouched solution: every exercise passes. */
+            snprintf(command, sizeof command, "cp -R %s/source/chapter%d %s", build_dir(),
+                     m->chapter, base);
+            assert_int_equal(system(command), 0);
+            int status = grade(m->chapter, base, "", &out);
+            if (status != 0)
+                print_message("%s", out);
+            assert_int_equal(status, 0);
+            printf("chapter %d's solution: every exercise passes\n", m->chapter);
+            free(out);
+            prepared = m->chapter;
+        }
+        snprintf(tree, sizeof tree, "%s/chapter%d-mistake%d", root, m->chapter, i + 1);
+        snprintf(command, sizeof command, "rm -rf %s && cp -Rp %s %s", tree, base, tree);
+        assert_int_equal(system(command), 0);
+        char path[1400];
+        snprintf(path, sizeof path, "%s/%s", tree, m->file);
+        if (graft(path, m->from, m->to) != 0)
+            fail_msg("mistake %d (%s): \"%s\" is not in %s exactly once", i + 1, m->mistake,
+                     m->from, m->file);
+        int status = grade(m->chapter, tree, m->id, &out);
+        char line[2048];
+        const char *verdict = verdict_of(out, m->id, line, sizeof line);
+        int ok = status != 0 && verdict && strstr(verdict, "FAIL") && strstr(verdict, m->symptom);
+        printf("%2d. %-3s %-52s %s\n    %s\n", i + 1, m->id, m->mistake,
+               ok ? "caught" : "NOT CAUGHT", verdict ? verdict : out);
+        caught += ok;
+        free(out);
+        if (ok) {
+            snprintf(command, sizeof command, "rm -rf %s", tree);
+            assert_int_equal(system(command), 0);
+        }
+    }
+    printf("%d of %d planted mistakes caught by their exercise, each naming its symptom\n", caught,
+           MISTAKES);
+    assert_int_equal(caught, MISTAKES);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_planted_mistakes),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
