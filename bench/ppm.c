@@ -116,22 +116,30 @@ static void pass_seeds(uint64_t seed, int pass, uint64_t *image_seed, uint64_t *
     *photon_seed = high << 32 | rng_next(&rng);
 }
 
-/* One pass: a fresh caustic map, then the image with it. */
+/* One pass: fresh maps, then the image with them. Both maps are of the same photons
+ * (one seed): the split map keeps those of the caustic map that did not come by one
+ * planar mirror alone. */
 static int render_pass(const Scene *scene, const RenderSettings *whole,
                        const PpmSettings *settings, int pass, RenderResult *image,
                        RayCounts *photon_rays, int *stored)
 {
     uint64_t image_seed, photon_seed;
     pass_seeds(whole->image.seed, pass, &image_seed, &photon_seed);
-    PhotonMapSettings photons = {settings->photons, PHOTON_SPLIT, settings->path.fresnel,
+    PhotonMapSettings photons = {settings->photons, PHOTON_CAUSTIC, settings->path.fresnel,
                                  photon_seed};
-    PhotonMap map;
+    PhotonMapSettings split_photons = photons;
+    split_photons.paths = PHOTON_SPLIT;
+    PhotonMap caustics, split;
     /* As many threads as the render takes: no more than its rows. */
     int threads = whole->threads > whole->image.height ? whole->image.height : whole->threads;
-    if (ppm_photon_map(&map, scene, &photons, threads, photon_rays) != 0)
+    if (ppm_photon_map(&caustics, scene, &photons, threads, photon_rays) != 0)
         return -1;
-    *stored = map.count;
-    CausticPathSettings estimator = {settings->path, &map,
+    if (ppm_photon_map(&split, scene, &split_photons, threads, photon_rays) != 0) {
+        photon_map_free(&caustics);
+        return -1;
+    }
+    *stored = caustics.count;
+    CausticPathSettings estimator = {settings->path, &split, &caustics,
                                      ppm_radius(settings->radius, settings->alpha, pass)};
     RenderSettings pass_render = *whole;
     pass_render.image.spp = settings->spp;
@@ -143,7 +151,8 @@ static int render_pass(const Scene *scene, const RenderSettings *whole,
         pass_render.image.seed = image_seed;
     int status = render_from(scene, &pass_render, progressive ? (pass - 1) * settings->spp : 0,
                              path_caustics_radiance, &estimator, image);
-    photon_map_free(&map);
+    photon_map_free(&caustics);
+    photon_map_free(&split);
     return status;
 }
 

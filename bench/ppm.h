@@ -1,9 +1,9 @@
 /* ppm.h (bench, chapter 8): rendering with progressive photon mapping, pass by pass
  * (Knaus and Zwicker 2011), on every core.
  *
- * Pass i shoots a fresh caustic photon map (photon.h) on the threads, renders the image
- * with it (path_caustics.h) at radius ppm_radius(r_1, alpha, i), and the result is the
- * mean of the pass images. Each pass's photons and camera samples have their own seeds,
+ * Pass i shoots fresh photon maps (photon.h: the caustic map and the split one, of the
+ * same photons) on the threads, renders the image with them (path_caustics.h) at radius
+ * ppm_radius(r_1, alpha, i), and the result is the mean of the pass images. Each pass's photons and camera samples have their own seeds,
  * derived from the render's seed and the pass number, so the image is the same for any
  * thread count; the spread between the independent passes gives each pixel's standard
  * error. A budget of processor time can end the passes (docs/chapter8.md).
@@ -32,7 +32,7 @@ typedef struct {
     int passes;          /* passes rendered */
     double cpu_seconds;  /* processor time used, all threads together */
     double radius;       /* the last pass's radius */
-    double stored;       /* photons stored per pass, on average */
+    double stored;       /* photons stored per pass in the caustic map, on average */
 } PpmResult;
 
 /* The map of settings->emitted photons, shot by `threads` threads (0: one per core; no

@@ -63,6 +63,11 @@
 #define PPM_SPP_PER_PASS 8
 #define MAX_PASSES 100000
 
+/* The lamp's images in the mirror wall at the first diffuse vertex only, where the eye
+ * sees their light sharp; beyond it the caustic map brings that light too, its blur
+ * hidden by the bounce, for less than the images' shadow rays cost. */
+#define PHOTON_MIRROR_LIGHT 1
+
 /* The table's settings: seeds per setting, steps of doubling passes (and samples), and
  * camera samples per pass (chapter 7's estimator takes as many per pass of the photon
  * map's). */
@@ -87,6 +92,7 @@ static PpmSettings photon_settings(const PathSettings *path, const Scene *scene,
     PpmSettings ppm = {*path, (int)(PHOTONS_PER_PIXEL * width * height + 0.5),
                        ppm_first_radius(scene, FIRST_RADIUS_AT_800) * 800.0 / width, PPM_ALPHA,
                        spp, passes, 0.0};
+    ppm.path.mirror_light = PHOTON_MIRROR_LIGHT;
     return ppm;
 }
 
@@ -482,7 +488,7 @@ static unsigned char *lamp_mask(const Options *small, const Scene *scene, const 
     PhotonMap empty;
     if (photon_map_build(&empty, NULL, 0, 0) != 0)
         cli_fail(1, "out of memory");
-    CausticPathSettings without = {*path, &empty, 1.0};
+    CausticPathSettings without = {*path, &empty, &empty, 1.0};
     Options quiet = *small;
     quiet.quiet = 1;
     RenderSettings settings = experiment_render_settings(&quiet, scene, 16, PIXEL_STRATIFIED, "mask");

@@ -8,8 +8,8 @@
 #include "sphere_guide.h"
 
 /* How much of the emission a path hits it adds: all (no other estimator finds that
- * light), the share mis leaves to the bounce (the shadow rays found the rest), or none
- * (the photon map's). */
+ * light), the share mis leaves to the bounce (the shadow rays or the images found the
+ * rest), or none (a photon map's). */
 typedef enum { EMISSION_ALL, EMISSION_SHARE, EMISSION_NONE } Emission;
 
 Vec3 path_caustics_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
@@ -42,12 +42,14 @@ Vec3 path_caustics_radiance(const Scene *scene, Ray ray, Rng *rng, const void *s
                 Vec3 direct = direct_light(scene, &x, images, s, rng, counts);
                 radiance = vec3_add(radiance, vec3_mul(throughput, direct));
             }
-            /* The disc's reachable area where the camera sees it; after a diffuse
+            /* L M D from the images where this vertex sampled them, else from the map.
+             * The disc's reachable area where the camera sees it; after a diffuse
              * bounce, pi r^2 (the bounce blurs an edge more than the kernel does). */
+            const PhotonMap *map = images ? c->split : c->caustics;
             Vec3 caustic = diffuse_vertices == 0
-                               ? photon_estimate_reachable(scene, c->caustics, c->radius, &x)
-                               : photon_estimate_radiance(c->caustics, c->radius, x.hit.point,
-                                                          x.normal, x.wo, x.material);
+                               ? photon_estimate_reachable(scene, map, c->radius, &x)
+                               : photon_estimate_radiance(map, c->radius, x.hit.point, x.normal,
+                                                          x.wo, x.material);
             radiance = vec3_add(radiance, vec3_mul(throughput, caustic));
             emission = s->shadow_rays > 0 ? EMISSION_SHARE : EMISSION_ALL;
             if (!roulette_continues(s, segment, &throughput, rng))
@@ -60,14 +62,14 @@ Vec3 path_caustics_radiance(const Scene *scene, Ray ray, Rng *rng, const void *s
             travelled = 0.0;
         } else {
             weight = path_specular(&x, ray.dir, s, rng, &direction);
-            /* After a diffuse vertex, mirrors and glass bring the map's light (L S+ D),
-             * but for one planar mirror straight on (L M D): the images' where they
-             * were sampled, else only the path finds it. */
+            /* After a diffuse vertex, mirrors and glass bring a map's light (L S+ D),
+             * but for one planar mirror straight on (L M D) where the images were
+             * sampled: theirs, shared by mis with this path. */
             int planar_mirror = x.material->kind == MATERIAL_MIRROR && x.hit.triangle >= 0;
             if (diffuse_vertices == 0)
                 emission = EMISSION_ALL;
-            else if (planar_mirror && diffuse_segment == segment - 1)
-                emission = images ? EMISSION_SHARE : EMISSION_ALL;
+            else if (planar_mirror && images && diffuse_segment == segment - 1)
+                emission = EMISSION_SHARE;
             else
                 emission = EMISSION_NONE;
             travelled += x.hit.t; /* unfolded at mirrors */

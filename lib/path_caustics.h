@@ -3,10 +3,10 @@
  *
  * Light reaching a diffuse vertex splits by the way it came from the lamp: straight
  * (L D) to the shadow rays; by one planar mirror straight on (L M D) to the mirror's
- * images where the vertex samples them, else to the path hitting the lamp; through any
- * other chain of mirrors and glass (L S+ D) to the map (PHOTON_SPLIT), so the path adds
- * no emission it hits that way. Each light path is counted by exactly one estimator;
- * chapter 7's final estimator is its oracle.
+ * images where the vertex samples them (the first K, PathSettings.mirror_light), else to
+ * the map; through any other chain of mirrors and glass (L S+ D) to the map, so the path
+ * adds no emission it hits that way. Each light path is counted by exactly one
+ * estimator; chapter 7's final estimator is its oracle.
  */
 #ifndef PATH_CAUSTICS_H
 #define PATH_CAUSTICS_H
@@ -16,8 +16,9 @@
 
 typedef struct {
     PathSettings path;
-    const PhotonMap *caustics; /* the caustic map (PHOTON_SPLIT) */
-    double radius;             /* of its radiance estimate */
+    const PhotonMap *split;    /* L S+ D but L M D (PHOTON_SPLIT): beside the images */
+    const PhotonMap *caustics; /* all of L S+ D (PHOTON_CAUSTIC): at the other vertices */
+    double radius;             /* of the maps' radiance estimate */
 } CausticPathSettings;
 
 /* An Estimator (render.h); settings points to a CausticPathSettings. */

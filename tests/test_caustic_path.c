@@ -1,5 +1,5 @@
 /* test_caustic_path.c (chapter 8): Tests of chapter 8's estimator (lib/path_caustics.c: chapter 7's final
- * estimator plus the caustic map, PHOTON_SPLIT) and of progressive photon mapping
+ * estimator plus the photon maps) and of progressive photon mapping
  * (bench/ppm.c): the images, the map and the path count every light path exactly once.
  *
  * 1. A room without mirrors or glass (the report's room with both made white Lambert):
@@ -11,21 +11,30 @@
  *    4 x 4-pixel blocks, the sum of the blocks' z^2 is a chi-square with 48 degrees of
  *    freedom, tested at the 0.1% level.
  * 2. The report's room, 16 x 16 pixels: progressive photon mapping (many passes, the
- *    radius shrinking as in ppm.h) against chapter 7's final estimator at 4000 samples
- *    per pixel: the block test; and no double counting, on the image's mean (over every
+ *    radius shrinking as in ppm.h), with the mirror's images at every diffuse vertex
+ *    and at the first only (the caustic map bringing L M D at the others), against
+ *    chapter 7's final estimator at 4000 samples per pixel: the block test; and no double counting, on the image's mean (over every
  *    pixel but the lamp and its images in the mirrors, the noisiest; the kernel's blur
  *    cancels in a mean): the map's share (the combined image minus the path's with an
  *    empty map) is many standard errors, and the combined mean equals the reference's
  *    within 4 standard errors, so counting the share twice or not at all is rejected.
  * 3. The mirrored glass furnace (radiance 2 everywhere): light through the mirror wall
- *    alone, through the glass, and through both.
+ *    alone, through the glass, and through both; the images at every vertex and at the
+ *    first only.
  * Planted bugs, each rejected by 2 (block p and mean) and 3 (when correct: reference
  * 0.17152 +- 0.00034, combined 0.16957 +- 0.00058, block p = 0.91; furnace 1.979 +- 0.008):
  *   - the path adding emission it hits after a diffuse vertex and glass or a mirror
  *     sphere (L S+ D counted by the map and again by the path): combined 0.18035, block
  *     p = 2e-149; furnace 2.201 +- 0.009;
  *   - the photon tracer storing one planar mirror straight on too (L M D counted by the
- *     mirror's images and again by the map): combined 0.18548, p = 0; furnace 2.220.
+ *     mirror's images and again by the map): combined 0.18548, p = 0; furnace 2.220;
+ * and, with the images at the first vertex only (when correct: combined 0.16932 +-
+ * 0.00059, p = 0.99; furnace 1.998 +- 0.009):
+ *   - the other vertices gathering from the split map (L M D left out there): combined
+ *     0.16123, p = 2e-269; furnace 1.846 +- 0.008;
+ *   - the path adding emission after one planar mirror straight from a vertex that did
+ *     not sample the images (L M D counted by the path and the caustic map): combined
+ *     0.17654, p = 6e-7; furnace 2.151 +- 0.010.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -118,7 +127,7 @@ static void test_room_without_specular_is_chapter7(void **state)
     PhotonMap map;
     assert_int_equal(ppm_photon_map(&map, &scene, &photons, 0, &counts), 0);
     assert_int_equal(map.count, 0);
-    CausticPathSettings with_map = {CHAPTER7, &map, 0.2};
+    CausticPathSettings with_map = {CHAPTER7, &map, &map, 0.2};
     RenderSettings settings = {{SIDE, SIDE, 64, PIXEL_RANDOM, 5}, 0, 0, "test"};
     RenderResult a, b;
     assert_int_equal(render(&scene, &settings, path_final_radiance, &CHAPTER7, &a), 0);
@@ -173,43 +182,50 @@ static void test_room_converges_and_counts_once(void **state)
     RenderResult reference;
     assert_int_equal(render(&scene, &many, path_final_radiance, &CHAPTER7, &reference), 0);
 
-    RenderSettings passes = {{SIDE, SIDE, 1, PIXEL_RANDOM, 12}, 0, 0, "test"};
-    PpmSettings ppm = {CHAPTER7, 20000, 0.1, PPM_ALPHA, 16, 64, 0.0};
-    PpmResult combined;
-    assert_int_equal(ppm_render(&scene, &passes, &ppm, &combined), 0);
-    assert_true(combined.stored > 100);
-    print_message("    %d passes of %d photons (%.0f stored), radius %.3f to %.3f\n",
-                  combined.passes, ppm.photons, combined.stored, ppm.radius, combined.radius);
-    double p = block_p_value(&reference, &combined.render);
-
-    /* The path tracer's own share: caustic option on, the map empty. */
+    /* The path tracer's own share: caustic option on, the maps empty. */
     PhotonMap empty;
     RayCounts counts = {0, 0, 0};
     PhotonMapSettings none = {0, PHOTON_SPLIT, FRESNEL_EXACT, 1};
     assert_int_equal(ppm_photon_map(&empty, &scene, &none, 0, &counts), 0);
-    CausticPathSettings without = {CHAPTER7, &empty, 0.15};
+    CausticPathSettings without = {CHAPTER7, &empty, &empty, 0.15};
     RenderSettings path_only = {{SIDE, SIDE, 1024, PIXEL_RANDOM, 13}, 0, 0, "test"};
     RenderResult path_part;
     assert_int_equal(render(&scene, &path_only, path_caustics_radiance, &without, &path_part), 0);
-
     /* Leave out the lamp and its images in the mirrors (the path tracer's own image
      * says where): the same in every estimator, and the noisiest pixels. */
-    double ref_mean, ref_error, mean, error, path_mean, path_error;
+    double ref_mean, ref_error, path_mean, path_error;
     masked_mean(&reference, &path_part.image, &ref_mean, &ref_error);
-    masked_mean(&combined.render, &path_part.image, &mean, &error);
     masked_mean(&path_part, &path_part.image, &path_mean, &path_error);
-    double share = mean - path_mean, share_error = sqrt(error * error + path_error * path_error);
-    double difference_error = sqrt(error * error + ref_error * ref_error);
-    print_message("    means: reference %.5f +- %.5f, combined %.5f +- %.5f; the caustic "
-                  "map's share %.5f +- %.5f (%.1f%%)\n", ref_mean, ref_error, mean, error, share,
-                  share_error, 100 * share / mean);
-    assert_true(fabs(mean - ref_mean) < 4 * difference_error);
-    /* Counting the share twice (or not at all) would be rejected by the same test. */
-    assert_true(share - 4 * share_error > 8 * difference_error);
-    assert_true(p > 0.001);
+
+    /* The images at every diffuse vertex (chapter 7's), then at the first only (chapter
+     * 8's): the caustic map brings L M D at the others. */
+    const int images_at[2] = {CHAPTER7.mirror_light, 1};
+    for (int k = 0; k < 2; k++) {
+        RenderSettings passes = {{SIDE, SIDE, 1, PIXEL_RANDOM, 12}, 0, 0, "test"};
+        PpmSettings ppm = {CHAPTER7, 20000, 0.1, PPM_ALPHA, 16, 64, 0.0};
+        ppm.path.mirror_light = images_at[k];
+        PpmResult combined;
+        assert_int_equal(ppm_render(&scene, &passes, &ppm, &combined), 0);
+        assert_true(combined.stored > 100);
+        print_message("    images at the first %d diffuse vertices: %d passes of %d photons (%.0f "
+                      "stored), radius %.3f to %.3f\n", images_at[k], combined.passes, ppm.photons,
+                      combined.stored, ppm.radius, combined.radius);
+        double p = block_p_value(&reference, &combined.render);
+        double mean, error;
+        masked_mean(&combined.render, &path_part.image, &mean, &error);
+        double share = mean - path_mean, share_error = sqrt(error * error + path_error * path_error);
+        double difference_error = sqrt(error * error + ref_error * ref_error);
+        print_message("    means: reference %.5f +- %.5f, combined %.5f +- %.5f; the maps' "
+                      "share %.5f +- %.5f (%.1f%%)\n", ref_mean, ref_error, mean, error, share,
+                      share_error, 100 * share / mean);
+        assert_true(fabs(mean - ref_mean) < 4 * difference_error);
+        /* Counting the share twice (or not at all) would be rejected by the same test. */
+        assert_true(share - 4 * share_error > 8 * difference_error);
+        assert_true(p > 0.001);
+        ppm_result_free(&combined);
+    }
     photon_map_free(&empty);
     render_result_free(&path_part);
-    ppm_result_free(&combined);
     render_result_free(&reference);
     mirror_planes_free(&mirrors);
     scene_free(&scene);
@@ -239,21 +255,32 @@ static void test_mirrored_glass_furnace(void **state)
     assert_int_equal(scene_prepare(&scene), 0);
     MirrorPlanes mirrors;
     assert_int_equal(mirror_light_find_planes(&scene, &mirrors), 0);
-    PhotonMapSettings photons = {1000000, PHOTON_SPLIT, FRESNEL_EXACT, 5};
-    PhotonMap map;
+    PhotonMapSettings photons = {1000000, PHOTON_CAUSTIC, FRESNEL_EXACT, 5};
+    PhotonMapSettings split_photons = photons;
+    split_photons.paths = PHOTON_SPLIT;
+    PhotonMap caustics, split;
     RayCounts counts = {0, 0, 0};
-    assert_int_equal(ppm_photon_map(&map, &scene, &photons, 0, &counts), 0);
-    print_message("    %d photons stored of %d\n", map.count, photons.emitted);
-    CausticPathSettings settings = {{.max_depth = 200, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
-                                     .rr_throughput = 3, .mirror_light = 200, .mirrors = &mirrors,
-                                     .sphere_guide = SPHERE_GUIDE_STRENGTH},
-                                    &map, 0.01};
-    double mean, std_error;
-    /* The path settings are the first member: the estimator is handed the whole. */
-    estimate(&scene, path_caustics_radiance, &settings.path, vec3(0.6, 0.1, 0.05), 7, &mean,
-             &std_error);
-    assert_estimate(mean, std_error, FURNACE_BORDERED_RADIANCE, 0.01);
-    photon_map_free(&map);
+    assert_int_equal(ppm_photon_map(&caustics, &scene, &photons, 0, &counts), 0);
+    assert_int_equal(ppm_photon_map(&split, &scene, &split_photons, 0, &counts), 0);
+    print_message("    %d photons stored of %d, %d of them in the split map\n", caustics.count,
+                  photons.emitted, split.count);
+    /* The images at every diffuse vertex (chapter 7's), then at the first only (chapter
+     * 8's): the caustic map brings L M D at the others. */
+    const int images_at[2] = {200, 1};
+    for (int k = 0; k < 2; k++) {
+        CausticPathSettings settings = {{.max_depth = 200, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
+                                         .rr_throughput = 3, .mirror_light = images_at[k],
+                                         .mirrors = &mirrors, .sphere_guide = SPHERE_GUIDE_STRENGTH},
+                                        &split, &caustics, 0.01};
+        double mean, std_error;
+        /* The path settings are the first member: the estimator is handed the whole. */
+        estimate(&scene, path_caustics_radiance, &settings.path, vec3(0.6, 0.1, 0.05), 7, &mean,
+                 &std_error);
+        print_message("    images at the first %d diffuse vertices:\n", images_at[k]);
+        assert_estimate(mean, std_error, FURNACE_BORDERED_RADIANCE, 0.01);
+    }
+    photon_map_free(&caustics);
+    photon_map_free(&split);
     mirror_planes_free(&mirrors);
     scene_free(&scene);
 }
