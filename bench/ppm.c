@@ -49,7 +49,8 @@ static void *shoot_thread(void *argument)
 }
 
 /* The workers' photons, in the order they were shot, made into the map. */
-static int gather(PhotonMap *map, const Worker *workers, int threads, int emitted)
+static int gather(PhotonMap *map, const Worker *workers, int threads, int emitted,
+                  double radius)
 {
     int count = 0;
     for (int i = 0; i < threads; i++)
@@ -60,13 +61,13 @@ static int gather(PhotonMap *map, const Worker *workers, int threads, int emitte
     for (int i = 0, at = 0; i < threads; at += workers[i].count, i++)
         if (workers[i].count > 0)
             memcpy(shot + at, workers[i].photons, (size_t)workers[i].count * sizeof *shot);
-    int status = photon_map_build(map, shot, count, emitted);
+    int status = photon_map_build(map, shot, count, emitted, radius);
     free(shot);
     return status;
 }
 
 int ppm_photon_map(PhotonMap *map, const Scene *scene, const PhotonMapSettings *settings,
-                   int threads, RayCounts *counts)
+                   double radius, int threads, RayCounts *counts)
 {
     memset(map, 0, sizeof *map);
     if (threads <= 0)
@@ -98,7 +99,7 @@ int ppm_photon_map(PhotonMap *map, const Scene *scene, const PhotonMapSettings *
         ray_counts_add(counts, workers[i].rays);
     }
     if (status == 0)
-        status = gather(map, workers, threads, settings->emitted);
+        status = gather(map, workers, threads, settings->emitted, radius);
     for (int i = 0; workers && i < threads; i++)
         free(workers[i].photons);
     free(workers);
@@ -130,17 +131,17 @@ static int render_pass(const Scene *scene, const RenderSettings *whole,
     PhotonMapSettings split_photons = photons;
     split_photons.paths = PHOTON_SPLIT;
     PhotonMap caustics, split;
+    double radius = ppm_radius(settings->radius, settings->alpha, pass);
     /* As many threads as the render takes: no more than its rows. */
     int threads = whole->threads > whole->image.height ? whole->image.height : whole->threads;
-    if (ppm_photon_map(&caustics, scene, &photons, threads, photon_rays) != 0)
+    if (ppm_photon_map(&caustics, scene, &photons, radius, threads, photon_rays) != 0)
         return -1;
-    if (ppm_photon_map(&split, scene, &split_photons, threads, photon_rays) != 0) {
+    if (ppm_photon_map(&split, scene, &split_photons, radius, threads, photon_rays) != 0) {
         photon_map_free(&caustics);
         return -1;
     }
     *stored = caustics.count;
-    CausticPathSettings estimator = {settings->path, &split, &caustics,
-                                     ppm_radius(settings->radius, settings->alpha, pass)};
+    CausticPathSettings estimator = {settings->path, &split, &caustics, radius};
     RenderSettings pass_render = *whole;
     pass_render.image.spp = settings->spp;
     pass_render.progress = 0;

@@ -35,11 +35,11 @@ typedef struct {
     double stored;       /* photons stored per pass in the caustic map, on average */
 } PpmResult;
 
-/* The map of settings->emitted photons, shot by `threads` threads (0: one per core; no
- * more than there are photons); the same map for any count. Returns 0, or -1 when memory
- * runs out. */
+/* The map of settings->emitted photons for estimates of `radius`, shot by `threads`
+ * threads (0: one per core; no more than there are photons); the same map for any count.
+ * Returns 0, or -1 when memory runs out. */
 int ppm_photon_map(PhotonMap *map, const Scene *scene, const PhotonMapSettings *settings,
-                   int threads, RayCounts *counts);
+                   double radius, int threads, RayCounts *counts);
 
 /* Render with `render`'s size, threads, seed and progress (its spp and sampling are
  * those of each pass: settings->spp, and render->sampling; PIXEL_PROGRESSIVE continues

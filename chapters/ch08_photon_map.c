@@ -2,7 +2,7 @@
  * final path tracer (beyond the report: its §5 names photon mapping, its reference [9], as
  * the way to caustics and shorter renders).
  *
- * New concepts (lib/): kdtree (points near a place, fast), photon (shooting photons
+ * New concepts (lib/): point_grid (points near a place, fast), photon (shooting photons
  * from the lamps, tracing them through mirrors and glass, the caustic map L S+ D),
  * photon_estimate (reflected radiance from the density of photons, and the progressive
  * radius), and path_caustics, chapter 7's final path tracer to which the photon map adds
@@ -486,7 +486,7 @@ static unsigned char *lamp_mask(const Options *small, const Scene *scene, const 
                                 int *left_out)
 {
     PhotonMap empty;
-    if (photon_map_build(&empty, NULL, 0, 0) != 0)
+    if (photon_map_build(&empty, NULL, 0, 0, 1.0) != 0)
         cli_fail(1, "out of memory");
     CausticPathSettings without = {*path, &empty, &empty, 1.0};
     Options quiet = *small;

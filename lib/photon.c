@@ -61,7 +61,8 @@ int photon_shoot(const Scene *scene, const PhotonMapSettings *settings, int k, P
     return photon_trace(scene, ray, settings->paths, settings->fresnel, &rng, stored, counts);
 }
 
-int photon_map_build(PhotonMap *map, const Photon *photons, int count, int emitted)
+int photon_map_build(PhotonMap *map, const Photon *photons, int count, int emitted,
+                     double radius)
 {
     memset(map, 0, sizeof *map);
     map->emitted = emitted;
@@ -69,15 +70,13 @@ int photon_map_build(PhotonMap *map, const Photon *photons, int count, int emitt
     Vec3 *positions = malloc(size * sizeof *positions);
     map->photons = malloc(size * sizeof *map->photons);
     int ok = positions && map->photons;
-    for (int i = 0; ok && i < count; i++)
+    for (int i = 0; ok && i < count; i++) {
         positions[i] = photons[i].position;
-    ok = ok && kdtree_build(&map->tree, positions, count) == 0;
-    if (ok) {
-        map->count = count;
-        for (int i = 0; i < count; i++)
-            map->photons[i] = photons[map->tree.index[i]];
-        kdtree_use_tree_order(&map->tree);
+        map->photons[i] = photons[i];
     }
+    ok = ok && point_grid_build(&map->grid, positions, count, radius) == 0;
+    if (ok)
+        map->count = count;
     free(positions);
     if (!ok)
         photon_map_free(map);
@@ -87,7 +86,7 @@ int photon_map_build(PhotonMap *map, const Photon *photons, int count, int emitt
 void photon_map_free(PhotonMap *map)
 {
     free(map->photons);
-    kdtree_free(&map->tree);
+    point_grid_free(&map->grid);
     map->photons = NULL;
     map->count = 0;
 }

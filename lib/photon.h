@@ -11,7 +11,7 @@
 #ifndef PHOTON_H
 #define PHOTON_H
 
-#include "kdtree.h"
+#include "point_grid.h"
 #include "path.h"
 
 #define PHOTON_MAX_BOUNCES 64
@@ -60,15 +60,16 @@ int photon_shoot(const Scene *scene, const PhotonMapSettings *settings, int k, P
                  RayCounts *counts);
 
 typedef struct PhotonMap {
-    Photon *photons; /* in the kd-tree's order */
+    Photon *photons;
     int count;       /* stored */
     int emitted;
-    KdTree tree;     /* over the photons' positions */
+    PointGrid grid;  /* over the photons' positions */
 } PhotonMap;
 
-/* The map of `count` photons stored out of `emitted` shot: a kd-tree over their
- * positions (photons is copied). Returns 0, or -1 when memory runs out. */
-int photon_map_build(PhotonMap *map, const Photon *photons, int count, int emitted);
+/* The map of `count` photons stored out of `emitted` shot: a grid over their positions
+ * for estimates of `radius` (photons is copied). Returns 0, or -1 when memory runs out. */
+int photon_map_build(PhotonMap *map, const Photon *photons, int count, int emitted,
+                     double radius);
 void photon_map_free(PhotonMap *map);
 
 #endif

@@ -58,7 +58,7 @@ Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 
                               const Material *m)
 {
     Gather g = {map, n, wo, m, m->kind == MATERIAL_LAMBERT, vec3(0, 0, 0)};
-    kdtree_query_radius(&map->tree, x, radius, add_photon, &g);
+    point_grid_query_radius(&map->grid, x, radius, add_photon, &g);
     Vec3 sum = g.lambert ? vec3_mul(diffuse_brdf(m, n, wo, wo), g.sum) : g.sum;
     return vec3_scale(sum, 1.0 / (PI * radius * radius));
 }

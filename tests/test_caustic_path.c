@@ -125,7 +125,7 @@ static void test_room_without_specular_is_chapter7(void **state)
     RayCounts counts = {0, 0, 0};
     PhotonMapSettings photons = {20000, PHOTON_SPLIT, FRESNEL_EXACT, 3};
     PhotonMap map;
-    assert_int_equal(ppm_photon_map(&map, &scene, &photons, 0, &counts), 0);
+    assert_int_equal(ppm_photon_map(&map, &scene, &photons, 0.2, 0, &counts), 0);
     assert_int_equal(map.count, 0);
     CausticPathSettings with_map = {CHAPTER7, &map, &map, 0.2};
     RenderSettings settings = {{SIDE, SIDE, 64, PIXEL_RANDOM, 5}, 0, 0, "test"};
@@ -186,7 +186,7 @@ static void test_room_converges_and_counts_once(void **state)
     PhotonMap empty;
     RayCounts counts = {0, 0, 0};
     PhotonMapSettings none = {0, PHOTON_SPLIT, FRESNEL_EXACT, 1};
-    assert_int_equal(ppm_photon_map(&empty, &scene, &none, 0, &counts), 0);
+    assert_int_equal(ppm_photon_map(&empty, &scene, &none, 0.15, 0, &counts), 0);
     CausticPathSettings without = {CHAPTER7, &empty, &empty, 0.15};
     RenderSettings path_only = {{SIDE, SIDE, 1024, PIXEL_RANDOM, 13}, 0, 0, "test"};
     RenderResult path_part;
@@ -260,8 +260,8 @@ static void test_mirrored_glass_furnace(void **state)
     split_photons.paths = PHOTON_SPLIT;
     PhotonMap caustics, split;
     RayCounts counts = {0, 0, 0};
-    assert_int_equal(ppm_photon_map(&caustics, &scene, &photons, 0, &counts), 0);
-    assert_int_equal(ppm_photon_map(&split, &scene, &split_photons, 0, &counts), 0);
+    assert_int_equal(ppm_photon_map(&caustics, &scene, &photons, 0.01, 0, &counts), 0);
+    assert_int_equal(ppm_photon_map(&split, &scene, &split_photons, 0.01, 0, &counts), 0);
     print_message("    %d photons stored of %d, %d of them in the split map\n", caustics.count,
                   photons.emitted, split.count);
     /* The images at every diffuse vertex (chapter 7's), then at the first only (chapter

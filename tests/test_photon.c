@@ -96,7 +96,7 @@ static void test_closed_box_stores_all_power(void **state)
     RayCounts counts = {0, 0, 0};
     PhotonMapSettings direct = {n, PHOTON_DIRECT, FRESNEL_EXACT, 5};
     PhotonMap map;
-    assert_int_equal(ppm_photon_map(&map, &scene, &direct, 2, &counts), 0);
+    assert_int_equal(ppm_photon_map(&map, &scene, &direct, 0.1, 2, &counts), 0);
     assert_int_equal(map.count, n);
     assert_int_equal(counts.bounce, (uint64_t)n);
     double red = 0.0, blue = 0.0;
@@ -109,7 +109,7 @@ static void test_closed_box_stores_all_power(void **state)
     photon_map_free(&map);
 
     PhotonMapSettings caustic = {n, PHOTON_CAUSTIC, FRESNEL_EXACT, 5};
-    assert_int_equal(ppm_photon_map(&map, &scene, &caustic, 2, &counts), 0);
+    assert_int_equal(ppm_photon_map(&map, &scene, &caustic, 0.1, 2, &counts), 0);
     assert_int_equal(map.count, 0);
     photon_map_free(&map);
     scene_free(&scene);
@@ -293,12 +293,12 @@ static void test_map_same_for_any_thread_count(void **state)
     RayCounts counts = {0, 0, 0};
     PhotonMapSettings s1 = {30001, PHOTON_CAUSTIC, FRESNEL_EXACT, 9};
     PhotonMapSettings s3 = {30001, PHOTON_CAUSTIC, FRESNEL_EXACT, 9};
-    assert_int_equal(ppm_photon_map(&one, &scene, &s1, 1, &counts), 0);
-    assert_int_equal(ppm_photon_map(&three, &scene, &s3, 3, &counts), 0);
+    assert_int_equal(ppm_photon_map(&one, &scene, &s1, 0.1, 1, &counts), 0);
+    assert_int_equal(ppm_photon_map(&three, &scene, &s3, 0.1, 3, &counts), 0);
     assert_true(one.count > 1000);
     assert_int_equal(one.count, three.count);
     assert_int_equal(memcmp(one.photons, three.photons, (size_t)one.count * sizeof *one.photons), 0);
-    assert_int_equal(one.tree.count, one.count);
+    assert_int_equal(one.grid.count, one.count);
     photon_map_free(&one);
     photon_map_free(&three);
     scene_free(&scene);

@@ -77,7 +77,7 @@ static void direct_map(const Scene *scene, PhotonMap *map)
 {
     RayCounts counts = {0, 0, 0};
     PhotonMapSettings settings = {PHOTONS, PHOTON_DIRECT, FRESNEL_EXACT, 77};
-    assert_int_equal(ppm_photon_map(map, scene, &settings, 0, &counts), 0);
+    assert_int_equal(ppm_photon_map(map, scene, &settings, RADIUS, 0, &counts), 0);
 }
 
 /* F averaged over the disk of radius r around (x, y): midpoint rule in polar
@@ -235,7 +235,7 @@ static void test_photons_on_a_wall_do_not_count_on_the_floor(void **state)
         photons[EACH + i] = (Photon){on_wall, vec3(-0.6, 0, 0.8), vec3(-1, 0, 0), vec3(1, 1, 1)};
     }
     PhotonMap map;
-    assert_int_equal(photon_map_build(&map, photons, 2 * EACH, 1000), 0);
+    assert_int_equal(photon_map_build(&map, photons, 2 * EACH, 1000, 0.2), 0);
     Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     Vec3 estimate = photon_estimate_radiance(&map, 0.2, vec3(0, 0, 0), vec3(0, 0, 1), vec3(0, 0, 1),
                                              &white);
@@ -267,7 +267,7 @@ static void test_no_dark_edge_at_a_wall_or_a_drop(void **state)
             photons[i * NY + j] = (Photon){p, vec3(0, 0, 1), vec3(0, 0, 1), vec3(1.0 / 40000, 1.0 / 40000, 1.0 / 40000)};
         }
     PhotonMap map;
-    assert_int_equal(photon_map_build(&map, photons, NX * NY, NX * NY), 0);
+    assert_int_equal(photon_map_build(&map, photons, NX * NY, NX * NY, 0.1), 0);
     Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     const double distances[5] = {0.002, 0.02, 0.05, 0.08, 0.2}, expected = 0.5 / PI;
     for (int scene_kind = 0; scene_kind < 2; scene_kind++) {

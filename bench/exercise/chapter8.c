@@ -37,7 +37,7 @@ static void grade_density(Grading *g)
             p->normal = vec3(1, 0, 0); /* on a wall through the floor: another surface */
     }
     PhotonMap map;
-    if (photon_map_build(&map, photons, PHOTONS, 100000) != 0) {
+    if (photon_map_build(&map, photons, PHOTONS, 100000, 0.1) != 0) {
         free(photons);
         grading_fail(g, "out of memory");
         return;

@@ -1,0 +1,264 @@
+/* test_point_grid.c (chapter 8): Tests of the hashed grid (lib/point_grid.c, chapter 8): every fixed-radius
+ * query returns exactly the points that testing every point returns, each once.
+ *
+ * The hard cases are ties, so the point sets are built to have them: points on an
+ * integer grid (many equal coordinates on every axis, many points at exactly the query
+ * radius, since integer distances are exact in doubles, and many on the cubes' faces),
+ * many copies of the same point, all points on one plane (as photons on a floor are), a
+ * cluster with an empty hole queried inside the hole, queries far from every point, the
+ * empty grid, and points around 0 and beyond 2^52 cubes from it. The grids are built
+ * for one radius and queried with smaller and larger ones too. Random clouds with
+ * random radii cover the rest.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "point_grid.h"
+#include "rng.h"
+
+#define MAX_POINTS 4000
+
+typedef struct {
+    int found[MAX_POINTS]; /* how many times each point was reported */
+    int count;
+    const Vec3 *points;
+    Vec3 center;
+} Found;
+
+static void record(int index, double distance2, void *context)
+{
+    Found *f = context;
+    Vec3 d = vec3_sub(f->points[index], f->center);
+    assert_true(distance2 == vec3_dot(d, d)); /* the distance reported is the point's */
+    f->found[index]++;
+    f->count++;
+}
+
+/* The grid's answer equals brute force's; returns how many points were found. */
+static int check_query(const PointGrid *grid, const Vec3 *points, int count, Vec3 center, double radius)
+{
+    static Found f;
+    memset(f.found, 0, sizeof f.found);
+    f.count = 0;
+    f.points = points;
+    f.center = center;
+    point_grid_query_radius(grid, center, radius, record, &f);
+    int expected = 0;
+    for (int i = 0; i < count; i++) {
+        Vec3 d = vec3_sub(points[i], center);
+        int inside = vec3_dot(d, d) <= radius * radius;
+        expected += inside;
+        if (f.found[i] != inside)
+            fail_msg("point %d (%g %g %g), query (%g %g %g) r=%g: found %d times, expected %d", i,
+                     points[i].x, points[i].y, points[i].z, center.x, center.y, center.z, radius,
+                     f.found[i], inside);
+    }
+    assert_int_equal(f.count, expected);
+    return expected;
+}
+
+static void build(PointGrid *grid, const Vec3 *points, int count, double radius)
+{
+    assert_int_equal(point_grid_build(grid, points, count, radius), 0);
+    assert_int_equal(grid->count, count);
+}
+
+/* A 10 x 10 x 10 integer grid queried at grid points and half-integers with integer
+ * radii: every query has points at exactly its radius. */
+static void test_grid_ties_at_the_radius(void **state)
+{
+    static Vec3 points[1000];
+    int n = 0;
+    for (int x = 0; x < 10; x++)
+        for (int y = 0; y < 10; y++)
+            for (int z = 0; z < 10; z++)
+                points[n++] = vec3(x, y, z);
+    /* Cubes of side 2 and 8: many points on their faces. */
+    const double built[2] = {1.0, 4.0};
+    for (int g = 0; g < 2; g++) {
+        PointGrid grid;
+        build(&grid, points, n, built[g]);
+        int at_radius = 0;
+        for (int i = 0; i < 300; i++) {
+            Rng rng = rng_for_sample(3, 0, (uint64_t)i);
+            Vec3 c = vec3((int)(10 * rng_uniform(&rng)), (int)(10 * rng_uniform(&rng)),
+                          (int)(10 * rng_uniform(&rng)));
+            if (i % 2)
+                c = vec3_add(c, vec3(0.5, 0.5, 0.0));
+            double radius = 1 + (int)(4 * rng_uniform(&rng));
+            check_query(&grid, points, n, c, radius);
+            for (int k = 0; k < n; k++) {
+                Vec3 d = vec3_sub(points[k], c);
+                at_radius += vec3_dot(d, d) == radius * radius;
+            }
+        }
+        print_message("    built for %g: %d point-query pairs at exactly the radius\n", built[g],
+                      at_radius);
+        assert_true(at_radius > 1000);
+        point_grid_free(&grid);
+    }
+}
+
+/* Many copies of a few points: one bucket holds them all. */
+static void test_duplicates(void **state)
+{
+    static Vec3 points[3000];
+    for (int i = 0; i < 3000; i++)
+        points[i] = i % 3 == 0 ? vec3(1, 2, 3) : i % 3 == 1 ? vec3(1, 2, 4) : vec3(0, 0, 0);
+    PointGrid grid;
+    build(&grid, points, 3000, 0.5);
+    assert_int_equal(check_query(&grid, points, 3000, vec3(1, 2, 3), 0.0), 1000); /* radius 0 */
+    assert_int_equal(check_query(&grid, points, 3000, vec3(1, 2, 3.5), 0.5), 2000);
+    assert_int_equal(check_query(&grid, points, 3000, vec3(1, 2, 3.5), 0.4999), 0);
+    assert_int_equal(check_query(&grid, points, 3000, vec3(0, 0, 0), 10.0), 3000);
+    point_grid_free(&grid);
+    /* All points the same. */
+    for (int i = 0; i < 3000; i++)
+        points[i] = vec3(5, 5, 5);
+    build(&grid, points, 3000, 1.0);
+    assert_int_equal(check_query(&grid, points, 3000, vec3(5, 5, 6), 1.0), 3000);
+    assert_int_equal(check_query(&grid, points, 3000, vec3(5, 5, 6), 0.5), 0);
+    point_grid_free(&grid);
+}
+
+/* Points on the plane z = -5 (like photons on a floor), queried from the plane, above
+ * it and below it. */
+static void test_points_on_a_plane(void **state)
+{
+    static Vec3 points[MAX_POINTS];
+    for (int i = 0; i < MAX_POINTS; i++) {
+        Rng rng = rng_for_sample(5, 0, (uint64_t)i);
+        points[i] = vec3(10 * rng_uniform(&rng), 12 * rng_uniform(&rng) - 6, -5);
+    }
+    PointGrid grid;
+    build(&grid, points, MAX_POINTS, 0.6);
+    for (int i = 0; i < 200; i++) {
+        Rng rng = rng_for_sample(6, 0, (uint64_t)i);
+        Vec3 c = vec3(10 * rng_uniform(&rng), 12 * rng_uniform(&rng) - 6, -5 + (i % 3 - 1) * 0.1);
+        check_query(&grid, points, MAX_POINTS, c, 0.05 + rng_uniform(&rng));
+    }
+    point_grid_free(&grid);
+}
+
+/* A cloud in a shell 2 <= |p| <= 3: queries inside the hole find nothing, queries far
+ * away find nothing, and the empty grid finds nothing. */
+static void test_empty_regions(void **state)
+{
+    static Vec3 points[2000];
+    for (int i = 0; i < 2000; i++) {
+        Rng rng = rng_for_sample(7, 0, (uint64_t)i);
+        double z = 2 * rng_uniform(&rng) - 1, phi = 2 * PI * rng_uniform(&rng);
+        double s = sqrt(1 - z * z), r = 2 + rng_uniform(&rng);
+        points[i] = vec3(r * s * cos(phi), r * s * sin(phi), r * z);
+    }
+    PointGrid grid;
+    build(&grid, points, 2000, 2.0);
+    assert_int_equal(check_query(&grid, points, 2000, vec3(0, 0, 0), 1.99), 0);
+    assert_int_equal(check_query(&grid, points, 2000, vec3(0.3, -0.2, 0.1), 1.5), 0);
+    assert_int_equal(check_query(&grid, points, 2000, vec3(100, 0, 0), 50), 0);
+    assert_true(check_query(&grid, points, 2000, vec3(2.5, 0, 0), 0.5) > 0);
+    point_grid_free(&grid);
+
+    build(&grid, points, 0, 1.0);
+    assert_int_equal(check_query(&grid, points, 0, vec3(0, 0, 0), 1e9), 0);
+    point_grid_free(&grid);
+    build(&grid, points, 1, 1.0);
+    assert_int_equal(check_query(&grid, points, 1, points[0], 0.0), 1);
+    point_grid_free(&grid);
+}
+
+/* Points on both sides of 0 on every axis, -0 among them, with cube faces at 0; the
+ * same of size 1e-30; a cloud 1e20 from the origin with cubes of 2e-3 (beyond 2^52
+ * cubes from 0: every point unfiled); and one that straddles 2^52 cubes of side 1. */
+static void test_signs_and_scales(void **state)
+{
+    static Vec3 points[MAX_POINTS];
+    const double scales[4] = {1.0, 1e-30, 1.0, 1.0}, offsets[4] = {0.0, 0.0, 1e20, 0x1p52 - 1.0};
+    const double built[4] = {0.3, 0.3e-30, 1e-3, 0.5};
+    for (int s = 0; s < 4; s++) {
+        int n = 0;
+        for (int x = -4; x <= 4; x++)
+            for (int y = -4; y <= 4; y++)
+                for (int z = -4; z <= 4; z++)
+                    points[n++] = vec3(offsets[s] + scales[s] * 0.25 * x, scales[s] * 0.25 * y,
+                                       z == 0 ? -0.0 : scales[s] * 0.25 * z);
+        PointGrid grid;
+        build(&grid, points, n, built[s]);
+        for (int i = 0; i < 100; i++) {
+            Rng rng = rng_for_sample(9, (uint64_t)s, (uint64_t)i);
+            Vec3 c = vec3(offsets[s] + scales[s] * (2.5 * rng_uniform(&rng) - 1.25),
+                          scales[s] * (i % 4 == 0 ? -0.0 : 2.5 * rng_uniform(&rng) - 1.25),
+                          scales[s] * 0.25 * (int)(8 * rng_uniform(&rng) - 4));
+            double radius = scales[s] * (i % 2 ? 0.25 : 0.6 * rng_uniform(&rng));
+            check_query(&grid, points, n, c, radius);
+        }
+        point_grid_free(&grid);
+    }
+}
+
+/* Grids of one to four points, each filed under its 8 cubes, have few buckets (16 to
+ * 64), and two cubes of one point often share one (about 1 pair in 50 with 16): 300
+ * such grids at random places, queried at each point and around it, must still find
+ * each point once. */
+static void test_few_points(void **state)
+{
+    Vec3 points[4];
+    for (int trial = 0; trial < 300; trial++) {
+        Rng rng = rng_for_sample(10, 0, (uint64_t)trial);
+        int n = 1 + trial % 4;
+        for (int i = 0; i < n; i++)
+            points[i] = vec3(100 * rng_uniform(&rng) - 50, 100 * rng_uniform(&rng) - 50,
+                             100 * rng_uniform(&rng) - 50);
+        PointGrid grid;
+        build(&grid, points, n, 0.5);
+        for (int i = 0; i < n; i++) {
+            check_query(&grid, points, n, points[i], 0.5);
+            for (int k = 0; k < 10; k++) {
+                Vec3 c = vec3_add(points[i], vec3(rng_uniform(&rng) - 0.5, rng_uniform(&rng) - 0.5,
+                                                  rng_uniform(&rng) - 0.5));
+                check_query(&grid, points, n, c, 0.5);
+            }
+        }
+        point_grid_free(&grid);
+    }
+}
+
+/* Random clouds of every size up to MAX_POINTS, random centres and radii. */
+static void test_random_clouds(void **state)
+{
+    static Vec3 points[MAX_POINTS];
+    for (int cloud = 0; cloud < 20; cloud++) {
+        Rng rng = rng_for_sample(8, 1, (uint64_t)cloud);
+        int n = 1 + (int)(MAX_POINTS * rng_uniform(&rng));
+        for (int i = 0; i < n; i++)
+            points[i] = vec3(rng_uniform(&rng), 3 * rng_uniform(&rng), 0.2 * rng_uniform(&rng));
+        PointGrid grid;
+        build(&grid, points, n, 0.3 * rng_uniform(&rng) + 1e-3);
+        for (int i = 0; i < 50; i++) {
+            Vec3 c = vec3(1.2 * rng_uniform(&rng) - 0.1, 3.2 * rng_uniform(&rng) - 0.1,
+                          0.4 * rng_uniform(&rng) - 0.1);
+            check_query(&grid, points, n, c, 0.3 * rng_uniform(&rng));
+        }
+        point_grid_free(&grid);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_grid_ties_at_the_radius),
+        cmocka_unit_test(test_duplicates),
+        cmocka_unit_test(test_points_on_a_plane),
+        cmocka_unit_test(test_empty_regions),
+        cmocka_unit_test(test_signs_and_scales),
+        cmocka_unit_test(test_few_points),
+        cmocka_unit_test(test_random_clouds),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
