@@ -77,7 +77,7 @@ static const GalleryChapter CHAPTERS[] = {
     {8, "Photon-mapped caustics",
      "Light focused by the glass sphere onto the floor (a caustic) is found by a path tracer "
      "only by chance, as bright speckles. Photons are traced from the light instead, those "
-     "that land on a diffuse surface after glass are stored in a kd-tree, and the caustic is "
+     "that land on a diffuse surface after glass are stored in a hashed grid, and the caustic is "
      "estimated from their density around each point seen.",
      "beyond the report (its section 5 names photon mapping as future work): the room "
      "without speckles, at equal time against chapter 7",
