@@ -103,8 +103,9 @@ static void describe_ppm(const PpmSettings *ppm, const PpmResult *result, char *
         snprintf(photons, sizeof photons, "%dk", (ppm->photons + 500) / 1000);
     else
         snprintf(photons, sizeof photons, "%d", ppm->photons);
-    snprintf(text, size, "%d x %d spp, M=%d, %s photons, r %.3g to %.3g", result->passes, ppm->spp,
-             ppm->path.shadow_rays, photons, ppm->radius, result->radius);
+    snprintf(text, size, "%d x %d spp, M=%d mirror-light@%d, %s photons, r %.3g to %.3g",
+             result->passes, ppm->spp, ppm->path.shadow_rays, ppm->path.mirror_light, photons,
+             ppm->radius, result->radius);
 }
 
 /* Render the photon version, or exit as experiment_render does. */
