@@ -124,8 +124,8 @@ static void grade_radius(Grading *g)
 
 const Exercise exercises[] = {
     {"8.1", "photon_estimate_radiance",
-     "Return L(x, wo) from the photons of `map` within `radius` of x (kdtree_query_radius on "
-     "map->tree with a visit function): the sum of f Phi (f = diffuse_brdf(m, n, incoming, "
+     "Return L(x, wo) from the photons of `map` within `radius` of x (point_grid_query_radius on "
+     "map->grid with a visit function): the sum of f Phi (f = diffuse_brdf(m, n, incoming, "
      "wo), Phi the photon's power) over the photons on this surface (normal . n >= "
      "PHOTON_NORMAL_COS) that arrived on its side (incoming . n > 0), divided by the disc's "
      "area pi r^2. See docs/chapter8.md, section 4.",
