@@ -5,6 +5,82 @@
 #include <stdlib.h>
 #include <string.h>
 
+static BvhPrimitives primitives_of(const Scene *scene)
+{
+    BvhPrimitives p = {scene->triangles, scene->triangle_count, scene->spheres, scene->sphere_count};
+    return p;
+}
+
+#if CHAPTER >= 9
+static int prepare_queries(Scene *scene)
+{
+    scene->query = QUERY_WIDE_TREE;
+    if (bvh_build(&scene->bvh, primitives_of(scene)) != 0)
+        return -1;
+    return wide_bvh_build(&scene->wide, &scene->bvh, primitives_of(scene));
+}
+
+static void free_queries(Scene *scene)
+{
+    wide_bvh_free(&scene->wide);
+    bvh_free(&scene->bvh);
+}
+
+/* Every primitive tested, the nearest kept: what the trees must answer. */
+static int every_primitive(const Scene *scene, Ray ray, double *tmax, int any_hit)
+{
+    int nearest = -1;
+    for (int i = 0; i < scene->triangle_count + scene->sphere_count && !(any_hit && nearest >= 0); i++) {
+        double t = i < scene->triangle_count
+                       ? triangle_intersect(&scene->triangles[i], ray, 0.0, *tmax)
+                       : sphere_intersect(&scene->spheres[i - scene->triangle_count], ray, 0.0, *tmax);
+        if (t < *tmax) {
+            *tmax = t;
+            nearest = i;
+        }
+    }
+    return nearest;
+}
+
+static int nearest_primitive(const Scene *scene, Ray ray, double *tmax)
+{
+    if (scene->query == QUERY_EVERY_PRIMITIVE)
+        return every_primitive(scene, ray, tmax, 0);
+    if (scene->query == QUERY_BINARY_TREE)
+        return bvh_intersect(&scene->bvh, primitives_of(scene), ray, tmax);
+    return wide_bvh_intersect(&scene->wide, primitives_of(scene), ray, tmax);
+}
+
+static int any_primitive(const Scene *scene, Ray ray, double tmax)
+{
+    if (scene->query == QUERY_EVERY_PRIMITIVE)
+        return every_primitive(scene, ray, &tmax, 1) >= 0;
+    if (scene->query == QUERY_BINARY_TREE)
+        return bvh_occluded(&scene->bvh, primitives_of(scene), ray, tmax);
+    return wide_bvh_occluded(&scene->wide, primitives_of(scene), ray, tmax);
+}
+#else
+static int prepare_queries(Scene *scene)
+{
+    return bvh_build(&scene->bvh, primitives_of(scene));
+}
+
+static void free_queries(Scene *scene)
+{
+    bvh_free(&scene->bvh);
+}
+
+static int nearest_primitive(const Scene *scene, Ray ray, double *tmax)
+{
+    return bvh_intersect(&scene->bvh, primitives_of(scene), ray, tmax);
+}
+
+static int any_primitive(const Scene *scene, Ray ray, double tmax)
+{
+    return bvh_occluded(&scene->bvh, primitives_of(scene), ray, tmax);
+}
+#endif
+
 void scene_init(Scene *scene)
 {
     memset(scene, 0, sizeof *scene);
@@ -18,7 +94,7 @@ void scene_free(Scene *scene)
     free(scene->point_lights);
     free(scene->light_triangles);
     free(scene->light_cumulative);
-    bvh_free(&scene->bvh);
+    free_queries(scene);
     scene_init(scene);
 }
 
@@ -59,11 +135,6 @@ int scene_add_point_light(Scene *scene, PointLight light)
     return append((void **)&scene->point_lights, &scene->point_light_count, &light, sizeof light);
 }
 
-static BvhPrimitives primitives_of(const Scene *scene)
-{
-    BvhPrimitives p = {scene->triangles, scene->triangle_count, scene->spheres, scene->sphere_count};
-    return p;
-}
 
 /* The emitting triangles, with the running sum of their areas. */
 static int list_lights(Scene *scene)
@@ -96,15 +167,15 @@ static int list_lights(Scene *scene)
 
 int scene_prepare(Scene *scene)
 {
-    bvh_free(&scene->bvh);
-    if (bvh_build(&scene->bvh, primitives_of(scene)) != 0)
+    free_queries(scene);
+    if (prepare_queries(scene) != 0)
         return -1;
     return list_lights(scene);
 }
 
 int scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit)
 {
-    int primitive = bvh_intersect(&scene->bvh, primitives_of(scene), ray, &tmax);
+    int primitive = nearest_primitive(scene, ray, &tmax);
     if (primitive < 0)
         return 0;
     hit->t = tmax;
@@ -136,5 +207,5 @@ int scene_occluded(const Scene *scene, Vec3 from, Vec3 from_normal, Vec3 to, Vec
     Vec3 span = vec3_sub(end, start);
     double distance = vec3_length(span);
     Ray ray = {start, vec3_scale(span, 1.0 / distance)};
-    return bvh_occluded(&scene->bvh, primitives_of(scene), ray, distance);
+    return any_primitive(scene, ray, distance);
 }

@@ -10,6 +10,12 @@
 #define SCENE_H
 
 #include "bvh.h"
+#if CHAPTER >= 9
+#include "wide_bvh.h"
+
+/* How the ray queries find a hit: chapter 9 measures each. */
+typedef enum { QUERY_WIDE_TREE, QUERY_BINARY_TREE, QUERY_EVERY_PRIMITIVE } QueryMethod;
+#endif
 #include "camera.h"
 #include "material.h"
 #include "sphere.h"
@@ -36,6 +42,10 @@ typedef struct {
     int light_count;
     double light_area;        /* total emitting area */
     Bvh bvh;                  /* over all triangles and spheres */
+#if CHAPTER >= 9
+    WideBvh wide;             /* the same tree made four-wide */
+    QueryMethod query;        /* QUERY_WIDE_TREE unless set after scene_prepare() */
+#endif
 } Scene;
 
 /* What a ray hit. */

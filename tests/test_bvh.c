@@ -51,29 +51,70 @@ static int brute_force(BvhPrimitives p, Ray ray, double *tmax)
     return nearest;
 }
 
-/* Both queries against the reference for one ray (nearest below tmax; shadow query up
- * to tmax and to half the nearest hit), the nearest t equal to within `tolerance`
- * relative (0: exactly). Returns whether the ray hits anything. */
+/* The trees under test: chapter 1's, and from chapter 9 on the same made four-wide. */
+typedef struct {
+    const char *name;
+    int (*intersect)(const Scene *scene, Ray ray, double *tmax);
+    int (*occluded)(const Scene *scene, Ray ray, double tmax);
+} Tree;
+
+static int binary_intersect(const Scene *scene, Ray ray, double *tmax)
+{
+    return bvh_intersect(&scene->bvh, primitives_of(scene), ray, tmax);
+}
+
+static int binary_occluded(const Scene *scene, Ray ray, double tmax)
+{
+    return bvh_occluded(&scene->bvh, primitives_of(scene), ray, tmax);
+}
+
+#if CHAPTER >= 9
+static int wide_intersect(const Scene *scene, Ray ray, double *tmax)
+{
+    return wide_bvh_intersect(&scene->wide, primitives_of(scene), ray, tmax);
+}
+
+static int wide_occluded(const Scene *scene, Ray ray, double tmax)
+{
+    return wide_bvh_occluded(&scene->wide, primitives_of(scene), ray, tmax);
+}
+#endif
+
+static const Tree trees[] = {
+    {"binary", binary_intersect, binary_occluded},
+#if CHAPTER >= 9
+    {"four-wide", wide_intersect, wide_occluded},
+#endif
+};
+
+/* Both queries of every tree against the reference for one ray (nearest below tmax;
+ * shadow query up to tmax and to half the nearest hit), the nearest t equal to within
+ * `tolerance` relative (0: exactly). Returns whether the ray hits anything. */
 static int check_ray_within(const Scene *scene, Ray ray, double tmax, double tolerance,
                             const char *what, int i)
 {
     BvhPrimitives p = primitives_of(scene);
-    double t_bvh = tmax, t_all = tmax;
-    int bvh = bvh_intersect(&scene->bvh, p, ray, &t_bvh);
+    double t_all = tmax;
     int all = brute_force(p, ray, &t_all);
-    if (!(t_bvh == t_all || fabs(t_bvh - t_all) <= tolerance * t_all))
-        fail_msg("%s ray %d from (%.17g %.17g %.17g) dir (%.17g %.17g %.17g): bvh %d t=%.17g, all %d t=%.17g",
-                 what, i, ray.origin.x, ray.origin.y, ray.origin.z, ray.dir.x, ray.dir.y, ray.dir.z, bvh,
-                 t_bvh, all, t_all);
-    /* Different primitives only where both are hit at this t (a tie). */
-    if (bvh != all)
-        assert_true(primitive_t(p, bvh, ray) == t_bvh && primitive_t(p, all, ray) == t_all);
-    double limits[2] = {tmax, 0.5 * t_all};
-    for (int k = 0; k < 2; k++) {
-        double limit = limits[k];
-        int occluded = bvh_occluded(&scene->bvh, p, ray, limits[k]);
-        if (occluded != (brute_force(p, ray, &limit) >= 0))
-            fail_msg("%s ray %d: shadow query up to %.17g says %d", what, i, limits[k], occluded);
+    for (size_t k = 0; k < sizeof trees / sizeof trees[0]; k++) {
+        const Tree *tree = &trees[k];
+        double t_tree = tmax;
+        int found = tree->intersect(scene, ray, &t_tree);
+        if (!(t_tree == t_all || fabs(t_tree - t_all) <= tolerance * t_all))
+            fail_msg("%s ray %d from (%.17g %.17g %.17g) dir (%.17g %.17g %.17g): %s tree %d "
+                     "t=%.17g, all %d t=%.17g", what, i, ray.origin.x, ray.origin.y, ray.origin.z,
+                     ray.dir.x, ray.dir.y, ray.dir.z, tree->name, found, t_tree, all, t_all);
+        /* Different primitives only where both are hit at this t (a tie). */
+        if (found != all)
+            assert_true(primitive_t(p, found, ray) == t_tree && primitive_t(p, all, ray) == t_all);
+        double limits[2] = {tmax, 0.5 * t_all};
+        for (int j = 0; j < 2; j++) {
+            double limit = limits[j];
+            int occluded = tree->occluded(scene, ray, limits[j]);
+            if (occluded != (brute_force(p, ray, &limit) >= 0))
+                fail_msg("%s ray %d: the %s tree's shadow query up to %.17g says %d", what, i,
+                         tree->name, limits[j], occluded);
+        }
     }
     return all >= 0;
 }

@@ -144,6 +144,13 @@ static void test_chapter7(void **state) { smoke("ch07_final", FEW_SAMPLES); }
 #endif
 #if CHAPTER >= 8
 static void test_chapter8(void **state) { smoke("ch08_photon_map", FEW_SAMPLES); }
+#endif
+#if CHAPTER >= 9
+/* Chapter 9 exits 1 unless every stage rendered the same image, bit for bit. */
+static void test_chapter9(void **state)
+{
+    smoke("ch09_fast", "--quick --spp 1");
+}
 
 /* A lamp with no blue: chapter 8's ratio of the image's channel means to the reference's
  * has nothing to divide by in blue, and must say so rather than print "nan". */
@@ -210,6 +217,9 @@ int main(void)
 #if CHAPTER >= 8
         cmocka_unit_test(test_chapter8),
         cmocka_unit_test(test_chapter8_lamp_without_blue),
+#endif
+#if CHAPTER >= 9
+        cmocka_unit_test(test_chapter9),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
