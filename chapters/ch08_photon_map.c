@@ -56,10 +56,11 @@
 #include "ppm.h"
 
 /* The photon version's settings, for an image 800 pixels wide (they scale: see above);
- * the first radius as a fraction of the view's width at the lights (ppm_first_radius:
- * 15.6 in the room, so about 0.05 there). docs/chapter8.md: how they were chosen. */
+ * the first radius as a fraction of the view's width at the depth the camera sees
+ * (ppm_first_radius: 14.8 in the room, so about 0.05 there). docs/chapter8.md: how they
+ * were chosen. */
 #define PHOTONS_PER_PIXEL 0.5
-#define FIRST_RADIUS_AT_800 0.0032
+#define FIRST_RADIUS_AT_800 0.0034
 #define PPM_SPP_PER_PASS 8
 #define MAX_PASSES 100000
 

@@ -181,38 +181,73 @@ static void test_oren_nayar_matches_shadow_rays(void **state)
     scene_free(&scene);
 }
 
-/* The first radius follows the view, not the units: the lamp over the floor, seen from
- * a camera whose 2-wide image plane is 1 from the eye, 2.5 from the lamp's centre: the
- * fraction of 2 x 2.5. The same set-up scaled by 1e-3 and 1e3 gets a radius scaled alike
- * (a radius in world units would give the three the same), and a sphere 1e12 away, or
- * a far bigger floor, changes nothing (a radius from the scene's extent would grow). */
+/* The first radius follows the view and the scene's size, never ~0. A camera at the
+ * origin looks along +z through a wide image plane (4 x 1, at depth 1) at a wall at depth
+ * 3 s: the view is 4 x 3 s wide there, so the radius is 0.01 x 12 s. Each case says what
+ * must not change it, or what it must be:
+ * - the scale s = 1e-3 or 1e3 scales it (a radius in world units would not);
+ * - a sphere 1e12 away and the wall 1e6 wide (out of view) change nothing (a radius from
+ *   the scene's extent would grow), nor does the scene moved 1e6 s away;
+ * - lamps: one above the eye and one below it (their centroid the eye, where a distance
+ *   from the eye to the lamps gave 1e-16), or out of view to the side, change nothing;
+ * - half the view empty (the wall only on its right): still the wall's depth;
+ * - nothing in view: the farthest lamp corner's distance takes the depth's place;
+ * - the eye 1e-12 from the wall, 1 from the origin: the depth is 1e-9 of that 1, not
+ *   1e-12, so the radius stays far above the coordinates' rounding.
+ * The plane's height (1) in place of its width (4) would give a quarter. */
+typedef enum { VIEW_PLAIN, VIEW_FAR_OBJECTS, VIEW_MOVED, VIEW_LAMPS_ABOUT_THE_EYE,
+               VIEW_HALF_EMPTY, VIEW_EMPTY, VIEW_AT_THE_WALL, VIEW_CASES } ViewCase;
+
+static double view_case_radius(ViewCase view, double s)
+{
+    Scene scene;
+    scene_init(&scene);
+    Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(1, 1, 1)};
+    Material grey = {.name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    int l = scene_add_material(&scene, lamp), g = scene_add_material(&scene, grey);
+    Vec3 at = view == VIEW_MOVED ? vec3(1e6 * s, -2e6 * s, 3e6 * s)
+              : view == VIEW_AT_THE_WALL ? vec3(1, 1, 1) : vec3(0, 0, 0);
+    double depth = view == VIEW_AT_THE_WALL ? 1e-12 : 3 * s, wide = view == VIEW_FAR_OBJECTS ? 1e6 : 20 * s;
+    double left = view == VIEW_HALF_EMPTY ? 0.0 : -wide, z = view == VIEW_EMPTY ? -depth : depth;
+    add_quad(&scene, vec3_add(at, vec3(left, -wide, z)), vec3_add(at, vec3(left, wide, z)),
+             vec3_add(at, vec3(wide, wide, z)), vec3_add(at, vec3(wide, -wide, z)), g);
+    /* Lamps 5 s above and below the eye, or one out of view to the side (the only
+     * thing left to measure when the wall is behind the eye: its farthest corners
+     * sqrt(36 + 1) s away), each 2 s x 2 s. */
+    for (int k = 0; k < (view == VIEW_LAMPS_ABOUT_THE_EYE ? 2 : 1); k++) {
+        Vec3 c = vec3_add(at, view == VIEW_LAMPS_ABOUT_THE_EYE ? vec3(0, k ? -5 * s : 5 * s, 0)
+                                                               : vec3(5 * s, 0, 0));
+        add_quad(&scene, vec3_add(c, vec3(-s, 0, -s)), vec3_add(c, vec3(s, 0, -s)),
+                 vec3_add(c, vec3(s, 0, s)), vec3_add(c, vec3(-s, 0, s)), l);
+    }
+    if (view == VIEW_FAR_OBJECTS)
+        assert_true(scene_add_sphere(&scene, (Sphere){vec3(1e12, 0, 0), 1.0, g}) >= 0);
+    scene.camera = camera_make(at, vec3_add(at, vec3(-2 * s, -0.5 * s, s)),
+                               vec3_add(at, vec3(2 * s, -0.5 * s, s)),
+                               vec3_add(at, vec3(-2 * s, 0.5 * s, s)));
+    assert_int_equal(scene_prepare(&scene), 0);
+    double radius = ppm_first_radius(&scene, 0.01);
+    scene_free(&scene);
+    return radius;
+}
+
 static void test_first_radius_follows_the_view(void **state)
 {
+    const char *names[VIEW_CASES] = {"plain", "far objects", "moved 1e6 away",
+                                     "lamps above and below the eye", "half the view empty",
+                                     "nothing in view", "the eye 1e-12 from the wall"};
     const double scales[3] = {1.0, 1e-3, 1e3};
-    for (int k = 0; k < 4; k++) {
-        double s = scales[k % 3];
-        Scene scene;
-        scene_init(&scene);
-        Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(1, 1, 1)};
-        Material grey = {.name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
-        int l = scene_add_material(&scene, lamp), g = scene_add_material(&scene, grey);
-        /* The lamp's centre at (0, 0, 2.5 s), facing down; the eye at the origin. */
-        scene_add_triangle(&scene, triangle_make(vec3(-s, -s, 2.5 * s), vec3(s, s, 2.5 * s),
-                                                 vec3(s, -s, 2.5 * s), l));
-        scene_add_triangle(&scene, triangle_make(vec3(-s, -s, 2.5 * s), vec3(-s, s, 2.5 * s),
-                                                 vec3(s, s, 2.5 * s), l));
-        double floor = k == 3 ? 1e6 : 10.0 * s;
-        scene_add_triangle(&scene, triangle_make(vec3(-floor, -floor, -s), vec3(floor, -floor, -s),
-                                                 vec3(0, floor, -s), g));
-        if (k == 3)
-            assert_true(scene_add_sphere(&scene, (Sphere){vec3(1e12, 0, 0), 1.0, g}) >= 0);
-        scene.camera = camera_make(vec3(0, 0, 0), vec3(-s, -s, s), vec3(s, -s, s), vec3(-s, s, s));
-        assert_int_equal(scene_prepare(&scene), 0);
-        double radius = ppm_first_radius(&scene, 0.01);
-        print_message("    scale %g%s: first radius %.9g\n", s, k == 3 ? ", far objects" : "", radius);
-        assert_true(fabs(radius - 0.01 * 2.0 * 2.5 * s) <= 1e-12 * radius);
-        scene_free(&scene);
-    }
+    for (int k = 0; k < 3; k++)
+        for (ViewCase view = VIEW_PLAIN; view < VIEW_CASES; view++) {
+            double s = scales[k], radius = view_case_radius(view, s);
+            double expected = 0.01 * 4.0 * (view == VIEW_EMPTY ? sqrt(37.0) * s
+                                            : view == VIEW_AT_THE_WALL ? 1e-9 : 3 * s);
+            if (view == VIEW_AT_THE_WALL && k > 0)
+                continue; /* the eye's distance from the origin does not scale */
+            print_message("    scale %g, %s: first radius %.9g, expected %.9g\n", s, names[view],
+                          radius, expected);
+            assert_true(fabs(radius - expected) <= 1e-9 * expected);
+        }
 }
 
 /* Only photons on a surface facing the same way count: at a floor point next to a wall
