@@ -46,6 +46,7 @@
  * Photons per pass and the first radius scale with the image: per pass a fixed number of
  * photons per pixel, and the radius in proportion to a pixel's size.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -90,7 +91,9 @@ static void reference_for(const Options *options, const Scene *scene, Reference 
 static PpmSettings photon_settings(const PathSettings *path, const Scene *scene, int width,
                                    int height, int spp, int passes)
 {
-    PpmSettings ppm = {*path, (int)(PHOTONS_PER_PIXEL * width * height + 0.5),
+    /* No more photons per pass than a grid takes: a pass then never stores too many. */
+    double photons = fmin(PHOTONS_PER_PIXEL * width * height + 0.5, POINT_GRID_MAX_POINTS);
+    PpmSettings ppm = {*path, (int)photons,
                        ppm_first_radius(scene, FIRST_RADIUS_AT_800) * 800.0 / width, PPM_ALPHA,
                        spp, passes, 0.0};
     ppm.path.mirror_light = PHOTON_MIRROR_LIGHT;

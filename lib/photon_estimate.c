@@ -80,12 +80,14 @@ static int compare_doubles(const void *a, const void *b)
 }
 
 /* How deep the camera's view is: the median depth (along `axis`) of the first hits of
- * VIEW_RAYS^2 rays through the image plane, at least 1e-9 of the largest coordinate of
- * the eye and the hits; if no ray hits, the distance to the farthest lamp corner. */
-static double view_depth(const Scene *scene, Vec3 axis)
+ * VIEW_RAYS^2 rays through the image plane, at least 1e-9 of the image plane's depth
+ * and of the largest coordinate of the eye and the hits; if no ray hits, the distance to
+ * the farthest lamp corner. */
+static double view_depth(const Scene *scene, Vec3 axis, double plane_depth)
 {
     const Camera *c = &scene->camera;
-    double depths[VIEW_RAYS * VIEW_RAYS], size = vec3_max_abs(c->eye), farthest = 0.0;
+    double depths[VIEW_RAYS * VIEW_RAYS], size = fmax(vec3_max_abs(c->eye), plane_depth);
+    double farthest = 0.0;
     int n = 0;
     for (int i = 0; i < VIEW_RAYS * VIEW_RAYS; i++) {
         Hit hit;
@@ -116,7 +118,7 @@ double ppm_first_radius(const Scene *scene, double fraction)
         axis = vec3_neg(axis);
         plane_depth = -plane_depth;
     }
-    return fraction * vec3_length(c->right) * view_depth(scene, axis) / plane_depth;
+    return fraction * vec3_length(c->right) * view_depth(scene, axis, plane_depth) / plane_depth;
 }
 
 double ppm_radius(double first_radius, double alpha, int pass)

@@ -10,7 +10,7 @@
 /* R' = R + WIDENING (|p| + R) + UNDERFLOW, |p| the largest coordinate of the points: far
  * more than the rounding of a distance at such coordinates (a few 1e-16 of them), and
  * than the distances whose squares underflow to 0 (below 1e-161). */
-#define WIDENING 1e-9
+#define WIDENING 1e-12
 #define UNDERFLOW 1e-150
 
 /* The cube that holds p: floor(p / (2 R')) on each axis, as the doubles round. */
@@ -159,7 +159,7 @@ void point_grid_query_radius(const PointGrid *grid, Vec3 center, double radius, 
             visit_if_near(grid, i, center, radius2, visit, context);
         return;
     }
-    /* Every filed cube lies within 10^9 of the origin: a centre whose cube is farther,
+    /* Every filed cube lies within 10^12 of the origin: a centre whose cube is farther,
      * or not a number, has no point near it. */
     Vec3 cube = cube_of(center, grid->reach);
     if (!(fabs(cube.x) < 0x1p52 && fabs(cube.y) < 0x1p52 && fabs(cube.z) < 0x1p52))

@@ -193,8 +193,8 @@ static void test_oren_nayar_matches_shadow_rays(void **state)
  *   from the eye to the lamps gave 1e-16), or out of view to the side, change nothing;
  * - half the view empty (the wall only on its right): still the wall's depth;
  * - nothing in view: the farthest lamp corner's distance takes the depth's place;
- * - the eye 1e-12 from the wall, 1 from the origin: the depth is 1e-9 of that 1, not
- *   1e-12, so the radius stays far above the coordinates' rounding.
+ * - the eye 1e-12 from the wall: the depth is 1e-9 of the image plane's (1), not 1e-12,
+ *   so the radius stays far above the rounding of the plane's coordinates.
  * The plane's height (1) in place of its width (4) would give a quarter. */
 typedef enum { VIEW_PLAIN, VIEW_FAR_OBJECTS, VIEW_MOVED, VIEW_LAMPS_ABOUT_THE_EYE,
                VIEW_HALF_EMPTY, VIEW_EMPTY, VIEW_AT_THE_WALL, VIEW_CASES } ViewCase;
@@ -206,8 +206,7 @@ static double view_case_radius(ViewCase view, double s)
     Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(1, 1, 1)};
     Material grey = {.name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     int l = scene_add_material(&scene, lamp), g = scene_add_material(&scene, grey);
-    Vec3 at = view == VIEW_MOVED ? vec3(1e6 * s, -2e6 * s, 3e6 * s)
-              : view == VIEW_AT_THE_WALL ? vec3(1, 1, 1) : vec3(0, 0, 0);
+    Vec3 at = view == VIEW_MOVED ? vec3(1e6 * s, -2e6 * s, 3e6 * s) : vec3(0, 0, 0);
     double depth = view == VIEW_AT_THE_WALL ? 1e-12 : 3 * s, wide = view == VIEW_FAR_OBJECTS ? 1e6 : 20 * s;
     double left = view == VIEW_HALF_EMPTY ? 0.0 : -wide, z = view == VIEW_EMPTY ? -depth : depth;
     add_quad(&scene, vec3_add(at, vec3(left, -wide, z)), vec3_add(at, vec3(left, wide, z)),
@@ -244,7 +243,7 @@ static void test_first_radius_follows_the_view(void **state)
             double expected = 0.01 * 4.0 * (view == VIEW_EMPTY ? sqrt(37.0) * s
                                             : view == VIEW_AT_THE_WALL ? 1e-9 : 3 * s);
             if (view == VIEW_AT_THE_WALL && k > 0)
-                continue; /* the eye's distance from the origin does not scale */
+                continue; /* the wall's distance does not scale */
             print_message("    scale %g, %s: first radius %.9g, expected %.9g\n", s, names[view],
                           radius, expected);
             assert_true(fabs(radius - expected) <= 1e-9 * expected);
