@@ -434,28 +434,30 @@ typedef struct {
 } ReferencePlace;
 
 /* Make the temporary folder, if not yet made; from then on a signal that ends the
- * program ends it only once the folder is removed (leave_place). */
-static void make_place_temporary(ReferencePlace *place)
+ * program ends it only once the folder is removed (leave_place). Returns 0, or -1 with
+ * errno set. */
+static int make_place_temporary(ReferencePlace *place)
 {
     if (place->temporary[0])
-        return;
+        return 0;
     render_forward_signals(0);
-    if (make_temporary_folder(place->temporary, sizeof place->temporary) != 0) {
-        place->temporary[0] = '\0';
-        render_end_deferred();
-        cli_fail(1, "cannot make a temporary folder for the reference: %s", strerror(errno));
-    }
+    if (make_temporary_folder(place->temporary, sizeof place->temporary) == 0)
+        return 0;
+    int reason = errno;
+    place->temporary[0] = '\0';
+    render_end_deferred();
+    errno = reason;
+    return -1;
 }
 
 /* Remove the temporary folder, if made, then end the program if a signal that ends it
  * came meanwhile. */
 static void leave_place(ReferencePlace *place)
 {
-    if (place->temporary[0]) {
+    if (place->temporary[0])
         remove_temporary_folder(place->temporary, place->key_text);
-        place->temporary[0] = '\0';
-        render_end_deferred();
-    }
+    place->temporary[0] = '\0';
+    render_end_deferred();
 }
 
 /* Say that the cache cannot be written and why, and use a temporary folder instead. */
@@ -463,7 +465,8 @@ static void use_temporary_folder(ReferencePlace *place, const char *failed, int 
 {
     printf("reference cache %s: cannot write in %s: %s: rendering into a temporary folder, "
            "nothing is kept\n", place->cache, failed, strerror(reason));
-    make_place_temporary(place);
+    if (make_place_temporary(place) != 0)
+        cli_fail(1, "cannot make a temporary folder for the reference: %s", strerror(errno));
     snprintf(place->folder, sizeof place->folder, "%s", place->temporary);
 }
 
@@ -499,8 +502,8 @@ static void render_reference(ReferencePlace *place, char **argv, int argc,
         leave_place(place);
         cli_fail(130, "interrupted: stopped before rendering the reference");
     }
-    make_place_temporary(place);
-    if (strcmp(place->folder, place->temporary) != 0) {
+    /* Without a fallback folder the cache alone must take it. */
+    if (strcmp(place->folder, place->cache) == 0 && make_place_temporary(place) == 0) {
         argv[argc++] = "--fallback";
         argv[argc++] = place->temporary;
     }
@@ -512,7 +515,7 @@ static void render_reference(ReferencePlace *place, char **argv, int argc,
     if (exit_status == 0) {
         status = measure_load_reference(place->folder, identity, width, height, reference, why,
                                         sizeof why);
-        if (status == -1 && strcmp(place->folder, place->temporary) != 0)
+        if (status == -1 && place->temporary[0] && strcmp(place->folder, place->temporary) != 0)
             status = measure_load_reference(place->temporary, identity, width, height, reference,
                                             why, sizeof why);
     }

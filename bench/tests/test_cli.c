@@ -71,17 +71,75 @@ static void test_bad_flags(void **state)
     expect_failure("--size 0", "--size: expected a whole number from 8 to 16384, got '0'");
     expect_failure("--size 7", "--size: expected a whole number from 8 to 16384, got '7'");
     expect_failure("--size -3", "--size: expected a whole number");
-    expect_failure("--size abc", "--size: expected a whole number");
-    expect_failure("--size 1.5", "--size: expected a whole number");
-    expect_failure("--size 99999999999", "--size: expected a whole number");
+    expect_failure("--size abc", "--size: 'abc' is not a decimal number");
+    expect_failure("--size 1.5", "--size: '1.5' is not a whole number; expected a whole number "
+                                 "from 8 to 16384");
+    expect_failure("--size 99999999999", "--size: expected a whole number from 8 to 16384, "
+                                         "got '99999999999'");
     expect_failure("--size", "--size: missing value");
     expect_failure("--threads -1", "--threads: expected a whole number");
-    expect_failure("--depth nan", "--depth: expected a whole number");
+    expect_failure("--depth nan", "--depth: 'nan' is not a decimal number");
     expect_failure("--seed -4", "--seed: expected a whole number");
     expect_failure("--spp 4", "unknown option '--spp'"); /* chapter 1 takes no --spp */
     expect_failure("--bogus", "unknown option '--bogus'");
     expect_failure("--quiet=1", "--quiet takes no value");
 }
+
+/* Each number a flag may be given is refused with what is wrong with it: nothing, white
+ * space around it, a form strtod reads but the flags do not (hexadecimal, nan, inf, a
+ * lone sign), beyond a double either way (1e400; 1e-310, a subnormal, and 1e-400, which
+ * reads as 0), a fraction for a whole number; and a number in range but for its sign. */
+static void test_number_extremes(void **state)
+{
+    const char *cases[][2] = {
+        {"''", "--size: expected a whole number from 8 to 16384, got an empty word"},
+        {"'  16'", "--size: '  16' has white space in it"},
+        {"'16 '", "--size: '16 ' has white space in it"},
+        {"0x10", "--size: '0x10' is not a decimal number"},
+        {"0x1p4", "--size: '0x1p4' is not a decimal number"},
+        {"inf", "--size: 'inf' is not a decimal number"},
+        {"+", "--size: '+' is not a decimal number"},
+        {"1e400", "--size: '1e400' is too large for a double"},
+        {"1e-310", "--size: '1e-310' is too small to compute with (below 2.22507e-308"},
+        {"1e-400", "--size: '1e-400' is too small to compute with"},
+        {"16.5", "--size: '16.5' is not a whole number"},
+        {"-0", "--size: expected a whole number from 8 to 16384, got '-0'"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char args[200];
+        snprintf(args, sizeof args, "--size %s", cases[i][0]);
+        expect_failure(args, cases[i][1]);
+    }
+    char output[4096];
+    assert_int_equal(run("--size 1.6e1 --help", output, sizeof output), 0);
+}
+
+#if CHAPTER >= 7
+/* --rr (chapter 7's) takes a real number in (0, 1]: 1e-310 is in it, but a subnormal, so it is refused
+ * as too small to compute with, not as outside the range; 1e-300 is taken. */
+static void test_roulette_extremes(void **state)
+{
+    const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
+    const char *cases[][2] = {
+        {"1e-310", "--rr: '1e-310' is too small to compute with (below 2.22507e-308, the "
+                   "smallest double with all its digits); expected a number in (0, 1]"},
+        {"0", "--rr: expected a number in (0, 1], got '0'"},
+        {"-0", "--rr: expected a number in (0, 1], got '-0'"},
+        {"1.0000001", "--rr: expected a number in (0, 1], got '1.0000001'"},
+        {"nan", "--rr: 'nan' is not a decimal number"},
+        {"1e-300", NULL},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char command[800], output[4096];
+        snprintf(command, sizeof command, "%s/ch07_final --rr %s --help 2>&1",
+                 directory, cases[i][0]);
+        int status = capture(command, output, sizeof output);
+        if (cases[i][1] ? status != 2 || !strstr(output, cases[i][1]) : status != 0)
+            fail_msg("--rr %s gave status %d and\n%s\nexpected %s", cases[i][0], status, output,
+                     cases[i][1] ? cases[i][1] : "the help");
+    }
+}
+#endif
 
 /* A flag's value may not be the next flag: "--out --help" would otherwise make a
  * directory called --help, and "--scene --quiet" start a full render. A value that does
@@ -331,6 +389,10 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bad_flags),
+        cmocka_unit_test(test_number_extremes),
+#if CHAPTER >= 7
+        cmocka_unit_test(test_roulette_extremes),
+#endif
         cmocka_unit_test(test_flag_value_is_not_a_flag),
         cmocka_unit_test(test_out_checked_first),
         cmocka_unit_test(test_standard_output_full),
