@@ -101,6 +101,17 @@ static void check_output_directory(const Options *options)
                  options->out, failed, strerror(errno));
 }
 
+/* The name of a light material of emission 0 0 0 that a shape is made of, or NULL. */
+static const char *dark_light(const Scene *scene)
+{
+    for (int i = 0; i < scene->triangle_count; i++) {
+        const Material *m = &scene->materials[scene->triangles[i].material];
+        if (m->kind == MATERIAL_LIGHT && !material_emits(m))
+            return m->name;
+    }
+    return NULL;
+}
+
 void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
                       Options *options, Scene *scene)
 {
@@ -119,6 +130,11 @@ void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed 
     if (need == NEEDS_POINT_LIGHT && scene->point_light_count == 0)
         cli_fail(2, "%s:%d: no point_light: %s needs one", options->scene, options->scene_lines,
                  cli_program);
+    const char *dark = dark_light(scene);
+    if (need == NEEDS_AREA_LIGHT && scene->light_count == 0 && dark)
+        cli_fail(2, "%s:%d: no area light: material '%s' is a light of emission 0 0 0, which "
+                    "emits nothing (%s needs a light with a channel above 0)", options->scene,
+                 options->scene_lines, dark, cli_program);
     if (need == NEEDS_AREA_LIGHT && scene->light_count == 0)
         cli_fail(2, "%s:%d: no area light (a 'light' material on a triangle, quad, box or "
                     "tetrahedron): %s needs one", options->scene, options->scene_lines,

@@ -8,6 +8,7 @@
  *
  * The programs are found in $CHAPTER_DIR (the Makefile sets it to its build directory).
  */
+#define _GNU_SOURCE /* unshare */
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -17,6 +18,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sched.h>
+#include <sys/mount.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -334,6 +337,71 @@ static void test_unwritable_cache(void **state)
     assert_non_null(strstr(output, "spp, rendered in"));
 }
 
+/* A lamp of emission 0 0 0 is read (a light that emits nothing), but chapter 2, which
+ * needs an area light, names it as the cause: not "no area light" alone. */
+static void test_dark_lamp_named(void **state)
+{
+    char path[600], command[1400], output[16384];
+    snprintf(path, sizeof path, "%s/dark.scene", out_dir);
+    snprintf(command, sizeof command, "sed 's/^material lamp .*/material lamp light 0 0 0/' "
+             "scenes/room.scene > %s", path);
+    assert_int_equal(system(command), 0);
+    assert_int_equal(run_chapter2("", path, output, sizeof output), 2);
+    if (!strstr(output, "no area light: material 'lamp' is a light of emission 0 0 0, which "
+                        "emits nothing"))
+        fail_msg("%s", output);
+}
+
+/* A cache on a full disk (a tmpfs of 12 KiB, in a mount namespace of this test's own:
+ * skipped where that is not allowed): the reference program says why it cannot write
+ * there, keeps the reference in a temporary folder for this run, the program does its
+ * work, and the temporary folder is gone after it. */
+static void test_full_cache(void **state)
+{
+    const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
+    char folder[600], command[2400], log[700], temporary[700], output[16384];
+    snprintf(folder, sizeof folder, "%s/fullcache", out_dir);
+    snprintf(log, sizeof log, "%s/log", folder);
+    snprintf(temporary, sizeof temporary, "%s/tmp", folder);
+    snprintf(command, sizeof command, "mkdir -p %s/references %s && cp %s/ch02_monte_carlo "
+             "%s/reference %s/", folder, temporary, directory, directory, folder);
+    assert_int_equal(system(command), 0);
+    fflush(NULL);
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        char cache[700], program[700];
+        snprintf(cache, sizeof cache, "%s/references", folder);
+        snprintf(program, sizeof program, "%s/ch02_monte_carlo", folder);
+        if (unshare(CLONE_NEWNS) != 0 || mount("none", "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0 ||
+            mount("none", cache, "tmpfs", 0, "size=12k") != 0)
+            _exit(77);
+        setenv("TMPDIR", temporary, 1);
+        if (!freopen(log, "w", stdout) || dup2(STDOUT_FILENO, STDERR_FILENO) < 0)
+            _exit(78);
+        execl(program, program, "--quiet", "--size", "64", "--spp", "1", "--runs", "1",
+              "--reference-spp", "8", "--out", folder, (char *)NULL);
+        _exit(79);
+    }
+    int status;
+    assert_int_equal(waitpid(child, &status, 0), child);
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 77) {
+        print_message("    skipped: this test may not mount a tmpfs (it needs root)\n");
+        skip();
+    }
+    char left[4096];
+    snprintf(command, sizeof command, "ls -A %s", temporary);
+    capture(command, left, sizeof left);
+    snprintf(command, sizeof command, "grep -v '^wrote\\|^ch02_\\|^panel' %s", log);
+    capture(command, output, sizeof output);
+    print_message("    %s    temporary folders left: %s\n", output, left[0] ? left : "none\n");
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    assert_non_null(strstr(output, "cannot write the reference into"));
+    assert_non_null(strstr(output, "No space left on device: kept in"));
+    assert_non_null(strstr(output, "spp, rendered in"));
+    assert_string_equal(left, "");
+}
+
 /* A FIFO can be read only once: the program must not wait to read it again. */
 static void test_scene_from_a_fifo(void **state)
 {
@@ -404,6 +472,8 @@ int main(void)
         cmocka_unit_test(test_piped_scenes_have_their_own_references),
         cmocka_unit_test(test_scene_from_a_fifo),
         cmocka_unit_test(test_unwritable_cache),
+        cmocka_unit_test(test_full_cache),
+        cmocka_unit_test(test_dark_lamp_named),
 #endif
     };
     int failed = cmocka_run_group_tests(tests, NULL, NULL);
