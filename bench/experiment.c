@@ -391,14 +391,13 @@ static int run_reference_program(char *const argv[], char *failure, size_t size)
     return status;
 }
 
-/* Hold the cache entry KEY: a lock on DIR/KEY.lock, waited for while another program
- * renders the same entry, so that it is rendered once; released when the returned
- * descriptor is closed, or when the program ends. Returns -1 with errno set when the
- * lock cannot be made, -2 when SIGINT stopped the wait. */
-static int lock_entry(const char *directory, const char *key_text)
+/* Hold the cache entry KEY: a lock on DIR/KEY.lock (its path in path[size]), waited for
+ * while another program renders the same entry, so that it is rendered once; released
+ * when the returned descriptor is closed, or when the program ends. Returns -1 with
+ * errno set when the lock cannot be made, -2 when SIGINT stopped the wait. */
+static int lock_entry(const char *directory, const char *key_text, char *path, size_t size)
 {
-    char path[4300];
-    snprintf(path, sizeof path, "%s/%s.lock", directory, key_text);
+    snprintf(path, size, "%s/%s.lock", directory, key_text);
     int fd = open(path, O_RDWR | O_CREAT, 0666);
     if (fd < 0)
         return -1;
@@ -476,11 +475,13 @@ static void leave_place(ReferencePlace *place)
     render_end_deferred();
 }
 
-/* Say that the cache cannot be written and why, and use a temporary folder instead. */
-static void use_temporary_folder(ReferencePlace *place, const char *failed, int reason)
+/* Say that the cache cannot be written and why ("cannot write in FOLDER" or "cannot make
+ * FILE", and errno's reason), and use a temporary folder instead. */
+static void use_temporary_folder(ReferencePlace *place, const char *what, const char *path,
+                                 int reason)
 {
-    printf("reference cache %s: cannot write in %s: %s: rendering into a temporary folder, "
-           "nothing is kept\n", place->cache, failed, strerror(reason));
+    printf("reference cache %s: %s %s: %s: rendering into a temporary folder, nothing is "
+           "kept\n", place->cache, what, path, strerror(reason));
     if (make_place_temporary(place) != 0)
         cli_fail(1, "cannot make a temporary folder for the reference: %s", strerror(errno));
     snprintf(place->folder, sizeof place->folder, "%s", place->temporary);
@@ -492,11 +493,12 @@ static void open_reference_place(ReferencePlace *place)
     char failed[4096];
     snprintf(place->folder, sizeof place->folder, "%s", place->cache);
     if (writable_directory(place->cache, failed, sizeof failed) != 0)
-        use_temporary_folder(place, failed, errno);
-    place->lock = lock_entry(place->folder, place->key_text);
+        use_temporary_folder(place, "cannot write in", failed, errno);
+    char lock_path[4300];
+    place->lock = lock_entry(place->folder, place->key_text, lock_path, sizeof lock_path);
     if (place->lock == -1 && !place->temporary[0]) {
-        use_temporary_folder(place, place->cache, errno);
-        place->lock = lock_entry(place->folder, place->key_text);
+        use_temporary_folder(place, "cannot make", lock_path, errno);
+        place->lock = lock_entry(place->folder, place->key_text, lock_path, sizeof lock_path);
     }
     int reason = errno;
     if (place->lock < 0)
@@ -504,8 +506,7 @@ static void open_reference_place(ReferencePlace *place)
     if (place->lock == -2)
         cli_fail(130, "interrupted while waiting for another program to render the reference");
     if (place->lock < 0)
-        cli_fail(1, "cannot lock the reference's cache entry in %s: %s", place->folder,
-                 strerror(reason));
+        cli_fail(1, "cannot lock %s: %s", lock_path, strerror(reason));
 }
 
 /* Render the reference into place->folder (the program falling back to the temporary

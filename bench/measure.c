@@ -265,11 +265,12 @@ static int read_whole_file(const char *path, size_t limit, char **bytes, size_t 
 /* The largest image file the cache reads: 16384 x 16384 pixels of three floats. */
 #define ENTRY_IMAGE_MAX ((size_t)12 << 28 | 4096)
 
-/* A file's length and FNV-1a checksum; 0, or -1 with errno set. */
-static int file_fingerprint(const char *path, size_t *length, uint64_t *checksum)
+/* A file's length and FNV-1a checksum, if it is at most `limit` bytes long (not read
+ * when it is longer); 0, or -1 with errno set. */
+static int file_fingerprint(const char *path, size_t limit, size_t *length, uint64_t *checksum)
 {
     char *bytes;
-    if (read_whole_file(path, ENTRY_IMAGE_MAX, &bytes, length) != 0)
+    if (read_whole_file(path, limit, &bytes, length) != 0)
         return -1;
     *checksum = measure_hash(MEASURE_HASH_START, bytes, *length);
     free(bytes);
@@ -362,23 +363,29 @@ static int is_wanted(const Description *d, const ReferenceIdentity *wanted, char
     return 0;
 }
 
-/* Whether the file at `path` is the one the description records; if not, why. */
+/* Whether the file at `path` is the one the description records; if not, why. A file
+ * longer than recorded is not read. */
 static int is_recorded_file(const char *path, size_t length, unsigned long long checksum,
                             char *why, size_t why_size)
 {
     size_t actual_length;
     uint64_t actual;
     const char *name = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
-    if (file_fingerprint(path, &actual_length, &actual) != 0)
-        snprintf(why, why_size, "%s cannot be read: %s", name,
-                 errno == EINVAL ? "not a regular file" : strerror(errno));
-    else if (actual_length != length)
+    if (file_fingerprint(path, length, &actual_length, &actual) != 0) {
+        if (errno == EFBIG)
+            snprintf(why, why_size, "%s is longer than the %zu bytes it was written with", name,
+                     length);
+        else
+            snprintf(why, why_size, "%s cannot be read: %s", name,
+                     errno == EINVAL ? "not a regular file" : strerror(errno));
+    } else if (actual_length != length) {
         snprintf(why, why_size, "%s has %zu bytes, not the %zu it was written with", name,
                  actual_length, length);
-    else if (actual != checksum)
+    } else if (actual != checksum) {
         snprintf(why, why_size, "%s does not match its checksum: damaged", name);
-    else
+    } else {
         return 1;
+    }
     return 0;
 }
 
@@ -512,8 +519,9 @@ static int save_files(const EntryPaths *paths, const ReferenceIdentity *identity
     uint64_t image_checksum, std_error_checksum;
     if (image_write_pfm(&reference->image, paths->image) != 0 ||
         image_write_pfm(&reference->std_error, paths->std_error) != 0 ||
-        file_fingerprint(paths->image, &d.image_length, &image_checksum) != 0 ||
-        file_fingerprint(paths->std_error, &d.std_error_length, &std_error_checksum) != 0)
+        file_fingerprint(paths->image, ENTRY_IMAGE_MAX, &d.image_length, &image_checksum) != 0 ||
+        file_fingerprint(paths->std_error, ENTRY_IMAGE_MAX, &d.std_error_length,
+                         &std_error_checksum) != 0)
         return undo_save(paths);
     d.image_checksum = image_checksum;
     d.std_error_checksum = std_error_checksum;

@@ -339,6 +339,48 @@ static void test_signals_to_the_program_alone_stop_the_reference(void **state)
     setenv("CHAPTER_DIR", programs_dir, 1);
     free((void *)programs_dir);
 }
+/* A program waiting for another to render the reference both need (the lock on its
+ * cache entry) is stopped by SIGINT sent to it alone: status 130 within 30 seconds, and
+ * it says what it was waiting for, rather than waiting on until the other is done. */
+static void test_sigint_while_waiting_for_another_programs_reference(void **state)
+{
+    char arguments[2][800], log[2][700];
+    unsigned seed = (unsigned)time(NULL) ^ (unsigned)getpid();
+    pid_t children[2];
+    for (int i = 0; i < 2; i++) {
+        snprintf(log[i], sizeof log[i], "%s/waiting-%d.log", out_dir, i);
+        snprintf(arguments[i], sizeof arguments[i],
+                 "--quiet --size 64 --spp 1 --runs 1 --reference-spp 1000000 --seed %u "
+                 "--out %s/waiting-%d", seed, out_dir, i);
+    }
+    children[0] = start("ch02_monte_carlo", arguments[0], log[0]);
+    int started = 0;
+    for (int tries = 0; tries < 200 && !started; tries++) {
+        sleep_seconds(0.05);
+        started = children_of(children[0]);
+    }
+    assert_true(started);
+    children[1] = start("ch02_monte_carlo", arguments[1], log[1]);
+    sleep_seconds(1.0);
+    int waiting = !children_of(children[1]);
+    kill(children[1], SIGINT);
+    int status = wait_at_most(children[1], 30.0);
+    kill(children[0], SIGTERM);
+    wait_for(children[0]);
+    FILE *file = fopen(log[1], "r");
+    assert_non_null(file);
+    char said[4096] = "";
+    size_t n = fread(said, 1, sizeof said - 1, file);
+    said[n] = '\0';
+    fclose(file);
+    print_message("    SIGINT to the program waiting for the other's reference: status %d: %s",
+                  status, said);
+    assert_true(waiting);
+    assert_int_equal(status, 130);
+    assert_non_null(strstr(said, "interrupted while waiting for another program to render the "
+                                 "reference"));
+}
+
 /* Two programs needing the same new reference at once: one renders it, the other reads
  * it from the cache. */
 static void test_one_reference_for_two_programs(void **state)
@@ -385,7 +427,7 @@ static void test_sigint_saves_the_photon_passes(void **state)
     snprintf(path_panel, sizeof path_panel, "%s/ch08_path.pfm", folder);
     empty_folder(folder);
     snprintf(arguments, sizeof arguments,
-             "--quiet --size 32 --spp 128 --reference-spp 8 --seed 5 --out %s", folder);
+             "--quiet --size 32 --spp 64 --reference-spp 8 --seed 5 --out %s", folder);
     double began = seconds_now();
     pid_t child = start("ch08_photon_map", arguments, log);
     while (access(path_panel, F_OK) != 0 && seconds_now() - began < 120.0)
@@ -429,6 +471,7 @@ int main(void)
 #if CHAPTER >= 2
         cmocka_unit_test(test_signals_to_the_program_alone_stop_the_reference),
         cmocka_unit_test(test_one_reference_for_two_programs),
+        cmocka_unit_test(test_sigint_while_waiting_for_another_programs_reference),
 #endif
 #if CHAPTER >= 8
         cmocka_unit_test(test_sigint_saves_the_photon_passes),

@@ -3,8 +3,8 @@
  *
  * A round trip through a scratch folder; then every way an entry can be wrong, each of
  * which must make the load refuse it (-2, one line saying why, an empty Reference):
- * every single bit of each of its three files flipped in turn, each file cut short or
- * missing, another key's or another scene's entry or other settings under this key,
+ * every single bit of each of its three files flipped in turn, each file cut short,
+ * grown or missing, another key's or another scene's entry or other settings under this key,
  * values that no render gives in an entry whose checksums are right, a FIFO in a file's
  * place (refused without waiting for a writer). A save stopped by SIGTERM or SIGHUP at
  * random moments leaves the whole entry or nothing, never KEY.pfm alone.
@@ -208,11 +208,12 @@ static void test_every_flipped_bit_is_refused(void **state)
     measure_reference_free(&loaded);
 }
 
-/* Each file cut short (to nothing, to half, by its last byte), or missing. */
-static void test_cut_or_missing_files_are_refused(void **state)
+/* Each file cut short (to nothing, to half, by its last byte), grown by a byte, or
+ * missing. */
+static void test_cut_grown_or_missing_files_are_refused(void **state)
 {
     for (int f = 0; f < 3; f++) {
-        for (int cut = 0; cut < 4; cut++) {
+        for (int cut = 0; cut < 5; cut++) {
             save_sample();
             struct stat status;
             assert_int_equal(stat(in_scratch(ENTRY_FILES[f]), &status), 0);
@@ -222,13 +223,19 @@ static void test_cut_or_missing_files_are_refused(void **state)
                 assert_int_equal(truncate(in_scratch(ENTRY_FILES[f]), lengths[cut]), 0);
                 snprintf(what, sizeof what, "%s cut to %lld bytes", ENTRY_FILES[f],
                          (long long)lengths[cut]);
+            } else if (cut == 3) {
+                FILE *file = fopen(in_scratch(ENTRY_FILES[f]), "ab");
+                assert_non_null(file);
+                fputc('\n', file);
+                assert_int_equal(fclose(file), 0);
+                snprintf(what, sizeof what, "%s grown by a byte", ENTRY_FILES[f]);
             } else {
                 assert_int_equal(remove(in_scratch(ENTRY_FILES[f])), 0);
                 snprintf(what, sizeof what, "%s removed", ENTRY_FILES[f]);
             }
             Reference loaded;
             /* Without its description the entry is not there at all. */
-            assert_int_equal(load(what, &loaded), f == 2 && cut == 3 ? -1 : -2);
+            assert_int_equal(load(what, &loaded), f == 2 && cut == 4 ? -1 : -2);
         }
     }
 }
@@ -442,7 +449,7 @@ int main(void)
         SCRATCH(test_round_trip),
         SCRATCH(test_missing_entry),
         SCRATCH(test_every_flipped_bit_is_refused),
-        SCRATCH(test_cut_or_missing_files_are_refused),
+        SCRATCH(test_cut_grown_or_missing_files_are_refused),
         SCRATCH(test_other_entries_are_refused),
         SCRATCH(test_impossible_values_are_refused),
         SCRATCH(test_fifo_in_a_files_place_is_refused),
