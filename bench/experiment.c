@@ -604,6 +604,7 @@ void experiment_path_reference(const Options *options, const Scene *scene,
     if (status != 0)
         render_reference(&place, argv, argc, &identity, width, height, reference);
     close(place.lock);
+    leave_place(&place);
     printf("reference: %s, %.0f spp, %s %.1f s; its own standard error (RMS) %.5f\n",
            description, reference->spp, reference->cached ? "cached, rendered in" : "rendered in",
            reference->seconds, reference->noise);

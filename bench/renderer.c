@@ -96,7 +96,7 @@ void render_forward_signals(pid_t child)
 {
     deferring = 1;
     child_pid = child;
-    if (interrupt_requested)
+    if (child > 0 && interrupt_requested)
         kill(child, SIGINT);
 }
 

@@ -81,7 +81,8 @@ void render_hold_signals(int hold);
 /* A child process renders for this program (the reference renderer): from now on
  * SIGINT, SIGTERM and SIGHUP are passed on to it (a second ending one as SIGKILL), and
  * one that ends this program does so only at render_end_deferred, once the child has
- * ended and the caller has cleaned up. A SIGINT that came before is passed on now. */
+ * ended and the caller has cleaned up. A SIGINT that came before is passed on now.
+ * child 0: no child yet, only the deferral (while a temporary folder exists). */
 void render_forward_signals(pid_t child);
 
 /* Wait for that child: its exit status, 128 + the signal that ended it, or -1 if it
