@@ -112,13 +112,16 @@ static void describe_ppm(const PpmSettings *ppm, const PpmResult *result, char *
              ppm->radius, result->radius);
 }
 
-/* Render the photon version, or exit as experiment_render does. */
-static void render_ppm(const Scene *scene, const RenderSettings *settings, const PpmSettings *ppm,
-                       PpmResult *result)
+/* Render the photon version, or exit as experiment_render does. Interrupted, the panel
+ * `name` (if not NULL) is saved with the passes completed, if there is one. */
+static void render_ppm(const Options *options, const char *name, const Scene *scene,
+                       const RenderSettings *settings, const PpmSettings *ppm, PpmResult *result)
 {
     render_install_interrupt();
     if (ppm_render(scene, settings, ppm, result) != 0)
         cli_fail(1, "out of memory rendering %d x %d with photons", settings->image.width, settings->image.height);
+    if (name && result->render.interrupted)
+        experiment_write_panel(options, name, &result->render);
     experiment_exit_if_interrupted(&result->render, NULL);
 }
 
@@ -255,7 +258,7 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
     settings.label = "photon map";
     settings.image.sampling = PIXEL_PROGRESSIVE; /* stratified over all passes */
     PpmResult photons;
-    render_ppm(scene, &settings, &ppm, &photons);
+    render_ppm(options, "ch08_photon_map", scene, &settings, &ppm, &photons);
     experiment_write_image(options, "ch08_photon_map", &photons.render.image, PANEL_EXPOSURE);
     describe_ppm(&ppm, &photons, text, sizeof text);
     rows[1] = experiment_row("ch08_photon_map", text, &photons.render);
@@ -433,7 +436,7 @@ static void measure_photons(const Options *small, const Scene *scene, const Refe
         RenderSettings settings = seeded_settings(small, scene, k, ppm->spp);
         settings.image.sampling = PIXEL_PROGRESSIVE;
         PpmResult result;
-        render_ppm(scene, &settings, ppm, &result);
+        render_ppm(small, NULL, scene, &settings, ppm, &result);
         seeds_add(&seeds, &result.render.image, result.render.seconds, result.cpu_seconds,
                   &references[0]);
         ppm_result_free(&result);
