@@ -52,14 +52,15 @@ static int render_reference(const char *text, const Scene *scene, uint64_t seed,
         return -1;
     snprintf(path, sizeof path, "%s/scene", folder);
     FILE *file = fopen(path, "w");
-    if (!file || fputs(text, file) < 0 || fclose(file) != 0)
-        return -1;
+    int written = file && fputs(text, file) >= 0;
+    if (file && fclose(file) != 0)
+        written = 0;
     const char *programs = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
-    snprintf(command, sizeof command, "%s/reference --quiet --scene %s --size 24 --reference-spp 64 "
-             "--depth 64 --seed %llu --out %s --key 1", programs, path, (unsigned long long)seed,
-             folder);
-    int status = system(command) == 0 ? read_images(folder, out) : -1;
-    snprintf(command, sizeof command, "rm -rf %s", folder);
+    snprintf(command, sizeof command, "'%s/reference' --quiet --scene '%s' --size 24 "
+             "--reference-spp 64 --depth 64 --seed %llu --out '%s' --key 1", programs, path,
+             (unsigned long long)seed, folder);
+    int status = written && system(command) == 0 ? read_images(folder, out) : -1;
+    snprintf(command, sizeof command, "rm -rf '%s'", folder);
     if (system(command) != 0)
         status = -1;
     return status;
