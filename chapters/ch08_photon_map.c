@@ -46,6 +46,7 @@
  * Photons per pass and the first radius scale with the image: per pass a fixed number of
  * photons per pixel, and the radius in proportion to a pixel's size.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -56,10 +57,11 @@
 #include "ppm.h"
 
 /* The photon version's settings, for an image 800 pixels wide (they scale: see above);
- * the first radius as a fraction of the view's width at the lights (ppm_first_radius:
- * 15.6 in the room, so about 0.05 there). docs/chapter8.md: how they were chosen. */
+ * the first radius as a fraction of the view's width at the depth the camera sees
+ * (ppm_first_radius: 14.8 in the room, so about 0.05 there). docs/chapter8.md: how they
+ * were chosen. */
 #define PHOTONS_PER_PIXEL 0.5
-#define FIRST_RADIUS_AT_800 0.0032
+#define FIRST_RADIUS_AT_800 0.0034
 #define PPM_SPP_PER_PASS 8
 #define MAX_PASSES 100000
 
@@ -89,7 +91,9 @@ static void reference_for(const Options *options, const Scene *scene, Reference 
 static PpmSettings photon_settings(const PathSettings *path, const Scene *scene, int width,
                                    int height, int spp, int passes)
 {
-    PpmSettings ppm = {*path, (int)(PHOTONS_PER_PIXEL * width * height + 0.5),
+    /* No more photons per pass than a grid takes: a pass then never stores too many. */
+    double photons = fmin(PHOTONS_PER_PIXEL * width * height + 0.5, POINT_GRID_MAX_POINTS);
+    PpmSettings ppm = {*path, (int)photons,
                        ppm_first_radius(scene, FIRST_RADIUS_AT_800) * 800.0 / width, PPM_ALPHA,
                        spp, passes, 0.0};
     ppm.path.mirror_light = PHOTON_MIRROR_LIGHT;
