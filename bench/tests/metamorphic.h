@@ -262,7 +262,8 @@ static inline Verdict judge_statistical(const Rendering *a, const Rendering *b, 
     }
     double level = tests > 0 ? -expm1(log1p(-METAMORPHIC_LEVEL) / tests) : METAMORPHIC_LEVEL;
     int independent = a->independent && b->independent;
-    double mean_z = (sum_a - sum_b) / sqrt(var_a + var_b);
+    double mean_z = var_a + var_b > 0.0 ? (sum_a - sum_b) / sqrt(var_a + var_b)
+                                        : (sum_a == sum_b ? 0.0 : INFINITY);
     double blocks_p = independent ? block_chi_square_p(a, b, factor) : 1.0;
     Verdict v = {smallest_p >= level && (!independent || fabs(mean_z) <= MEAN_SIGMAS) &&
                  blocks_p >= METAMORPHIC_LEVEL, ""};
