@@ -248,13 +248,13 @@ typedef struct {
     double entry; /* where the ray enters its box */
 } StackEntry;
 
-/* Both queries: any_hit stops at the first hit found. */
+/* Both queries: any_hit stops at the first hit found. A non-finite ray hits nothing. */
 static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int any_hit)
 {
     BoxRay r = box_ray(ray);
     StackEntry stack[BVH_MAX_DEPTH + 1];
     int depth = 0, nearest = -1;
-    if (bvh->node_count > 0)
+    if (bvh->node_count > 0 && vec3_is_finite(ray.origin) && vec3_is_finite(ray.dir))
         stack[depth++] = (StackEntry){0, box_entry(&bvh->nodes[0], &r, *tmax)};
     while (depth > 0) {
         StackEntry e = stack[--depth];

@@ -230,10 +230,11 @@ static double primitive_intersect(const WideBvh *wide, BvhPrimitives p, int entr
     return sphere_intersect(&p.spheres[index - p.triangle_count], ray, 0.0, tmax);
 }
 
-/* Both queries: any_hit stops at the first hit found. */
+/* Both queries: any_hit stops at the first hit found. A non-finite ray hits nothing (its
+ * slab tests, all NaN, would rule out no child slot, not even an empty one). */
 static int traverse(const WideBvh *wide, BvhPrimitives p, Ray ray, double *tmax, int any_hit)
 {
-    if (wide->node_count == 0)
+    if (wide->node_count == 0 || !vec3_is_finite(ray.origin) || !vec3_is_finite(ray.dir))
         return -1;
     BoxRay r;
     box_ray_axis(&r, 0, ray.origin.x, ray.dir.x, wide->centre[0], wide->scale);
