@@ -1,6 +1,8 @@
 /* mesh.c (bench, chapter 9): the torus knot. See mesh.h. */
 #include "mesh.h"
 
+#include "frame.h"
+
 /* The knot's curve at parameter t, in units of `size`, in the plane x = 0. */
 static Vec3 knot_point(double t)
 {

@@ -1,17 +1,9 @@
 /* diffuse.c (chapter 2): the diffuse materials in world space. See diffuse.h. */
 #include "diffuse.h"
 
+#include "frame.h"
 #include "hemisphere.h"
 #include "lambert.h"
-#if CHAPTER >= 5
-#include "oren_nayar.h"
-
-/* A world direction in the local frame (t, b, n). */
-static Vec3 to_local(Vec3 w, Vec3 t, Vec3 b, Vec3 n)
-{
-    return vec3(vec3_dot(w, t), vec3_dot(w, b), vec3_dot(w, n));
-}
-#endif
 
 Vec3 diffuse_brdf(const Material *m, Vec3 n, Vec3 wi, Vec3 wo)
 {
@@ -19,7 +11,7 @@ Vec3 diffuse_brdf(const Material *m, Vec3 n, Vec3 wi, Vec3 wo)
     if (m->kind == MATERIAL_OREN_NAYAR) {
         Vec3 t, b;
         vec3_basis(n, &t, &b);
-        return oren_nayar_brdf(m->reflectance, m->sigma, to_local(wi, t, b, n), to_local(wo, t, b, n));
+        return oren_nayar_brdf(m->reflectance, m->sigma, vec3_to_local(wi, t, b, n), vec3_to_local(wo, t, b, n));
     }
 #endif
     return lambert_brdf(m->reflectance);
@@ -33,12 +25,12 @@ Vec3 diffuse_sample(const Material *m, Vec3 n, Vec3 wo, double u1, double u2, Ve
     *wi = vec3_from_local(local, t, b, n);
 #if CHAPTER >= 5
     if (m->kind == MATERIAL_OREN_NAYAR)
-        return vec3_scale(m->reflectance, oren_nayar_factor(m->sigma, local, to_local(wo, t, b, n)));
+        return vec3_scale(m->reflectance, oren_nayar_factor(m->sigma, local, vec3_to_local(wo, t, b, n)));
 #endif
     return m->reflectance;
 }
 
 double diffuse_pdf(Vec3 n, Vec3 wi)
 {
-    return fmax(0.0, vec3_dot(n, wi)) / PI;
+    return hemisphere_pdf_cosine(vec3(0, 0, vec3_dot(n, wi)));
 }

@@ -9,6 +9,9 @@
 #define DIFFUSE_H
 
 #include "material.h"
+#if CHAPTER >= 5
+#include "oren_nayar.h"
+#endif
 
 /* f(wi, wo) at a surface with unit normal n facing wo; wi and wo are unit directions
  * away from the surface. */

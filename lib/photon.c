@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "area_light.h"
+#include "frame.h"
 #include "hemisphere.h"
 
 PhotonRay photon_emit(const Scene *scene, int emitted, double u_select, double u1, double u2,

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "diffuse.h"
+#include "frame.h"
 
 /* Lambert's f is the same for every photon, so it multiplies their summed power once. */
 typedef struct {

@@ -1,20 +1,22 @@
 /* render.h (chapter 1): the image as a Monte Carlo estimate (report §3.3).
  *
  * A pixel's value is the mean of spp samples. Sample s of pixel p traces one camera ray
- * and asks an estimator for the radiance arriving along it; the estimator draws from
- * the sample's own generator, rng_for_sample(seed, p, s), and counts the rays it
- * traces. The estimator is a function, so one loop serves every estimator; Whitted's
- * (whitted.h) is the first.
+ * and asks an estimator for the radiance arriving along it, counting the rays it
+ * traces; from chapter 2 on, the estimator draws from the sample's own generator,
+ * rng_for_sample(seed, p, s). The estimator is a function, so one loop serves every
+ * estimator; Whitted's (whitted.h) is the first.
  */
 #ifndef RENDER_H
 #define RENDER_H
 
 #include <stdint.h>
 
-#include "rng.h"
 #include "scene.h"
 #if CHAPTER >= 2
 #include "pixel_sampling.h"
+#include "rng.h"
+#else
+typedef struct Rng Rng; /* chapter 2's random numbers (rng.h): Whitted's estimate draws none */
 #endif
 #if CHAPTER >= 8
 #include "sobol.h" /* PIXEL_PROGRESSIVE's positions */

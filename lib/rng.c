@@ -1,4 +1,4 @@
-/* rng.c (chapter 1): PCG32 seeded by SplitMix64. See rng.h. */
+/* rng.c (chapter 2): PCG32 seeded by SplitMix64. See rng.h. */
 #include "rng.h"
 
 /* SplitMix64's finaliser (Steele, Lea, Flood 2014): a bijective mix of 64 bits, so

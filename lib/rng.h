@@ -1,4 +1,4 @@
-/* rng.h (chapter 1): the random numbers behind every Monte Carlo estimate.
+/* rng.h (chapter 2): the random numbers behind every Monte Carlo estimate.
  *
  * PCG32 (O'Neill 2014): a 64-bit linear congruential state whose output is permuted by
  * an xorshift and a data-dependent rotation. Every sample of every pixel gets its own
@@ -10,7 +10,7 @@
 
 #include <stdint.h>
 
-typedef struct {
+typedef struct Rng {
     uint64_t state, increment;
 #if CHAPTER >= 7
     uint64_t strata_key;   /* 0, or the pixel's key for its stratified pairs (sobol.h) */

@@ -3,6 +3,7 @@
 #include "sphere_guide.h"
 
 #include "diffuse.h"
+#include "frame.h"
 #include "hemisphere.h"
 
 void sphere_guide_at(const Scene *scene, Vec3 x, Vec3 n, double strength, SphereGuide *guide)

@@ -2,7 +2,7 @@
  *
  * Doubles throughout: the renderer must work on scenes scaled far up and down, where
  * floats would lose the offsets that keep new rays off their surface (ray.h). Every
- * function is small and inline; vec.c holds the orthonormal basis.
+ * function is small and inline.
  */
 #ifndef VEC_H
 #define VEC_H
@@ -40,17 +40,5 @@ static inline double vec3_max_abs(Vec3 a) { return max2(fabs(a.x), max2(fabs(a.y
 static inline double vec3_max_component(Vec3 a) { return max2(a.x, max2(a.y, a.z)); }
 static inline double vec3_average(Vec3 a) { return (a.x + a.y + a.z) / 3.0; }
 static inline int vec3_is_finite(Vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
-
-/* Two unit vectors t, b that with the unit vector n form a right-handed orthonormal
- * basis (t, b, n): the local frame around a surface normal. */
-void vec3_basis(Vec3 n, Vec3 *t, Vec3 *b);
-
-/* Express a local direction (x along t, y along b, z along n) in world space. */
-static inline Vec3 vec3_from_local(Vec3 local, Vec3 t, Vec3 b, Vec3 n)
-{
-    return vec3(local.x * t.x + local.y * b.x + local.z * n.x,
-                local.x * t.y + local.y * b.y + local.z * n.y,
-                local.x * t.z + local.y * b.z + local.z * n.z);
-}
 
 #endif

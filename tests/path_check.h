@@ -24,7 +24,8 @@ static inline void estimate(const Scene *scene, Estimator path, const PathSettin
     RayCounts counts = {0, 0, 0};
     for (int i = 0; i < SAMPLES; i++) {
         Rng rng = rng_for_sample(seed, 0, (uint64_t)i);
-        Ray ray = {origin, random_unit_vector(&rng)};
+        double u1 = rng_uniform(&rng), u2 = rng_uniform(&rng);
+        Ray ray = {origin, unit_vector_from(u1, u2)};
         double value = vec3_average(path(scene, ray, &rng, settings, &counts));
         sum += value;
         sum_squares += value * value;

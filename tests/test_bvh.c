@@ -124,10 +124,10 @@ static int check_ray(const Scene *scene, Ray ray, double tmax, const char *what,
     return check_ray_within(scene, ray, tmax, 0.0, what, i);
 }
 
-static Vec3 random_point(Rng *rng, double extent)
+static Vec3 random_point(TestRandom *rng, double extent)
 {
-    return vec3(extent * (2 * rng_uniform(rng) - 1), extent * (2 * rng_uniform(rng) - 1),
-                extent * (2 * rng_uniform(rng) - 1));
+    return vec3(extent * (2 * test_uniform(rng) - 1), extent * (2 * test_uniform(rng) - 1),
+                extent * (2 * test_uniform(rng) - 1));
 }
 
 /* An empty scene with one grey material, whose number goes to *material. */
@@ -142,7 +142,7 @@ static Scene grey_scene(int *material)
 
 /* A triangle with a corner at `corner` and the other two `size` away from it in random
  * directions. */
-static void add_random_triangle(Scene *scene, Rng *rng, Vec3 corner, double size, int material)
+static void add_random_triangle(Scene *scene, TestRandom *rng, Vec3 corner, double size, int material)
 {
     Vec3 a = vec3_add_scaled(corner, random_unit_vector(rng), size);
     Vec3 b = vec3_add_scaled(corner, random_unit_vector(rng), size);
@@ -154,7 +154,7 @@ static void random_rays(const Scene *scene, Vec3 centre, double extent, int rays
 {
     int hits = 0;
     for (int i = 0; i < rays; i++) {
-        Rng rng = rng_for_sample(42, 0, (uint64_t)i);
+        TestRandom rng = test_random(42, 0, (uint64_t)i);
         Ray ray = {vec3_add(centre, random_point(&rng, extent)), random_unit_vector(&rng)};
         hits += check_ray(scene, ray, INFINITY, "random", i);
     }
@@ -184,7 +184,7 @@ static void test_room_bounce_and_shadow_rays(void **state)
     Scene scene = load_room();
     int shadowed = 0;
     for (int i = 0; i < 30000; i++) {
-        Rng rng = rng_for_sample(43, 0, (uint64_t)i);
+        TestRandom rng = test_random(43, 0, (uint64_t)i);
         Ray ray = {vec3_add(vec3(5, 0, 0), random_point(&rng, 4.0)), random_unit_vector(&rng)};
         for (int bounce = 0; bounce < 3; bounce++) {
             Hit hit;
@@ -193,7 +193,7 @@ static void test_room_bounce_and_shadow_rays(void **state)
                 break;
             Vec3 n = vec3_dot(hit.normal, ray.dir) > 0.0 ? vec3_neg(hit.normal) : hit.normal;
             Vec3 lamp = triangle_point(&scene.triangles[scene.light_triangles[i % scene.light_count]],
-                                       0.5 * rng_uniform(&rng), 0.5 * rng_uniform(&rng));
+                                       0.5 * test_uniform(&rng), 0.5 * test_uniform(&rng));
             double segment = fmax(vec3_max_abs(hit.point), vec3_max_abs(lamp));
             Vec3 start = ray_offset_origin(hit.point, n, vec3_sub(lamp, hit.point), segment);
             Vec3 end = ray_offset_origin(lamp, vec3(0, 0, -1), vec3_sub(hit.point, lamp), segment);
@@ -215,9 +215,9 @@ static void grazing_rays(const Scene *scene, double angle_min, double angle_max,
                          double tolerance)
 {
     for (int i = 0; i < 40000; i++) {
-        Rng rng = rng_for_sample(44, 0, (uint64_t)i);
-        const Triangle *tri = &scene->triangles[(int)(rng_uniform(&rng) * scene->triangle_count)];
-        double u = rng_uniform(&rng), v = rng_uniform(&rng);
+        TestRandom rng = test_random(44, 0, (uint64_t)i);
+        const Triangle *tri = &scene->triangles[(int)(test_uniform(&rng) * scene->triangle_count)];
+        double u = test_uniform(&rng), v = test_uniform(&rng);
         if (u + v > 1.0) {
             u = 1.0 - u;
             v = 1.0 - v;
@@ -230,12 +230,12 @@ static void grazing_rays(const Scene *scene, double angle_min, double angle_max,
             u = (double)(i / 12 % 2); /* at a vertex, a corner of the box */
         Vec3 point = triangle_point(tri, u, v);
         Vec3 t, b;
-        vec3_basis(tri->normal, &t, &b);
-        double phi = 2 * PI * rng_uniform(&rng);
-        double angle = angle_min * pow(angle_max / angle_min, rng_uniform(&rng));
+        test_frame(tri->normal, &t, &b);
+        double phi = 2 * PI * test_uniform(&rng);
+        double angle = angle_min * pow(angle_max / angle_min, test_uniform(&rng));
         Vec3 along = vec3_add(vec3_scale(t, cos(phi)), vec3_scale(b, sin(phi)));
         Vec3 dir = vec3_normalize(vec3_add_scaled(along, tri->normal, (i % 2 ? 1 : -1) * tan(angle)));
-        Ray arriving = {vec3_add_scaled(point, dir, -distance * rng_uniform(&rng)), dir};
+        Ray arriving = {vec3_add_scaled(point, dir, -distance * test_uniform(&rng)), dir};
         check_ray_within(scene, arriving, INFINITY, tolerance, "grazing", i);
         double corners = fmax(vec3_max_abs(tri->v0), fmax(vec3_max_abs(vec3_add(tri->v0, tri->e1)),
                                                           vec3_max_abs(vec3_add(tri->v0, tri->e2))));
@@ -266,7 +266,7 @@ static void test_small_triangles_from_afar(void **state)
 {
     int m;
     Scene scene = grey_scene(&m);
-    Rng rng = rng_for_sample(9, 9, 9);
+    TestRandom rng = test_random(9, 9, 9);
     for (int i = 0; i < 200; i++)
         add_random_triangle(&scene, &rng, random_point(&rng, 1.0), 0.01, m);
     assert_int_equal(scene_prepare(&scene), 0);
@@ -274,7 +274,7 @@ static void test_small_triangles_from_afar(void **state)
         const Triangle *tri = &scene.triangles[i % scene.triangle_count];
         Vec3 vertex = i % 3 == 0 ? tri->v0 : vec3_add(tri->v0, i % 3 == 1 ? tri->e1 : tri->e2);
         Vec3 dir = random_unit_vector(&rng);
-        Ray ray = {vec3_add_scaled(vertex, dir, -1000.0 * rng_uniform(&rng)), dir};
+        Ray ray = {vec3_add_scaled(vertex, dir, -1000.0 * test_uniform(&rng)), dir};
         check_ray(&scene, ray, INFINITY, "through a vertex", i);
     }
     grazing_rays(&scene, 1.0 / 300, 0.1, 1000.0, 0.0);
@@ -293,9 +293,9 @@ static void test_room_rays_along_axes(void **state)
         const Triangle *tri = &scene.triangles[i];
         Vec3 corner = vec3_add(tri->v0, tri->e1);
         for (int j = 0; j < 30; j++) {
-            Rng rng = rng_for_sample(45, (uint64_t)i, (uint64_t)j);
-            Vec3 origin = vec3(5 + 8 * (2 * rng_uniform(&rng) - 1), 7 * (2 * rng_uniform(&rng) - 1),
-                               6 * (2 * rng_uniform(&rng) - 1));
+            TestRandom rng = test_random(45, (uint64_t)i, (uint64_t)j);
+            Vec3 origin = vec3(5 + 8 * (2 * test_uniform(&rng) - 1), 7 * (2 * test_uniform(&rng) - 1),
+                               6 * (2 * test_uniform(&rng) - 1));
             if (j % 3 == 0)
                 origin.x = corner.x;
             if (j % 3 == 1)
@@ -318,11 +318,11 @@ static void random_soup(double scale)
 {
     int m;
     Scene scene = grey_scene(&m);
-    Rng rng = rng_for_sample(7, 7, 7);
+    TestRandom rng = test_random(7, 7, 7);
     Vec3 centre = vec3(3 * scale, -2 * scale, scale);
     for (int i = 0; i < 300; i++) {
         Vec3 corner = vec3_add(centre, vec3_scale(random_point(&rng, 4.0), scale));
-        double size = scale * pow(10.0, 2 * rng_uniform(&rng) - 1.5);
+        double size = scale * pow(10.0, 2 * test_uniform(&rng) - 1.5);
         add_random_triangle(&scene, &rng, corner, size, m);
         if (i % 10 == 0)
             scene_add_sphere(&scene, (Sphere){corner, 0.5 * size, m});
@@ -401,7 +401,7 @@ static void test_boxes_enclose_their_primitives(void **state)
     scene_free(&room);
     int m;
     Scene soup = grey_scene(&m);
-    Rng rng = rng_for_sample(8, 8, 8);
+    TestRandom rng = test_random(8, 8, 8);
     for (int i = 0; i < 2000; i++)
         add_random_triangle(&soup, &rng, random_point(&rng, 1e3), 1.0, m);
     assert_int_equal(scene_prepare(&soup), 0);

@@ -84,10 +84,10 @@ static void test_mapping(void **state)
 static void test_unit_directions(void **state)
 {
     Camera camera = make(&tilted);
-    Rng rng = rng_for_sample(1, 1, 1);
+    TestRandom rng = test_random(1, 1, 1);
     for (int row = 0; row < 60; row++)
         for (int col = 0; col < 120; col++) {
-            Ray ray = camera_ray(&camera, 120, 60, col, row, rng_uniform(&rng), rng_uniform(&rng));
+            Ray ray = camera_ray(&camera, 120, 60, col, row, test_uniform(&rng), test_uniform(&rng));
             assert_close(vec3_length(ray.dir), 1, 1e-15);
         }
 }

@@ -24,6 +24,7 @@
 #include "check.h"
 #include "chi_square.h"
 #include "diffuse.h"
+#include "frame.h"
 #if CHAPTER >= 5
 #include "oren_nayar.h"
 #endif
@@ -58,7 +59,7 @@ static Vec3 to_own_frame(Vec3 w, Vec3 t, Vec3 b, Vec3 n)
 }
 
 /* A random unit direction on n's side of the surface. */
-static Vec3 random_above(Rng *rng, Vec3 n)
+static Vec3 random_above(TestRandom *rng, Vec3 n)
 {
     Vec3 w = random_unit_vector(rng);
     return vec3_dot(w, n) < 0.0 ? vec3_neg(w) : w;
@@ -91,7 +92,7 @@ static void assert_colour_close(Vec3 a, Vec3 b, double relative)
 static void test_lambert_is_rho_over_pi_everywhere(void **state)
 {
     Material m = lambert_material();
-    Rng rng = rng_for_sample(1, 0, 0);
+    TestRandom rng = test_random(1, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng), wi = random_unit_vector(&rng);
         Vec3 wo = random_unit_vector(&rng);
@@ -107,7 +108,7 @@ static void test_lambert_is_rho_over_pi_everywhere(void **state)
 static void test_oren_nayar_matches_own_local_frame(void **state)
 {
     const double sigmas[] = {0.0, 0.2, 0.5, 1.0, 10.0};
-    Rng rng = rng_for_sample(2, 0, 0);
+    TestRandom rng = test_random(2, 0, 0);
     for (int k = 0; k < 5; k++) {
         Material m = rough_material(sigmas[k]);
         for (int i = 0; i < PAIRS / 5; i++) {
@@ -147,11 +148,11 @@ static void test_oren_nayar_value_by_hand_around_tilted_normal(void **state)
 static void test_oren_nayar_invariant_under_rotation_about_normal(void **state)
 {
     Material m = rough_material(0.7);
-    Rng rng = rng_for_sample(3, 0, 0);
+    TestRandom rng = test_random(3, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng);
         Vec3 wi = random_above(&rng, n), wo = random_above(&rng, n);
-        double phi = 2.0 * PI * rng_uniform(&rng);
+        double phi = 2.0 * PI * test_uniform(&rng);
         Vec3 turned = diffuse_brdf(&m, n, rotate_about(wi, n, phi), rotate_about(wo, n, phi));
         assert_colour_close(turned, diffuse_brdf(&m, n, wi, wo), RELATIVE);
     }
@@ -159,13 +160,13 @@ static void test_oren_nayar_invariant_under_rotation_about_normal(void **state)
 #endif
 
 /* The sample numbers of the next two tests: the extreme corners of [0, 1)^2 first. */
-static void sample_numbers(int i, Rng *rng, Vec3 *n, Vec3 *wo, double *u1, double *u2)
+static void sample_numbers(int i, TestRandom *rng, Vec3 *n, Vec3 *wo, double *u1, double *u2)
 {
     const double top = 1.0 - 0x1p-32;
     *n = i == 0 ? vec3(0, 0, -1) : random_unit_vector(rng);
     *wo = random_above(rng, *n);
-    *u1 = i < 4 ? (i & 1) * top : rng_uniform(rng);
-    *u2 = i < 4 ? (i >> 1) * top : rng_uniform(rng);
+    *u1 = i < 4 ? (i & 1) * top : test_uniform(rng);
+    *u2 = i < 4 ? (i >> 1) * top : test_uniform(rng);
 }
 
 /* A sample is a unit direction on n's side (never on or below the surface, even for the
@@ -174,7 +175,7 @@ static void sample_numbers(int i, Rng *rng, Vec3 *n, Vec3 *wo, double *u1, doubl
 static void test_sample_direction_and_weight(void **state)
 {
     Material lambert = lambert_material();
-    Rng rng = rng_for_sample(4, 0, 0);
+    TestRandom rng = test_random(4, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n, wo, wi;
         double u1, u2;
@@ -197,7 +198,7 @@ static void test_sample_direction_and_weight(void **state)
 static void test_oren_nayar_sample_weight(void **state)
 {
     Material lambert = lambert_material(), rough = rough_material(0.6);
-    Rng rng = rng_for_sample(4, 0, 0);
+    TestRandom rng = test_random(4, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n, wo, wi, wi_rough, t, b;
         double u1, u2;
@@ -235,10 +236,10 @@ static void test_pdf_integrates_to_one_and_matches_the_samples(void **state)
             integral += diffuse_pdf(n, w) * sin(theta) * (PI / STEPS) * (PI / STEPS);
         }
     Material lambert = lambert_material();
-    Rng rng = rng_for_sample(6, 0, 0);
+    TestRandom rng = test_random(6, 0, 0);
     double sum = 0.0, sum_squares = 0.0;
     for (int k = 0; k < PAIRS; k++) {
-        double u1 = rng_uniform(&rng), u2 = rng_uniform(&rng);
+        double u1 = test_uniform(&rng), u2 = test_uniform(&rng);
         Vec3 wi;
         diffuse_sample(&lambert, n, n, u1, u2, &wi);
         double cos_theta = vec3_dot(n, wi), ratio = cos_theta * cos_theta / diffuse_pdf(n, wi);
@@ -271,9 +272,9 @@ static double cosine_fit_p_value(Vec3 n, Vec3 axis, double *statistic, int *dof)
     Material m = lambert_material();
     Vec3 t, b, wi, wo = n;
     own_frame(axis, &t, &b);
-    Rng rng = rng_for_sample(5, 0, 0);
+    TestRandom rng = test_random(5, 0, 0);
     for (int k = 0; k < SAMPLES; k++) {
-        double u1 = rng_uniform(&rng), u2 = rng_uniform(&rng);
+        double u1 = test_uniform(&rng), u2 = test_uniform(&rng);
         diffuse_sample(&m, n, wo, u1, u2, &wi);
         Vec3 local = to_own_frame(wi, t, b, axis);
         double cos_theta = fmax(0.0, local.z), phi = atan2(local.y, local.x);

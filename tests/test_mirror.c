@@ -38,10 +38,10 @@ static void test_example_by_hand(void **state)
  * neither creates nor loses length, so a unit ray direction stays unit). */
 static void test_keeps_length(void **state)
 {
-    Rng rng = rng_for_sample(1, 0, 0);
+    TestRandom rng = test_random(1, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng);
-        Vec3 d = vec3_scale(random_unit_vector(&rng), 0.01 + 10.0 * rng_uniform(&rng));
+        Vec3 d = vec3_scale(random_unit_vector(&rng), 0.01 + 10.0 * test_uniform(&rng));
         assert_close(vec3_length(mirror_reflect(d, n)), vec3_length(d),
                      4 * ROUNDING * vec3_length(d));
     }
@@ -52,7 +52,7 @@ static void test_keeps_length(void **state)
  * plane of incidence: R . (d x n) = 0. */
 static void test_angle_in_equals_angle_out_in_plane_of_incidence(void **state)
 {
-    Rng rng = rng_for_sample(2, 0, 0);
+    TestRandom rng = test_random(2, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng), d = random_unit_vector(&rng);
         Vec3 r = mirror_reflect(d, n);
@@ -69,7 +69,7 @@ static void test_angle_in_equals_angle_out_in_plane_of_incidence(void **state)
  * no front side, and the renderer may pass either normal. */
 static void test_independent_of_normal_orientation(void **state)
 {
-    Rng rng = rng_for_sample(3, 0, 0);
+    TestRandom rng = test_random(3, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng), d = random_unit_vector(&rng);
         Vec3 a = mirror_reflect(d, n), b = mirror_reflect(d, vec3_neg(n));
@@ -81,7 +81,7 @@ static void test_independent_of_normal_orientation(void **state)
  * walked backwards, which is why tracing from the eye is legitimate). */
 static void test_reflecting_twice_gives_d_back(void **state)
 {
-    Rng rng = rng_for_sample(4, 0, 0);
+    TestRandom rng = test_random(4, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng), d = random_unit_vector(&rng);
         assert_close(distance(mirror_reflect(mirror_reflect(d, n), n), d), 0.0, 4 * ROUNDING);
@@ -102,12 +102,12 @@ static void test_normal_and_grazing_incidence(void **state)
         assert_true(r.x == along.x && r.y == along.y && r.z == along.z);
     }
     /* For random normals both hold to rounding. */
-    Rng rng = rng_for_sample(5, 0, 0);
+    TestRandom rng = test_random(5, 0, 0);
     for (int i = 0; i < PAIRS; i++) {
         Vec3 n = random_unit_vector(&rng);
         assert_close(distance(mirror_reflect(vec3_neg(n), n), n), 0.0, 2 * ROUNDING);
         Vec3 t, b;
-        vec3_basis(n, &t, &b);
+        test_frame(n, &t, &b);
         assert_close(distance(mirror_reflect(t, n), t), 0.0, 2 * ROUNDING);
     }
 }

@@ -15,6 +15,7 @@
 #include <math.h>
 
 #include "check.h"
+#include "rng.h"
 #include "mis.h"
 
 static void test_weights_sum_to_one(void **state)

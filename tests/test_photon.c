@@ -31,6 +31,7 @@
 
 #include "check.h"
 #include "chi_square.h"
+#include "frame.h"
 #include "furnace.h"
 #include "photon.h"
 #include "ppm.h"

@@ -18,7 +18,6 @@
 
 #include "check.h"
 #include "ray.h"
-#include "rng.h"
 
 /* ray_at steps t along the unit direction: t is a distance. */
 static void test_ray_at(void **state)
@@ -41,7 +40,7 @@ static void test_ray_at(void **state)
  * it. The direction is unchanged. */
 static void test_spawn(void **state)
 {
-    Rng rng = rng_for_sample(8, 0, 0);
+    TestRandom rng = test_random(8, 0, 0);
     const double scales[] = {1e-45, 1e-12, 1.0, 1e40}, sizes[] = {1e-3, 1.0, 10.0};
     for (int j = 0; j < 4; j++)
         for (int i = 0; i < 3; i++)

@@ -1,4 +1,4 @@
-/* test_rng.c (chapter 1): PCG32 seeded by (seed, pixel, sample) (rng.h, chapter 1).
+/* test_rng.c (chapter 2): PCG32 seeded by (seed, pixel, sample) (rng.h).
  *
  * Every Monte Carlo estimate rests on these numbers, so besides determinism we test
  * the distribution itself: moments and a chi-square goodness-of-fit test, both for

@@ -17,7 +17,6 @@
 #include <string.h>
 
 #include "check.h"
-#include "rng.h"
 #include "scene.h"
 #include "scene_file.h"
 #include "whitted.h"
@@ -28,16 +27,16 @@ static const double scales[] = {1e-45, 1e-12, 1e-3, 1.0, 1e3, 1e45};
 #define SCALE_COUNT (int)(sizeof scales / sizeof scales[0])
 
 /* A random direction on the side of the surface that `normal` points to. */
-static Vec3 random_direction_along(Rng *rng, Vec3 normal)
+static Vec3 random_direction_along(TestRandom *rng, Vec3 normal)
 {
     Vec3 d = random_unit_vector(rng);
     return vec3_dot(d, normal) < 0 ? vec3_neg(d) : d;
 }
 
 /* A uniformly random point of a triangle. */
-static Vec3 random_point_on(const Triangle *tri, Rng *rng)
+static Vec3 random_point_on(const Triangle *tri, TestRandom *rng)
 {
-    double a = sqrt(rng_uniform(rng)), b = rng_uniform(rng);
+    double a = sqrt(test_uniform(rng)), b = test_uniform(rng);
     return triangle_point(tri, a * (1 - b), a * b);
 }
 
@@ -139,25 +138,25 @@ static void test_hit_from_inside_sphere(void **state)
  * hemisphere must hit nothing: the only surface is the plane they left. */
 static void test_no_acne_on_triangles(void **state)
 {
-    Rng rng = rng_for_sample(31, 0, 0);
+    TestRandom rng = test_random(31, 0, 0);
     for (int i = 0; i < SCALE_COUNT; i++)
         for (int near_origin = 0; near_origin < 2; near_origin++) {
             double s = scales[i];
             Scene scene;
             scene_init(&scene);
             Vec3 n = vec3_normalize(vec3(0.3, -0.4, 0.87)), a, b;
-            vec3_basis(n, &a, &b);
+            test_frame(n, &a, &b);
             Vec3 centre = near_origin ? vec3(0, 0, 0) : vec3(1.7 * s, -3.1 * s, 2.3 * s);
             add_square(&scene, centre, a, b, 5 * s, add_material(&scene, MATERIAL_LAMBERT, 0));
             scene_prepare(&scene);
             for (int k = 0; k < 2000; k++) {
-                double r = s * pow(10.0, -12.0 * rng_uniform(&rng)), phi = 2 * PI * rng_uniform(&rng);
+                double r = s * pow(10.0, -12.0 * test_uniform(&rng)), phi = 2 * PI * test_uniform(&rng);
                 Vec3 target = near_origin ? vec3_add(vec3_scale(a, r * cos(phi)), vec3_scale(b, r * sin(phi)))
                                           : random_point_on(&scene.triangles[k % 2], &rng);
                 Vec3 eye = vec3_add_scaled(centre, random_unit_vector(&rng), 10 * s);
                 Hit hit, again;
                 assert_true(scene_intersect(&scene, ray_through(eye, target), INFINITY, &hit));
-                Vec3 dir = random_direction_along(&rng, rng_uniform(&rng) < 0.5 ? n : vec3_neg(n));
+                Vec3 dir = random_direction_along(&rng, test_uniform(&rng) < 0.5 ? n : vec3_neg(n));
                 if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY, &again))
                     fail_msg("scale %g: self-hit at t = %g, %g from the origin", s, again.t,
                              vec3_length(hit.point));
@@ -172,7 +171,7 @@ static void test_no_acne_on_triangles(void **state)
  * the near side at t ~ 0. */
 static void test_no_acne_on_spheres(void **state)
 {
-    Rng rng = rng_for_sample(32, 0, 0);
+    TestRandom rng = test_random(32, 0, 0);
     for (int i = 0; i < SCALE_COUNT; i++) {
         double s = scales[i];
         Scene scene;
@@ -181,7 +180,7 @@ static void test_no_acne_on_spheres(void **state)
         scene_add_sphere(&scene, sphere);
         scene_prepare(&scene);
         for (int k = 0; k < 2000; k++) {
-            double start_distance = (k % 2 ? 5.0 : 0.9 * rng_uniform(&rng)) * sphere.radius;
+            double start_distance = (k % 2 ? 5.0 : 0.9 * test_uniform(&rng)) * sphere.radius;
             Vec3 start = vec3_add_scaled(sphere.center, random_unit_vector(&rng), start_distance);
             Ray first = {start, random_unit_vector(&rng)};
             Hit hit, again;
@@ -206,13 +205,13 @@ static void test_no_acne_on_spheres(void **state)
  * (not the lower one, not nothing) at t = gap / cos(theta), and the other way round. */
 static void test_near_parallel_planes(void **state)
 {
-    Rng rng = rng_for_sample(33, 0, 0);
+    TestRandom rng = test_random(33, 0, 0);
     for (int i = 0; i < SCALE_COUNT; i++) {
         double s = scales[i], gap = 1e-6 * s;
         Scene scene;
         scene_init(&scene);
         Vec3 n = vec3_normalize(vec3(-0.2, 0.9, 0.4)), a, b;
-        vec3_basis(n, &a, &b);
+        test_frame(n, &a, &b);
         Vec3 centre = vec3(0.6 * s, 2.2 * s, -1.4 * s);
         int m = add_material(&scene, MATERIAL_LAMBERT, 0);
         add_square(&scene, centre, a, b, s, m);                          /* triangles 0, 1 */
@@ -248,7 +247,7 @@ static void test_near_parallel_planes(void **state)
  * floor points 1e-6 * scale from the wall, rays towards the wall find the wall. */
 static void test_corner(void **state)
 {
-    Rng rng = rng_for_sample(34, 0, 0);
+    TestRandom rng = test_random(34, 0, 0);
     for (int i = 0; i < SCALE_COUNT; i++) {
         double s = scales[i], d = 1e-6 * s;
         Scene scene;
@@ -262,13 +261,13 @@ static void test_corner(void **state)
                  vec3_add(o, vec3(0, 0, s)), m);
         scene_prepare(&scene);
         for (int k = 0; k < 2000; k++) {
-            Vec3 target = vec3_add(o, vec3(d, (0.25 + 0.5 * rng_uniform(&rng)) * s, 0));
+            Vec3 target = vec3_add(o, vec3(d, (0.25 + 0.5 * test_uniform(&rng)) * s, 0));
             Hit hit, wall;
             assert_true(scene_intersect(&scene, ray_through(vec3_add(target, vec3(0.3 * s, 0, s)), target),
                                         INFINITY, &hit));
             assert_true(hit.triangle < 2);
             /* towards the wall (-x), rising at most 45 degrees above the floor */
-            double rise = rng_uniform(&rng), swing = rng_uniform(&rng) - 0.5;
+            double rise = test_uniform(&rng), swing = test_uniform(&rng) - 0.5;
             Vec3 dir = vec3_normalize(vec3(-1, swing, rise));
             assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY, &wall));
             if (wall.triangle < 2)
@@ -283,7 +282,7 @@ static void test_corner(void **state)
  * light: never occluded by the end points' own surfaces; always by the blocker. */
 static void test_occluded(void **state)
 {
-    Rng rng = rng_for_sample(35, 0, 0);
+    TestRandom rng = test_random(35, 0, 0);
     for (int i = 0; i < SCALE_COUNT; i++)
         for (int blocked = 0; blocked < 2; blocked++) {
             double s = scales[i];
@@ -386,7 +385,7 @@ static void test_scaled_room(void **state)
         for (int pixel = 0; pixel < 32 * 32; pixel++) {
             Ray a = camera_ray(&reference.camera, 32, 32, pixel % 32, pixel / 32, 0.5, 0.5);
             Ray b = camera_ray(&scaled.camera, 32, 32, pixel % 32, pixel / 32, 0.5, 0.5);
-            Rng rng = rng_for_sample(36, (uint64_t)pixel, 0);
+            TestRandom rng = test_random(36, (uint64_t)pixel, 0);
             for (int bounce = 0; bounce < 5; bounce++) {
                 Hit hit_a, hit_b;
                 int found_a = scene_intersect(&reference, a, INFINITY, &hit_a);
@@ -496,7 +495,7 @@ static void test_far_object_changes_nothing(void **state)
  * side the lamp, unblocked. */
 static void test_far_camera(void **state)
 {
-    Rng rng = rng_for_sample(37, 0, 0);
+    TestRandom rng = test_random(37, 0, 0);
     const double distances[] = {1e3, 1e8, 1e11};
     Scene scene;
     scene_init(&scene);
@@ -511,7 +510,7 @@ static void test_far_camera(void **state)
         for (int k = 0; k < 800; k++) {
             int on_ball = k % 2;
             Vec3 target = on_ball ? vec3_add_scaled(ball.center, random_unit_vector(&rng), ball.radius)
-                                  : vec3(0.35 + rng_uniform(&rng), -1.0 + 1.4 * rng_uniform(&rng), 0);
+                                  : vec3(0.35 + test_uniform(&rng), -1.0 + 1.4 * test_uniform(&rng), 0);
             Vec3 away = on_ball ? vec3_normalize(vec3_sub(target, ball.center)) : vec3(0, 0, 1);
             Vec3 eye = vec3_add_scaled(target, random_direction_along(&rng, away), distances[i]);
             Hit hit, next;
@@ -523,7 +522,7 @@ static void test_far_camera(void **state)
                 fail_msg("camera %g away: the %s shadows itself (acne)", distances[i],
                          on_ball ? "ball" : "floor");
             if (!on_ball) {
-                Vec3 dir = vec3_normalize(vec3(-1, 0.2 * rng_uniform(&rng), 0.3 * rng_uniform(&rng)));
+                Vec3 dir = vec3_normalize(vec3(-1, 0.2 * test_uniform(&rng), 0.3 * test_uniform(&rng)));
                 if (!scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale),
                                      INFINITY, &next) || next.triangle < 2)
                     fail_msg("camera %g away: from the floor, the wall was missed", distances[i]);
@@ -549,7 +548,7 @@ static void test_far_camera(void **state)
  * bounced light. */
 static void test_huge_floor(void **state)
 {
-    Rng rng = rng_for_sample(38, 0, 0);
+    TestRandom rng = test_random(38, 0, 0);
     Scene scene;
     scene_init(&scene);
     int m = add_material(&scene, MATERIAL_LAMBERT, 0);
@@ -558,7 +557,7 @@ static void test_huge_floor(void **state)
     add_square(&scene, vec3(0.5, 0.5, -4), vec3(1, 0, 0), vec3(0, 1, 0), 20, m);
     assert_int_equal(scene_prepare(&scene), 0);
     for (int k = 0; k < 2000; k++) {
-        Vec3 target = vec3(3 * rng_uniform(&rng) - 1, 3 * rng_uniform(&rng) - 1, -5);
+        Vec3 target = vec3(3 * test_uniform(&rng) - 1, 3 * test_uniform(&rng) - 1, -5);
         Vec3 eye = vec3_add_scaled(target, random_direction_along(&rng, vec3(0, 0, 1)), 0.9);
         Hit hit, ceiling;
         assert_true(scene_intersect(&scene, ray_through(eye, target), INFINITY, &hit));

@@ -13,7 +13,6 @@
 #include <cmocka.h>
 
 #include "check.h"
-#include "rng.h"
 #include "snell.h"
 
 /* A unit direction arriving at angle theta to the normal n (so d . n = -cos theta),
@@ -21,15 +20,15 @@
 static Vec3 incident(Vec3 n, double theta, double phi)
 {
     Vec3 t, b;
-    vec3_basis(n, &t, &b);
-    return vec3_from_local(vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), -cos(theta)), t, b, n);
+    test_frame(n, &t, &b);
+    return test_from_frame(vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), -cos(theta)), t, b, n);
 }
 
 /* An index of refraction from 1.0001 to 4, log-uniform in n - 1 so that indices
  * barely above 1 are tested as often as 2 to 4. */
-static double random_ior(Rng *rng)
+static double random_ior(TestRandom *rng)
 {
-    return 1.0 + pow(10.0, -4.0 + log10(3e4) * rng_uniform(rng));
+    return 1.0 + pow(10.0, -4.0 + log10(3e4) * test_uniform(rng));
 }
 
 /* sin of the angle between unit vector v and the normal line. */
@@ -45,14 +44,14 @@ static double sin_to_normal(Vec3 v, Vec3 n)
  * to 1e-9. */
 static void test_snells_law(void **state)
 {
-    Rng rng = rng_for_sample(12, 0, 0);
+    TestRandom rng = test_random(12, 0, 0);
     for (int k = 0; k < 100000; k++) {
         double a = random_ior(&rng), b = random_ior(&rng);
         const double pairs[4][2] = {{1.0, a}, {a, 1.0}, {fmin(a, b), fmax(a, b)}, {fmax(a, b), fmin(a, b)}};
         double n_i = pairs[k % 4][0], n_t = pairs[k % 4][1];
         double theta_max = snell_critical_angle(n_i, n_t);
-        double theta = theta_max * rng_uniform(&rng) * (1.0 - 1e-6);
-        Vec3 n = random_unit_vector(&rng), d = incident(n, theta, 2.0 * PI * rng_uniform(&rng)), t;
+        double theta = theta_max * test_uniform(&rng) * (1.0 - 1e-6);
+        Vec3 n = random_unit_vector(&rng), d = incident(n, theta, 2.0 * PI * test_uniform(&rng)), t;
         assert_true(snell_refract(d, n, n_i, n_t, &t));
         assert_close(vec3_length(t), 1, 1e-14);
         assert_true(vec3_dot(t, n) < 0);
@@ -96,14 +95,14 @@ static void test_normal_incidence(void **state)
  * totally reflected; just below it (1e-6 rad) the ray refracts, close to grazing. */
 static void test_total_internal_reflection(void **state)
 {
-    Rng rng = rng_for_sample(13, 0, 0);
+    TestRandom rng = test_random(13, 0, 0);
     Vec3 t;
     for (int k = 0; k < 10000; k++) {
-        double n_t = 1.0 + 2.0 * rng_uniform(&rng), n_i = n_t * (1.0001 + 2.0 * rng_uniform(&rng));
+        double n_t = 1.0 + 2.0 * test_uniform(&rng), n_i = n_t * (1.0001 + 2.0 * test_uniform(&rng));
         double critical = snell_critical_angle(n_i, n_t);
         Vec3 n = vec3(0, 0, 1);
-        double phi = 2.0 * PI * rng_uniform(&rng);
-        double beyond = critical + (0.5 * PI - critical) * rng_uniform(&rng);
+        double phi = 2.0 * PI * test_uniform(&rng);
+        double beyond = critical + (0.5 * PI - critical) * test_uniform(&rng);
         assert_false(snell_refract(incident(n, critical, phi), n, n_i, n_t, &t));
         assert_false(snell_refract(incident(n, beyond, phi), n, n_i, n_t, &t));
         assert_false(snell_refract(incident(n, 0.5 * PI, phi), n, n_i, n_t, &t));

@@ -12,7 +12,6 @@
 #include <cmocka.h>
 
 #include "check.h"
-#include "rng.h"
 #include "sphere.h"
 
 /* Scale factors of the whole set-up: scenes are tested at 1e-3 and 1e3. */
@@ -56,7 +55,7 @@ static void test_behind_origin(void **state)
  * centre t = r in every direction; from off-centre the chord's far end. */
 static void test_from_inside(void **state)
 {
-    Rng rng = rng_for_sample(1, 2, 3);
+    TestRandom rng = test_random(1, 2, 3);
     for (int i = 0; i < 3; i++) {
         double s = scales[i];
         Sphere sphere = {vec3(2 * s, -1 * s, 5 * s), 1 * s, 0};
@@ -121,7 +120,7 @@ static double reference_hit(const Sphere *sphere, Ray ray)
  * form must give t to 1e-9 relative and a hit point on the sphere to 1e-6 r. */
 static void test_tiny_sphere_far_away(void **state)
 {
-    Rng rng = rng_for_sample(9, 9, 9);
+    TestRandom rng = test_random(9, 9, 9);
     double worst_t = 0, worst_surface = 0;
     for (int i = 0; i < 3; i++) {
         double s = scales[i];
@@ -151,7 +150,7 @@ static void test_tiny_sphere_far_away(void **state)
  * along it for hits from inside. */
 static void test_normal(void **state)
 {
-    Rng rng = rng_for_sample(4, 5, 6);
+    TestRandom rng = test_random(4, 5, 6);
     Sphere sphere = {vec3(0.3, -0.7, 2.1), 0.8, 0};
     for (int k = 0; k < 10000; k++) {
         Vec3 outside = vec3_add_scaled(sphere.center, random_unit_vector(&rng), 3.0);

@@ -13,7 +13,6 @@
 #include <cmocka.h>
 
 #include "check.h"
-#include "rng.h"
 #include "triangle.h"
 
 static double hit(const Triangle *tri, Ray ray)
@@ -104,7 +103,7 @@ static void test_parallel(void **state)
  * edge hit, from many directions. */
 static void test_vertex_and_edge(void **state)
 {
-    Rng rng = rng_for_sample(5, 0, 0);
+    TestRandom rng = test_random(5, 0, 0);
     Vec3 a = vec3(0.3, -1.7, 2.2), b = vec3(2.9, 0.4, 1.1), c = vec3(-0.6, 1.3, 3.7);
     Triangle tri = triangle_make(a, b, c, 0);
     Vec3 boundary[] = {a, b, c, triangle_point(&tri, 0.5, 0), triangle_point(&tri, 0, 0.25),
@@ -120,42 +119,42 @@ static void test_vertex_and_edge(void **state)
  * where no component is a round number. */
 typedef struct { Vec3 x, y, z; } Frame;
 
-static Frame random_frame(Rng *rng)
+static Frame random_frame(TestRandom *rng)
 {
     Frame f;
     f.z = random_unit_vector(rng);
-    vec3_basis(f.z, &f.x, &f.y);
+    test_frame(f.z, &f.x, &f.y);
     return f;
 }
 
 static Vec3 place(Frame f, Vec3 origin, double scale, Vec3 local)
 {
-    return vec3_add_scaled(origin, vec3_from_local(local, f.x, f.y, f.z), scale);
+    return vec3_add_scaled(origin, test_from_frame(local, f.x, f.y, f.z), scale);
 }
 
 /* A unit vector at angle acos(cos_theta) from `normal`, on either side of the plane,
  * in a random azimuth. */
-static Vec3 at_angle(Rng *rng, Vec3 normal, double cos_theta)
+static Vec3 at_angle(TestRandom *rng, Vec3 normal, double cos_theta)
 {
     Vec3 t, b;
-    vec3_basis(normal, &t, &b);
-    double phi = 2.0 * PI * rng_uniform(rng), sin_theta = sqrt(1.0 - cos_theta * cos_theta);
-    double side = rng_uniform(rng) < 0.5 ? -1.0 : 1.0;
-    return vec3_from_local(vec3(sin_theta * cos(phi), sin_theta * sin(phi), side * cos_theta),
+    test_frame(normal, &t, &b);
+    double phi = 2.0 * PI * test_uniform(rng), sin_theta = sqrt(1.0 - cos_theta * cos_theta);
+    double side = test_uniform(rng) < 0.5 ? -1.0 : 1.0;
+    return test_from_frame(vec3(sin_theta * cos(phi), sin_theta * sin(phi), side * cos_theta),
                            t, b, normal);
 }
 
 /* Shoots `rays` rays through points from `target`, from 1 to 10^4 times `scale` away:
  * half from uniformly random directions, half grazing the plane of the first triangle
  * (cosine log-uniform between 1e-12 and 1). Returns how many hit none of the triangles. */
-static int count_holes(const Triangle *tris, int count, Vec3 (*target)(Rng *, void *),
-                       void *context, double scale, int rays, Rng *rng)
+static int count_holes(const Triangle *tris, int count, Vec3 (*target)(TestRandom *, void *),
+                       void *context, double scale, int rays, TestRandom *rng)
 {
     int holes = 0;
     for (int k = 0; k < rays; k++) {
         Vec3 aim = target(rng, context);
-        double distance = scale * pow(10.0, 4.0 * rng_uniform(rng));
-        Vec3 from = k % 2 ? at_angle(rng, tris[0].normal, pow(10.0, -12.0 * rng_uniform(rng)))
+        double distance = scale * pow(10.0, 4.0 * test_uniform(rng));
+        Vec3 from = k % 2 ? at_angle(rng, tris[0].normal, pow(10.0, -12.0 * test_uniform(rng)))
                           : random_unit_vector(rng);
         Ray ray = ray_through(vec3_add_scaled(aim, from, distance), aim);
         int hit_any = 0;
@@ -171,10 +170,10 @@ typedef struct { Vec3 p[4]; Triangle tri[2]; } Quad;
 
 /* A random point of the shared diagonal P0-P2 as the renderer would compute one
  * (so within rounding, ~1e-16 relative, of the exact segment), or one of its ends. */
-static Vec3 on_diagonal(Rng *rng, void *context)
+static Vec3 on_diagonal(TestRandom *rng, void *context)
 {
     const Quad *q = context;
-    double s = rng_uniform(rng);
+    double s = test_uniform(rng);
     if (s < 0.05)
         return q->p[0];
     if (s > 0.95)
@@ -188,7 +187,7 @@ static Vec3 on_diagonal(Rng *rng, void *context)
  * and however grazing. (With a fixed slack of 1e-12, about 1 in 1000 went through.) */
 static void test_watertight_quad(void **state)
 {
-    Rng rng = rng_for_sample(2024, 0, 0);
+    TestRandom rng = test_random(2024, 0, 0);
     const double scales[] = {1e-3, 1.0, 1e3};
     Vec3 corners[4] = {vec3(0, 0, 0), vec3(1.3, -0.2, 0), vec3(1.1, 0.9, 0), vec3(-0.1, 0.7, 0)};
     for (int i = 0; i < 3; i++)
@@ -217,11 +216,11 @@ static void test_watertight_quad(void **state)
  * next. */
 typedef struct { Vec3 centre, rim[6]; Triangle tri[6]; } Fan;
 
-static Vec3 on_spoke(Rng *rng, void *context)
+static Vec3 on_spoke(TestRandom *rng, void *context)
 {
     const Fan *fan = context;
-    int spoke = (int)(6 * rng_uniform(rng));
-    double s = rng_uniform(rng);
+    int spoke = (int)(6 * test_uniform(rng));
+    double s = test_uniform(rng);
     return s < 0.1 ? fan->centre : vec3_add_scaled(fan->centre, vec3_sub(fan->rim[spoke], fan->centre), s);
 }
 
@@ -229,7 +228,7 @@ static Vec3 on_spoke(Rng *rng, void *context)
  * shared spokes of six triangles of irregular shape all hit. */
 static void test_watertight_fan(void **state)
 {
-    Rng rng = rng_for_sample(2025, 0, 0);
+    TestRandom rng = test_random(2025, 0, 0);
     const double scales[] = {1e-3, 1.0, 1e3};
     for (int i = 0; i < 3; i++) {
         double s = scales[i];
@@ -237,7 +236,7 @@ static void test_watertight_fan(void **state)
         Fan fan;
         fan.centre = vec3(-7.3 * s, 0.37 * s, 5.9 * s);
         for (int k = 0; k < 6; k++) {
-            double angle = k * PI / 3 + 0.3 * rng_uniform(&rng), radius = 0.5 + rng_uniform(&rng);
+            double angle = k * PI / 3 + 0.3 * test_uniform(&rng), radius = 0.5 + test_uniform(&rng);
             fan.rim[k] = place(f, fan.centre, s, vec3(radius * cos(angle), radius * sin(angle), 0));
         }
         for (int k = 0; k < 6; k++) {

@@ -64,7 +64,7 @@ static void add_facing_triangle(Scene *scene, Vec3 centre, Vec3 facing, double s
                                 int material)
 {
     Vec3 t, b;
-    vec3_basis(facing, &t, &b);
+    test_frame(facing, &t, &b);
     Vec3 v0 = vec3_add_scaled(centre, t, size);
     Vec3 v1 = vec3_add_scaled(vec3_add_scaled(centre, t, -0.5 * size), b, 0.866 * size);
     Vec3 v2 = vec3_add_scaled(vec3_add_scaled(centre, t, -0.5 * size), b, -0.866 * size);

@@ -82,10 +82,10 @@ static void check_soup(int count, double scale)
     scene_init(&soup);
     Material grey = {.name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     int m = scene_add_material(&soup, grey);
-    Rng rng = rng_for_sample(8, 8, 8);
+    TestRandom rng = test_random(8, 8, 8);
     for (int i = 0; i < count; i++) {
-        Vec3 corner = vec3_scale(vec3(2 * rng_uniform(&rng) - 1, 2 * rng_uniform(&rng) - 1,
-                                      2 * rng_uniform(&rng) - 1), scale);
+        Vec3 corner = vec3_scale(vec3(2 * test_uniform(&rng) - 1, 2 * test_uniform(&rng) - 1,
+                                      2 * test_uniform(&rng) - 1), scale);
         Vec3 b = vec3_add_scaled(corner, random_unit_vector(&rng), scale * 1e-3);
         Vec3 c = vec3_add_scaled(corner, random_unit_vector(&rng), scale * 1e-3);
         assert_true(scene_add_triangle(&soup, triangle_make(corner, b, c, m)) >= 0);

@@ -1,4 +1,4 @@
-/* test_chi_square.c (bench, chapter 1): Pearson's chi-square test (chi_square.h).
+/* test_chi_square.c (bench, chapter 2): Pearson's chi-square test (chi_square.h).
  *
  * The statistic is checked by hand, the merging of sparse bins by hand, and the p-value
  * against tabulated quantiles and against the closed forms for 1 and for even degrees

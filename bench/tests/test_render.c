@@ -136,6 +136,7 @@ static void test_same_path_traced_image_for_any_thread_count(void **state)
 }
 #endif
 
+#if CHAPTER >= 2
 /* (u, 2u, 1) with u the sample's first random number. */
 static Vec3 sample_number(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                           RayCounts *counts)
@@ -259,6 +260,8 @@ static void test_nonfinite_samples_dropped_and_counted(void **state)
     render_result_free(&result);
 }
 
+#endif
+
 /* Returns 1 per sample, and raises SIGINT during pass 3. */
 static Vec3 interrupt_midway(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                              RayCounts *counts)
@@ -300,9 +303,11 @@ int main(void)
 #if CHAPTER >= 6
         cmocka_unit_test(test_same_path_traced_image_for_any_thread_count),
 #endif
+#if CHAPTER >= 2
         cmocka_unit_test(test_pixel_is_mean_of_samples),
         cmocka_unit_test(test_variance_of_a_bright_pixel),
         cmocka_unit_test(test_nonfinite_samples_dropped_and_counted),
+#endif
         cmocka_unit_test(test_interrupt_keeps_a_normalised_image),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,8 +1,5 @@
-/* vec.c (chapter 1): the orthonormal basis around a normal, by the branchless
- * construction of Duff et al., "Building an Orthonormal Basis, Revisited" (JCGT 2017):
- * exact to rounding for any unit n, n = (0, 0, -1) included.
- */
-#include "vec.h"
+/* frame.c (chapter 2): the orthonormal basis around a normal. See frame.h. */
+#include "frame.h"
 
 void vec3_basis(Vec3 n, Vec3 *t, Vec3 *b)
 {
