@@ -1,7 +1,43 @@
 /* area_light.c (chapter 3): uniform area-light sampling and eq. 21. See area_light.h. */
 #include "area_light.h"
 
+#include <stdlib.h>
+
 #include "diffuse.h"
+
+void area_lights_free(Scene *scene)
+{
+    free(scene->light_triangles);
+    free(scene->light_cumulative);
+    scene->light_triangles = NULL;
+    scene->light_cumulative = NULL;
+    scene->light_count = 0;
+    scene->light_area = 0.0;
+}
+
+/* The emitting triangles, with the running sum of their areas. */
+int area_lights_list(Scene *scene)
+{
+    area_lights_free(scene);
+    int emitting = 0;
+    for (int i = 0; i < scene->triangle_count; i++)
+        emitting += material_emits(&scene->materials[scene->triangles[i].material]);
+    if (emitting == 0)
+        return 0;
+    scene->light_triangles = malloc((size_t)emitting * sizeof *scene->light_triangles);
+    scene->light_cumulative = malloc((size_t)emitting * sizeof *scene->light_cumulative);
+    if (!scene->light_triangles || !scene->light_cumulative)
+        return -1;
+    for (int i = 0; i < scene->triangle_count; i++) {
+        if (!material_emits(&scene->materials[scene->triangles[i].material]))
+            continue;
+        scene->light_area += scene->triangles[i].area;
+        scene->light_triangles[scene->light_count] = i;
+        scene->light_cumulative[scene->light_count] = scene->light_area;
+        scene->light_count++;
+    }
+    return 0;
+}
 
 LightSample area_light_sample(const Scene *scene, double u_select, double u1, double u2)
 {

@@ -92,8 +92,9 @@ void scene_free(Scene *scene)
     free(scene->triangles);
     free(scene->spheres);
     free(scene->point_lights);
-    free(scene->light_triangles);
-    free(scene->light_cumulative);
+#if CHAPTER >= 3
+    area_lights_free(scene);
+#endif
     free_queries(scene);
     scene_init(scene);
 }
@@ -135,42 +136,16 @@ int scene_add_point_light(Scene *scene, PointLight light)
     return append((void **)&scene->point_lights, &scene->point_light_count, &light, sizeof light);
 }
 
-
-/* The emitting triangles, with the running sum of their areas. */
-static int list_lights(Scene *scene)
-{
-    free(scene->light_triangles);
-    free(scene->light_cumulative);
-    scene->light_triangles = NULL;
-    scene->light_cumulative = NULL;
-    scene->light_count = 0;
-    scene->light_area = 0.0;
-    int emitting = 0;
-    for (int i = 0; i < scene->triangle_count; i++)
-        emitting += material_emits(&scene->materials[scene->triangles[i].material]);
-    if (emitting == 0)
-        return 0;
-    scene->light_triangles = malloc((size_t)emitting * sizeof *scene->light_triangles);
-    scene->light_cumulative = malloc((size_t)emitting * sizeof *scene->light_cumulative);
-    if (!scene->light_triangles || !scene->light_cumulative)
-        return -1;
-    for (int i = 0; i < scene->triangle_count; i++) {
-        if (!material_emits(&scene->materials[scene->triangles[i].material]))
-            continue;
-        scene->light_area += scene->triangles[i].area;
-        scene->light_triangles[scene->light_count] = i;
-        scene->light_cumulative[scene->light_count] = scene->light_area;
-        scene->light_count++;
-    }
-    return 0;
-}
-
 int scene_prepare(Scene *scene)
 {
     free_queries(scene);
     if (prepare_queries(scene) != 0)
         return -1;
-    return list_lights(scene);
+#if CHAPTER >= 3
+    return area_lights_list(scene);
+#else
+    return 0;
+#endif
 }
 
 int scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit)

@@ -3,8 +3,8 @@
  * Flat arrays of materials, triangles (quads, boxes and tetrahedra are split into
  * triangles when read), spheres and point lights; no scene graph, no transforms. Add
  * the elements (scene_add_*), then call scene_prepare() once before the first query:
- * it lists the emitting triangles as the area lights and builds the bounding volume
- * hierarchy (bvh.h) through which every query goes.
+ * it builds the bounding volume hierarchy (bvh.h) through which every query goes, and
+ * from chapter 3 on lists the emitting triangles as the area lights (area_light.h).
  */
 #ifndef SCENE_H
 #define SCENE_H
@@ -37,11 +37,13 @@ typedef struct {
     PointLight *point_lights;
     int point_light_count;
     /* Built by scene_prepare(): */
+    Bvh bvh;                  /* over all triangles and spheres */
+#if CHAPTER >= 3
     int *light_triangles;     /* indices of the emitting triangles */
     double *light_cumulative; /* running sum of their areas, for choosing one by area */
     int light_count;
     double light_area;        /* total emitting area */
-    Bvh bvh;                  /* over all triangles and spheres */
+#endif
 #if CHAPTER >= 9
     WideBvh wide;             /* the same tree made four-wide */
     QueryMethod query;        /* QUERY_WIDE_TREE unless set after scene_prepare() */
@@ -68,7 +70,8 @@ int scene_add_triangle(Scene *scene, Triangle triangle);
 int scene_add_sphere(Scene *scene, Sphere sphere);
 int scene_add_point_light(Scene *scene, PointLight light);
 
-/* Build the light list and the hierarchy. Returns 0, or -1 when memory runs out. */
+/* Build the hierarchy (and from chapter 3 on the light list). Returns 0, or -1 when
+ * memory runs out. */
 int scene_prepare(Scene *scene);
 
 /* The nearest hit with t in (0, tmax). Returns 1 and fills *hit, or 0 for a miss. */
@@ -79,5 +82,12 @@ int scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit);
  * surfaces by the segment's largest coordinate (ray.h), so neither end's own surface
  * blocks. */
 int scene_occluded(const Scene *scene, Vec3 from, Vec3 from_normal, Vec3 to, Vec3 to_normal);
+
+#if CHAPTER >= 3
+/* The area lights' list, built by scene_prepare() and freed by scene_free()
+ * (area_light.c). Returns 0, or -1 when memory runs out. */
+int area_lights_list(Scene *scene);
+void area_lights_free(Scene *scene);
+#endif
 
 #endif

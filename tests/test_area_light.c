@@ -30,6 +30,7 @@
 #include <cmocka.h>
 
 #include "area_light.h"
+#include "check.h"
 #include "chi_square.h"
 #include "configuration_factor.h"
 
@@ -332,9 +333,53 @@ static void test_pdf_is_the_samplers_density(void **state)
     scene_free(&scene);
 }
 
+/* A grey material, or a light of this emission (> 0). */
+static int add_material(Scene *scene, double emission)
+{
+    Material m = {.kind = emission > 0.0 ? MATERIAL_LIGHT : MATERIAL_LAMBERT,
+                  .reflectance = vec3(0.5, 0.5, 0.5), .emission = vec3(emission, emission, emission)};
+    return scene_add_material(scene, m);
+}
+
+/* scene_prepare lists exactly the emitting triangles, in order, with the running sum
+ * of their areas (2 and 0.5 here): choosing a light by area needs exactly this. A
+ * second call rebuilds the same list, and a scene without lights has none. */
+static void test_light_list(void **state)
+{
+    Scene scene;
+    scene_init(&scene);
+    int white = add_material(&scene, 0);
+    int lamp = add_material(&scene, 25);
+    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 0), vec3(9, 0, 0), vec3(0, 9, 0), white));
+    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 5), vec3(0, 2, 5), vec3(2, 0, 5), lamp));
+    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 1), vec3(3, 0, 1), vec3(0, 3, 1), white));
+    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 6), vec3(0, 1, 6), vec3(1, 0, 6), lamp));
+    Sphere ball = {vec3(5, 5, 5), 1, lamp}; /* emitting spheres are not area lights */
+    scene_add_sphere(&scene, ball);
+    for (int round = 0; round < 2; round++) {
+        assert_int_equal(scene_prepare(&scene), 0);
+        assert_int_equal(scene.light_count, 2);
+        assert_int_equal(scene.light_triangles[0], 1);
+        assert_int_equal(scene.light_triangles[1], 3);
+        assert_close(scene.light_cumulative[0], 2.0, 1e-15);
+        assert_close(scene.light_cumulative[1], 2.5, 1e-15);
+        assert_close(scene.light_area, 2.5, 1e-15);
+    }
+    scene_free(&scene);
+
+    scene_init(&scene);
+    white = add_material(&scene, 0);
+    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), white));
+    assert_int_equal(scene_prepare(&scene), 0);
+    assert_int_equal(scene.light_count, 0);
+    assert_close(scene.light_area, 0, 0);
+    scene_free(&scene);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_light_list),
         cmocka_unit_test(test_sampling_is_uniform_by_area),
         cmocka_unit_test(test_wrong_sampler_is_rejected),
         cmocka_unit_test(test_sample_fields),

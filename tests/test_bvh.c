@@ -176,6 +176,17 @@ static void test_room_random_rays(void **state)
     scene_free(&scene);
 }
 
+/* The k-th of the scene's emitting triangles, counting round. */
+static const Triangle *lamp_triangle(const Scene *scene, int k)
+{
+    int lamps[64], count = 0;
+    for (int t = 0; t < scene->triangle_count && count < 64; t++)
+        if (material_emits(&scene->materials[scene->triangles[t].material]))
+            lamps[count++] = t;
+    assert_true(count > 0);
+    return &scene->triangles[lamps[k % count]];
+}
+
 /* The renderer's rays: from a hit, a bounce ray spawned off the surface in a random
  * direction of its side, and the shadow ray scene_occluded traces to a random lamp
  * point (both ends RAY_OFFSET off their surfaces). */
@@ -192,8 +203,8 @@ static void test_room_bounce_and_shadow_rays(void **state)
             if (!scene_intersect(&scene, ray, INFINITY, &hit))
                 break;
             Vec3 n = vec3_dot(hit.normal, ray.dir) > 0.0 ? vec3_neg(hit.normal) : hit.normal;
-            Vec3 lamp = triangle_point(&scene.triangles[scene.light_triangles[i % scene.light_count]],
-                                       0.5 * test_uniform(&rng), 0.5 * test_uniform(&rng));
+            Vec3 lamp = triangle_point(lamp_triangle(&scene, i), 0.5 * test_uniform(&rng),
+                                       0.5 * test_uniform(&rng));
             double segment = fmax(vec3_max_abs(hit.point), vec3_max_abs(lamp));
             Vec3 start = ray_offset_origin(hit.point, n, vec3_sub(lamp, hit.point), segment);
             Vec3 end = ray_offset_origin(lamp, vec3(0, 0, -1), vec3_sub(hit.point, lamp), segment);
