@@ -7,32 +7,34 @@
  * factor beyond a distance still counts as entered before it. */
 #define ROUNDING (1.0 + 1e-12)
 
-typedef struct {
-    double lower[3], upper[3];
-} Box;
+static const Box EMPTY = {{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}}};
 
-static const Box EMPTY = {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+/* The box grown to hold the point p. */
+static Box box_add(Box box, Vec3 p)
+{
+    const double q[3] = {p.x, p.y, p.z};
+    for (int k = 0; k < 3; k++) {
+        box.corner[0][k] = min2(box.corner[0][k], q[k]);
+        box.corner[1][k] = max2(box.corner[1][k], q[k]);
+    }
+    return box;
+}
 
 static Box box_union(Box a, Box b)
 {
-    for (int k = 0; k < 3; k++) {
-        a.lower[k] = min2(a.lower[k], b.lower[k]);
-        a.upper[k] = max2(a.upper[k], b.upper[k]);
-    }
-    return a;
+    return box_add(box_add(a, vec3(b.corner[0][0], b.corner[0][1], b.corner[0][2])),
+                   vec3(b.corner[1][0], b.corner[1][1], b.corner[1][2]));
 }
 
-static Box box_of(Vec3 lower, Vec3 upper)
+static double box_extent(Box box, int k)
 {
-    Box box = {{lower.x, lower.y, lower.z}, {upper.x, upper.y, upper.z}};
-    return box;
+    return box.corner[1][k] - box.corner[0][k];
 }
 
 /* Half the surface area: the heuristic compares areas, so the factor 2 is left out. */
 static double box_area(Box box)
 {
-    double x = box.upper[0] - box.lower[0], y = box.upper[1] - box.lower[1];
-    double z = box.upper[2] - box.lower[2];
+    double x = box_extent(box, 0), y = box_extent(box, 1), z = box_extent(box, 2);
     return x < 0.0 ? 0.0 : x * y + y * z + z * x;
 }
 
@@ -40,24 +42,22 @@ static Box primitive_box(BvhPrimitives p, int index)
 {
     if (index < p.triangle_count) {
         const Triangle *t = &p.triangles[index];
-        Vec3 b = vec3_add(t->v0, t->e1), c = vec3_add(t->v0, t->e2);
-        return box_union(box_union(box_of(t->v0, t->v0), box_of(b, b)), box_of(c, c));
+        Box box = box_add(box_add(EMPTY, t->v0), vec3_add(t->v0, t->e1));
+        return box_add(box, vec3_add(t->v0, t->e2));
     }
     const Sphere *s = &p.spheres[index - p.triangle_count];
     Vec3 r = vec3(s->radius, s->radius, s->radius);
-    return box_of(vec3_sub(s->center, r), vec3_add(s->center, r));
+    return box_add(box_add(EMPTY, vec3_sub(s->center, r)), vec3_add(s->center, r));
 }
 
 /* The box grown by more than the rounding of a ray's slab test and the triangles' edge
  * slack (triangle.h), so that it never turns away a ray that hits what it holds. */
 static Box widened(Box box)
 {
-    double size = max2(box.upper[0] - box.lower[0],
-                       max2(box.upper[1] - box.lower[1], box.upper[2] - box.lower[2]));
-    double widen = 1e-12 * size + 0x1p-1000;
+    double size = max2(box_extent(box, 0), max2(box_extent(box, 1), box_extent(box, 2)));
     for (int k = 0; k < 3; k++) {
-        box.lower[k] -= fabs(box.lower[k]) * 0x1p-50 + widen;
-        box.upper[k] += fabs(box.upper[k]) * 0x1p-50 + widen;
+        box.corner[0][k] -= fabs(box.corner[0][k]) * 0x1p-50 + 1e-12 * size + 0x1p-1000;
+        box.corner[1][k] += fabs(box.corner[1][k]) * 0x1p-50 + 1e-12 * size + 0x1p-1000;
     }
     return box;
 }
@@ -75,17 +75,11 @@ static int compare_items(const void *a, const void *b)
     return (ia->primitive > ib->primitive) - (ia->primitive < ib->primitive);
 }
 
-typedef struct {
-    Bvh *bvh;
-    const Box *boxes;   /* of every primitive */
-    double *right_area; /* scratch for the heuristic */
-} Builder;
-
-static void sort_along(const Builder *b, Item *items, int count, int axis)
+static void sort_along(const Box *boxes, Item *items, int count, int axis)
 {
     for (int i = 0; i < count; i++) {
-        const Box *box = &b->boxes[items[i].primitive];
-        items[i].centre = box->lower[axis] + box->upper[axis];
+        const Box *box = &boxes[items[i].primitive];
+        items[i].centre = box->corner[0][axis] + box->corner[1][axis];
     }
     qsort(items, (size_t)count, sizeof *items, compare_items);
 }
@@ -93,21 +87,21 @@ static void sort_along(const Builder *b, Item *items, int count, int axis)
 /* The surface area heuristic: a ray that meets a node meets a child with a probability
  * in proportion to the child's area, so the split (the first item of the second child)
  * with the least sum of area times primitives over the three axes; the items are left
- * sorted along its axis. */
-static int best_split(const Builder *b, Item *items, int count)
+ * sorted along its axis. right_area is scratch. */
+static int best_split(const Box *boxes, Item *items, int count, double *right_area)
 {
     double best_cost = INFINITY;
     int best_axis = 0, best = count / 2;
     for (int axis = 0; axis < 3; axis++) {
-        sort_along(b, items, count, axis);
+        sort_along(boxes, items, count, axis);
         Box right = EMPTY, left = EMPTY;
         for (int i = count - 1; i > 0; i--) {
-            right = box_union(right, b->boxes[items[i].primitive]);
-            b->right_area[i] = box_area(right);
+            right = box_union(right, boxes[items[i].primitive]);
+            right_area[i] = box_area(right);
         }
         for (int split = 1; split < count; split++) {
-            left = box_union(left, b->boxes[items[split - 1].primitive]);
-            double cost = box_area(left) * split + b->right_area[split] * (count - split);
+            left = box_union(left, boxes[items[split - 1].primitive]);
+            double cost = box_area(left) * split + right_area[split] * (count - split);
             if (cost < best_cost) {
                 best_cost = cost;
                 best_axis = axis;
@@ -115,90 +109,81 @@ static int best_split(const Builder *b, Item *items, int count)
             }
         }
     }
-    sort_along(b, items, count, best_axis);
+    sort_along(boxes, items, count, best_axis);
     return best;
 }
 
 /* The node over items[0 .. count-1], whose primitives are entries first ... of the leaf
- * order; returns its number. Primitives whose box centres all coincide cannot be split
- * by them: a leaf. */
-static int build(Builder *b, Item *items, int count, int first, int level)
+ * order, and its subtree; returns its number. Primitives whose box centres all coincide
+ * cannot be split by them: a leaf. */
+static int build(Bvh *bvh, const Box *boxes, Item *items, int count, int first, int level,
+                 double *scratch)
 {
-    int index = b->bvh->node_count++;
+    int index = bvh->node_count++;
     Box box = EMPTY, centres = EMPTY;
     for (int i = 0; i < count; i++) {
-        Box primitive = b->boxes[items[i].primitive];
-        box = box_union(box, primitive);
-        for (int k = 0; k < 3; k++)
-            primitive.lower[k] = primitive.upper[k] = primitive.lower[k] + primitive.upper[k];
-        centres = box_union(centres, primitive);
+        Box b = boxes[items[i].primitive];
+        box = box_union(box, b);
+        centres = box_add(centres, vec3(b.corner[0][0] + b.corner[1][0], b.corner[0][1] + b.corner[1][1],
+                                        b.corner[0][2] + b.corner[1][2]));
     }
-    box = widened(box);
-    BvhNode leaf = {{{box.lower[0], box.lower[1], box.lower[2]},
-                     {box.upper[0], box.upper[1], box.upper[2]}}, -1, first, count};
-    b->bvh->nodes[index] = leaf;
+    bvh->nodes[index] = (BvhNode){widened(box), -1, first, count};
     int axis = 0;
     for (int k = 1; k < 3; k++)
-        if (centres.upper[k] - centres.lower[k] > centres.upper[axis] - centres.lower[axis])
+        if (box_extent(centres, k) > box_extent(centres, axis))
             axis = k;
-    if (count == 1 || !(centres.upper[axis] > centres.lower[axis])) {
+    if (count == 1 || !(box_extent(centres, axis) > 0.0)) {
         for (int i = 0; i < count; i++)
-            b->bvh->primitives[first + i] = items[i].primitive;
+            bvh->primitives[first + i] = items[i].primitive;
         return index;
     }
     int split = count / 2;
     if (level < BVH_SAH_LEVELS)
-        split = best_split(b, items, count);
+        split = best_split(boxes, items, count, scratch);
     else
-        sort_along(b, items, count, axis);
-    build(b, items, split, first, level + 1);
-    int right = build(b, items + split, count - split, first + split, level + 1);
-    b->bvh->nodes[index].right = right;
-    b->bvh->nodes[index].count = 0;
+        sort_along(boxes, items, count, axis);
+    build(bvh, boxes, items, split, first, level + 1, scratch);
+    int right = build(bvh, boxes, items + split, count - split, first + split, level + 1, scratch);
+    bvh->nodes[index].right = right;
+    bvh->nodes[index].count = 0;
     return index;
 }
 
 int bvh_build(Bvh *bvh, BvhPrimitives primitives)
 {
     int n = primitives.triangle_count + primitives.sphere_count;
-    Bvh empty = {NULL, 0, NULL};
-    *bvh = empty;
+    *bvh = (Bvh){NULL, 0, NULL};
     if (n == 0)
         return 0;
     Box *boxes = malloc((size_t)n * sizeof *boxes);
     Item *items = malloc((size_t)n * sizeof *items);
-    double *right_area = malloc((size_t)n * sizeof *right_area);
+    double *scratch = malloc((size_t)n * sizeof *scratch);
     bvh->nodes = malloc((size_t)(2 * n - 1) * sizeof *bvh->nodes);
     bvh->primitives = malloc((size_t)n * sizeof *bvh->primitives);
-    int ok = boxes && items && right_area && bvh->nodes && bvh->primitives;
-    if (ok) {
-        for (int i = 0; i < n; i++) {
-            boxes[i] = primitive_box(primitives, i);
-            items[i].primitive = i;
-        }
-        Builder builder = {bvh, boxes, right_area};
-        build(&builder, items, n, 0, 0);
+    int ok = boxes && items && scratch && bvh->nodes && bvh->primitives;
+    for (int i = 0; ok && i < n; i++) {
+        boxes[i] = primitive_box(primitives, i);
+        items[i].primitive = i;
     }
+    if (ok)
+        build(bvh, boxes, items, n, 0, 0, scratch);
+    else
+        bvh_free(bvh);
     free(boxes);
     free(items);
-    free(right_area);
-    if (!ok) {
-        bvh_free(bvh);
-        return -1;
-    }
-    return 0;
+    free(scratch);
+    return ok ? 0 : -1;
 }
 
 void bvh_free(Bvh *bvh)
 {
     free(bvh->nodes);
     free(bvh->primitives);
-    Bvh empty = {NULL, 0, NULL};
-    *bvh = empty;
+    *bvh = (Bvh){NULL, 0, NULL};
 }
 
 /* What every box test of one ray needs, worked out once: per axis 1/d, and which
- * plane of the slab it meets first (the upper one where d < 0). */
+ * corner's plane it meets first (the upper one where d < 0). */
 typedef struct {
     double origin[3], inverse[3];
     int near[3];
@@ -216,23 +201,22 @@ static BoxRay box_ray(Ray ray)
 /* Narrow [*near, *far] to where the ray is between the two planes of one axis. A slab
  * the ray runs along (d = 0) gives t = +-inf, or NaN on a plane, which the comparisons
  * skip: the slab counts as met. */
-static inline void clip_to_slab(const BvhNode *node, const BoxRay *r, int k, double *near,
-                                double *far)
+static inline void clip_to_slab(const Box *box, const BoxRay *r, int k, double *near, double *far)
 {
-    double t_in = (node->bounds[r->near[k]][k] - r->origin[k]) * r->inverse[k];
-    double t_out = (node->bounds[1 - r->near[k]][k] - r->origin[k]) * r->inverse[k];
+    double t_in = (box->corner[r->near[k]][k] - r->origin[k]) * r->inverse[k];
+    double t_out = (box->corner[1 - r->near[k]][k] - r->origin[k]) * r->inverse[k];
     *near = t_in > *near ? t_in : *near;
     *far = t_out < *far ? t_out : *far;
 }
 
-/* Where the ray enters the node's box within (0, tmax), or INFINITY where it misses it:
- * the slab test, the interval of t inside each pair of planes intersected. */
-static inline double box_entry(const BvhNode *node, const BoxRay *r, double tmax)
+/* Where the ray enters the box within (0, tmax), or INFINITY where it misses it: the
+ * slab test, the interval of t inside each pair of planes intersected. */
+static inline double box_entry(const Box *box, const BoxRay *r, double tmax)
 {
     double near = 0.0, far = tmax;
-    clip_to_slab(node, r, 0, &near, &far);
-    clip_to_slab(node, r, 1, &near, &far);
-    clip_to_slab(node, r, 2, &near, &far);
+    clip_to_slab(box, r, 0, &near, &far);
+    clip_to_slab(box, r, 1, &near, &far);
+    clip_to_slab(box, r, 2, &near, &far);
     return near <= far * ROUNDING ? near : INFINITY;
 }
 
@@ -255,7 +239,7 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
     StackEntry stack[BVH_MAX_DEPTH + 1];
     int depth = 0, nearest = -1;
     if (bvh->node_count > 0 && vec3_is_finite(ray.origin) && vec3_is_finite(ray.dir))
-        stack[depth++] = (StackEntry){0, box_entry(&bvh->nodes[0], &r, *tmax)};
+        stack[depth++] = (StackEntry){0, box_entry(&bvh->nodes[0].box, &r, *tmax)};
     while (depth > 0) {
         StackEntry e = stack[--depth];
         if (e.entry > *tmax * ROUNDING)
@@ -272,8 +256,8 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
         }
         if (node->count > 0)
             continue;
-        StackEntry near = {e.node + 1, box_entry(&bvh->nodes[e.node + 1], &r, *tmax)};
-        StackEntry far = {node->right, box_entry(&bvh->nodes[node->right], &r, *tmax)};
+        StackEntry near = {e.node + 1, box_entry(&bvh->nodes[e.node + 1].box, &r, *tmax)};
+        StackEntry far = {node->right, box_entry(&bvh->nodes[node->right].box, &r, *tmax)};
         if (far.entry < near.entry) {
             StackEntry swap = near;
             near = far;

@@ -17,11 +17,16 @@
 #define BVH_SAH_LEVELS 32
 #define BVH_MAX_DEPTH 64
 
+/* An axis-aligned box: corner[0] the lower corner, corner[1] the upper. */
 typedef struct {
-    double bounds[2][3];       /* its box: [0] the lower corner, [1] the upper */
-    int right;                 /* inner node: its second child (the first is the next node) */
-    int first, count;          /* leaf: its primitives, entries first .. first + count - 1
-                                  of the leaf order; inner node: count 0 */
+    double corner[2][3];
+} Box;
+
+typedef struct {
+    Box box;
+    int right;        /* inner node: its second child (the first is the next node) */
+    int first, count; /* leaf: its primitives, entries first .. first + count - 1 of the
+                         leaf order; inner node: count 0 */
 } BvhNode;
 
 typedef struct {

@@ -8,8 +8,8 @@
 /* Half a binary node's surface area: which inner child to open first. */
 static double node_area(const BvhNode *node)
 {
-    double x = node->bounds[1][0] - node->bounds[0][0], y = node->bounds[1][1] - node->bounds[0][1];
-    double z = node->bounds[1][2] - node->bounds[0][2];
+    const double(*c)[3] = node->box.corner;
+    double x = c[1][0] - c[0][0], y = c[1][1] - c[0][1], z = c[1][2] - c[0][2];
     return x * y + y * z + z * x;
 }
 
@@ -49,11 +49,7 @@ static int gather_children(const Bvh *binary, int index, int children[WIDE_BVH_W
 static int make_leaf(WideBvh *wide, const BvhNode *node)
 {
     WideBvhLeaf *leaf = &wide->leaves[wide->leaf_count];
-    *leaf = (WideBvhLeaf){.first = node->first, .count = node->count};
-    for (int k = 0; k < 3; k++) {
-        leaf->bounds[0][k] = node->bounds[0][k];
-        leaf->bounds[1][k] = node->bounds[1][k];
-    }
+    *leaf = (WideBvhLeaf){node->box, node->first, node->count};
     return wide->leaf_count++;
 }
 
@@ -71,8 +67,8 @@ static int make_wide(WideBvh *wide, const Bvh *binary, int index)
             node->bounds[0][axis][k] = INFINITY;
             node->bounds[1][axis][k] = -INFINITY;
             if (c) {
-                double lower = (c->bounds[0][axis] - wide->centre[axis]) * wide->scale;
-                double upper = (c->bounds[1][axis] - wide->centre[axis]) * wide->scale;
+                double lower = (c->box.corner[0][axis] - wide->centre[axis]) * wide->scale;
+                double upper = (c->box.corner[1][axis] - wide->centre[axis]) * wide->scale;
                 float_bracket(lower, &node->bounds[0][axis][k], &unused);
                 float_bracket(upper, &unused, &node->bounds[1][axis][k]);
             }
@@ -89,8 +85,8 @@ static void choose_frame(WideBvh *wide, const BvhNode *root)
 {
     double half = 0.0;
     for (int k = 0; k < 3; k++) {
-        wide->centre[k] = 0.5 * (root->bounds[0][k] + root->bounds[1][k]);
-        half = max2(half, 0.5 * (root->bounds[1][k] - root->bounds[0][k]));
+        wide->centre[k] = 0.5 * (root->box.corner[0][k] + root->box.corner[1][k]);
+        half = max2(half, 0.5 * (root->box.corner[1][k] - root->box.corner[0][k]));
     }
     int exponent = 0;
     if (half > 0.0 && isfinite(half))
@@ -193,8 +189,8 @@ static int leaf_hit(const WideBvhLeaf *leaf, const BoxRay *r, double tmax)
 {
     double near = 0.0, far = tmax;
     for (int k = 0; k < 3; k++) {
-        double t_near = (leaf->bounds[r->near[k]][k] - r->exact_origin[k]) * r->exact_inverse[k];
-        double t_far = (leaf->bounds[1 - r->near[k]][k] - r->exact_origin[k]) * r->exact_inverse[k];
+        double t_near = (leaf->box.corner[r->near[k]][k] - r->exact_origin[k]) * r->exact_inverse[k];
+        double t_far = (leaf->box.corner[1 - r->near[k]][k] - r->exact_origin[k]) * r->exact_inverse[k];
         near = t_near > near ? t_near : near;
         far = t_far < far ? t_far : far;
     }

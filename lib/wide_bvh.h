@@ -22,8 +22,8 @@ typedef struct {
 } WideBvhNode;
 
 typedef struct {
-    double bounds[2][3]; /* its box in the scene's coordinates, as the binary tree's */
-    int first, count;    /* its primitives: entries first .. first + count - 1 below */
+    Box box;          /* in the scene's coordinates, as the binary tree's */
+    int first, count; /* its primitives: entries first .. first + count - 1 below */
 } WideBvhLeaf;
 
 typedef struct {

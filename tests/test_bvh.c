@@ -365,7 +365,7 @@ static int inside(const BvhNode *node, Vec3 lower, Vec3 upper)
 {
     const double lo[3] = {lower.x, lower.y, lower.z}, hi[3] = {upper.x, upper.y, upper.z};
     for (int k = 0; k < 3; k++)
-        if (!(node->bounds[0][k] < lo[k] && node->bounds[1][k] > hi[k]))
+        if (!(node->box.corner[0][k] < lo[k] && node->box.corner[1][k] > hi[k]))
             return 0;
     return 1;
 }
@@ -380,8 +380,8 @@ static int check_enclosed(const Scene *scene, int index)
         const BvhNode *children[2] = {&bvh->nodes[index + 1], &bvh->nodes[node->right]};
         for (int c = 0; c < 2; c++)
             for (int k = 0; k < 3; k++)
-                assert_true(children[c]->bounds[0][k] >= node->bounds[0][k] &&
-                            children[c]->bounds[1][k] <= node->bounds[1][k]);
+                assert_true(children[c]->box.corner[0][k] >= node->box.corner[0][k] &&
+                            children[c]->box.corner[1][k] <= node->box.corner[1][k]);
         return check_enclosed(scene, index + 1) + check_enclosed(scene, node->right);
     }
     for (int i = node->first; i < node->first + node->count; i++) {

@@ -67,9 +67,9 @@ static int check_enclosed(const Scene *scene, int index)
             Vec3 lower, upper;
             primitive_bounds(scene, wide->primitives[i], &lower, &upper);
             assert_true(encloses(wide, node, k, lower, upper));
-            assert_true(leaf->bounds[0][0] < lower.x && leaf->bounds[0][1] < lower.y &&
-                        leaf->bounds[0][2] < lower.z && leaf->bounds[1][0] > upper.x &&
-                        leaf->bounds[1][1] > upper.y && leaf->bounds[1][2] > upper.z);
+            const double(*c)[3] = leaf->box.corner;
+            assert_true(c[0][0] < lower.x && c[0][1] < lower.y && c[0][2] < lower.z &&
+                        c[1][0] > upper.x && c[1][1] > upper.y && c[1][2] > upper.z);
         }
     }
     return found;
