@@ -66,7 +66,7 @@ DEPS_OK     := $(BUILD)/.deps-ok
 # ---- which chapter introduces each file -------------------------------------------------
 LESSON   := $(wildcard lib/*.c lib/*.h chapters/*.c tests/*.c tests/*.h)
 BENCH    := $(wildcard bench/*.c bench/*.h bench/tests/*.c bench/tests/*.h bench/fuzz/*.c \
-                      bench/exercise/*.c bench/exercise/*.h)
+                      bench/exercise/*.c bench/exercise/*.h bench/lab/*.c bench/lab/*.h)
 SOURCES  := $(LESSON) $(BENCH)
 TAGS     := $(shell awk 'FNR == 1 && match($$0, /^\/\* [^ ]+ \((bench, )?chapter [0-9]+\)/) { \
                 t = substr($$0, RSTART, RLENGTH); sub(/.*chapter /, "", t); gsub(/[^0-9]/, "", t); \
@@ -323,6 +323,82 @@ figures:
 	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
 browser-test: $(GALLERY)
 	sh bench/browser_gallery.sh $(FIGURES)
+
+# ---- the lab (docs/lab.md) ---------------------------------------------------------------
+# build/lab/: the final chapter's lesson (lib/, as it is) and the lab's C (bench/lab/)
+# compiled to WebAssembly by Debian's emscripten (installed on demand) into one script
+# with the module inside it (SINGLE_FILE), which the page runs in web workers started
+# from Blobs, and the page itself: it opens from disk. The lab's programs are linked with
+# the recorder's wrappers (bench/lab/record.h: --wrap for every __wrap_NAME it defines);
+# the chapter programs are not. lab-native is the same C built natively, for the tests
+# and the benchmark; lab-reference (beside build/reference, whose cache it reads) writes
+# the references the page can load. NODE_PATH: emscripten's tools need Debian's node
+# modules also where `node` is not Debian's. Threads in WebAssembly would need a page
+# served with cross-origin isolation: the module has none (-pthread is left out), the
+# page's workers are its threads.
+LAB           := $(BUILD)/lab
+LAB_EMCC       = NODE_PATH=/usr/share/nodejs emcc
+LAB_EMCC_FLAGS = $(filter-out -pthread,$(REQUIRED)) -DCHAPTER=$(FINAL) -Ilib -Ibench $(PKG_CFLAGS) -O3 -MMD -MP
+LAB_LIB       := $(call upto,$(FINAL),$(LIB_SOURCES))
+LAB_BENCH     := bench/scene_file.c bench/material_names.c bench/renderer.c bench/image.c \
+                 bench/atomic_file.c bench/stats.c bench/ppm.c
+LAB_C         := bench/lab/json.c bench/lab/record.c bench/lab/lab.c
+LAB_PAGE      := $(addprefix $(LAB)/,index.html lab.js pool.js plot.js inspector.js)
+LAB_WRAPS      = $(shell grep -o '__wrap_[a-z_]*' bench/lab/record.c | sort -u | sed 's/__wrap_/--wrap=/' | paste -sd, -)
+PAREN         := (
+LAB_EXPORTS    = $(shell grep -o '^[A-Za-z].*[ *]lab_[a-z_]*$(PAREN)' bench/lab/lab.h | grep -o 'lab_[a-z_]*' | sed 's/^/_/' | paste -sd, -),_malloc,_free
+LAB_OBJS      := $(patsubst %.c,$(LAB)/wasm/%.o,$(LAB_LIB) $(LAB_BENCH) $(LAB_C))
+LAB_NATIVE    := $(LAB)/lab-native
+LAB_REFERENCE := $(BUILD)/lab-reference
+
+.PHONY: lab lab-test lab-bench lab-references
+$(LAB)/.emscripten: | $(DEPS_OK)
+	@sh .ci/install-deps emscripten nodejs
+	@mkdir -p $(@D) && touch $@
+
+$(LAB)/wasm/%.o: %.c | $(LAB)/.emscripten
+	@mkdir -p $(@D)
+	$(LAB_EMCC) $(LAB_EMCC_FLAGS) -c $< -o $@
+
+# stb_image_write's code, which Debian ships as a library, compiled from its header here.
+$(LAB)/wasm/bench/image.o: LAB_EMCC_FLAGS += -DSTB_IMAGE_WRITE_IMPLEMENTATION
+
+$(LAB)/wasm/lab_module.js: $(LAB_OBJS) bench/lab/record.c bench/lab/lab.h
+	$(LAB_EMCC) -O3 $(LAB_OBJS) -Wl,$(LAB_WRAPS) -sEXPORTED_FUNCTIONS=$(LAB_EXPORTS) \
+	    -sEXPORTED_RUNTIME_METHODS=UTF8ToString -sALLOW_MEMORY_GROWTH=1 -sSINGLE_FILE=1 \
+	    -sENVIRONMENT=web,worker -sMODULARIZE=1 -sEXPORT_NAME=createLabModule -o $@
+
+$(LAB)/embed: bench/lab/embed.c | $(DEPS_OK)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) $< $(LDFLAGS) -o $@
+
+$(LAB)/lab_worker.js: $(LAB)/embed $(LAB)/wasm/lab_module.js bench/lab/worker.js
+	$(LAB)/embed LAB_WORKER $(LAB)/wasm/lab_module.js bench/lab/worker.js > $@.tmp && mv $@.tmp $@
+
+# The scenes, and each chapter's program and default scene as its source declares them.
+$(LAB)/lab_data.js: $(LAB)/embed $(wildcard scenes/*.scene) $(PROGRAMS) bench/lab/lab.c
+	{ $(LAB)/embed LAB_SCENES $(wildcard scenes/*.scene) && \
+	  last=$$(sed -n 's/^#define LAB_CHAPTERS \([0-9]*\)/\1/p' bench/lab/lab.c) && \
+	  printf 'var LAB_CHAPTERS = [\n' && \
+	  for p in $(PROGRAMS); do n=$$(basename $$p | sed 's/^ch0*\([0-9]*\)_.*/\1/'); \
+	      [ $$n -le $$last ] || continue; \
+	      scene=$$(sed -n 's/.*\.scene = "scenes\/\([^"]*\)".*/\1/p' $$p | head -n 1); \
+	      printf '{"number": %s, "program": "%s", "scene": "%s"},\n' $$n $$(basename $$p .c) $$scene; \
+	  done && printf '];\n'; } > $@.tmp && mv $@.tmp $@
+
+$(LAB)/%: bench/lab/%
+	@mkdir -p $(@D)
+	cp $< $@
+
+lab: $(LAB_PAGE) $(LAB)/lab_data.js $(LAB)/lab_worker.js $(LAB_NATIVE)
+	@mkdir -p $(LAB)/references
+	@{ printf 'var LAB_REFERENCES = ['; for f in $(LAB)/references/*-*.js; do \
+	      [ -e "$$f" ] && printf '"%s",' "$$(basename $$f)"; done; printf '];\n'; } \
+	    > $(LAB)/references/index.js
+	@echo "the lab: $(LAB)/index.html (open it from disk); $$(ls $(LAB)/references | grep -c -- '-.*\.js$$') references"
+
+$(LAB_NATIVE): $(patsubst %.c,$(BUILD)/chapter$(FINAL)/%.o,$(LAB_C) bench/lab/lab_native.c) $(BUILD)/chapter$(FINAL)/libmc.a
+	$(CC) $^ $(LDFLAGS) -Wl,$(LAB_WRAPS) $(LIBS) -o $@
 
 sanitize:
 	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize \
