@@ -397,6 +397,27 @@ lab: $(LAB_PAGE) $(LAB)/lab_data.js $(LAB)/lab_worker.js $(LAB_NATIVE)
 	    > $(LAB)/references/index.js
 	@echo "the lab: $(LAB)/index.html (open it from disk); $$(ls $(LAB)/references | grep -c -- '-.*\.js$$') references"
 
+$(LAB_REFERENCE): $(BUILD)/chapter$(FINAL)/bench/lab/lab_reference.o $(BUILD)/chapter$(FINAL)/libmc.a
+	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
+
+# References for the page (bench/lab/lab_reference.c): the room at depth 8 (chapters 2-5,
+# Schlick's and the exact Fresnel) and 64 (6-8), each at the widths LAB_SIZES, with the
+# samples the chapter programs give them, so that what `make figures` cached is found
+# (a reference not cached is rendered: minutes at 800 pixels).
+LAB_SIZES ?= 256 $(if $(QUICK),200,800)
+LAB_REFERENCE_SETTINGS := "--depth 8 --reference-spp 64" "--depth 8 --fresnel exact --reference-spp 128" \
+                          "--depth 64 --reference-spp 128"
+lab-references: $(LAB_REFERENCE) $(REFERENCE_BIN)
+	@for size in $(LAB_SIZES); do for settings in $(LAB_REFERENCE_SETTINGS); do \
+	    $(LAB_REFERENCE) --quiet --size $$size $$settings --out $(LAB)/references || exit 1; \
+	done; done
+	@$(MAKE) --no-print-directory lab
+
+# The page in headless Chromium against the native programs (bench/lab/browser_lab.js).
+lab-test: lab $(CHAPTER_BINS) $(REFERENCE_BIN) $(LAB_REFERENCE)
+	@sh .ci/install-deps chromium nodejs
+	node bench/lab/browser_lab.js $(LAB) $(BUILD) $(BUILD)/lab-test
+
 $(LAB_NATIVE): $(patsubst %.c,$(BUILD)/chapter$(FINAL)/%.o,$(LAB_C) bench/lab/lab_native.c) $(BUILD)/chapter$(FINAL)/libmc.a
 	$(CC) $^ $(LDFLAGS) -Wl,$(LAB_WRAPS) $(LIBS) -o $@
 

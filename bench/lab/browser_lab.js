@@ -3,8 +3,9 @@
  *
  *   node bench/lab/browser_lab.js LAB_DIR PROGRAMS_DIR OUT_DIR
  *
- * LAB_DIR holds the page and lab-native (make lab), PROGRAMS_DIR the chapter programs.
- * The native side is run first, into OUT_DIR/native. Checks:
+ * LAB_DIR holds the page and lab-native (make lab), PROGRAMS_DIR the chapter programs
+ * and lab-reference. The native side is run first, into OUT_DIR/native; the page is
+ * tested in a copy, OUT_DIR/page, given a reference of its own. Checks:
  *   1. the page loads from file:// and writes nothing on its console, and a copy of it
  *      with an error planted is caught writing one (the check can fail);
  *   2. chapter 2's and chapter 7's estimators, N samples at seed 1, equal the chapter
@@ -15,7 +16,9 @@
  *      character for character, and account for the radiance;
  *   4. the scene editor's message for each bad scene is the command line's (the last
  *      chapter's program, run on the same text under the same name);
- *   5. screenshots of the page's states (one panel with the inspector open on a clicked
+ *   5. a reference of `make lab-references` loads, and the page's error against it is
+ *      what the chapter programs measure (lab-reference --error) for the same image;
+ *   6. screenshots of the page's states (one panel with the inspector open on a clicked
  *      pixel, its plan, two panels side by side with their plot, the editor with an
  *      error) in OUT_DIR, for a person to look at.
  * The agreement test (after Mitsuba's render tests): where two values differ, z = |a - b|
@@ -32,7 +35,7 @@ const {Chromium, fileUrl} = require("./chromium.js");
 const childProcess = require("child_process");
 
 const [labDir, programsDir, outDir] = process.argv.slice(2);
-const nativeDir = path.join(outDir, "native");
+const nativeDir = path.join(outDir, "native"), pageDir = path.join(outDir, "page");
 const LEVEL = 0.01;
 let failures = 0;
 
@@ -127,6 +130,9 @@ const RECORDS = [
     {scene: "room.scene", settings: "chapter=8 size=48 spp=2 passes=2", col: 32, row: 38, first: 1, count: 3},
 ];
 
+/* The reference of IMAGES[1]'s image (chapter 7: depth 64, Schlick), its error measured natively. */
+const REFERENCE = {args: ["--size", "48", "--depth", "64", "--reference-spp", "8"], settings: "chapter=7 size=48 spp=8"};
+
 /* Bad scenes for the editor: the room with one thing wrong. */
 const EDITS = [
     ["an unknown keyword", function (t) { return t + "cube white 0 0 0 1\n"; }],
@@ -161,7 +167,17 @@ function lastChapter() {
     return {number: Number(all[all.length - 1][1]), program: all[all.length - 1][2]};
 }
 
+/* The page's copy, with only its own files and references. */
+function copyPage() {
+    fs.rmSync(pageDir, {recursive: true, force: true});
+    fs.mkdirSync(path.join(pageDir, "references"), {recursive: true});
+    for (const file of fs.readdirSync(labDir))
+        if (/\.(html|js)$/.test(file))
+            fs.copyFileSync(path.join(labDir, file), path.join(pageDir, file));
+}
+
 function prepareNative() {
+    copyPage();
     fs.rmSync(nativeDir, {recursive: true, force: true});
     fs.mkdirSync(path.join(nativeDir, "editor"), {recursive: true});
     const labNative = path.resolve(labDir, "lab-native");
@@ -182,6 +198,17 @@ function prepareNative() {
             throw new Error("lab-native record " + c.settings + " failed: " + result.stderr);
         c.native = result.stdout.trim();
     });
+    const reference = run(path.resolve(programsDir, "lab-reference"), REFERENCE.args.concat(
+        ["--quiet", "--out", path.join(pageDir, "references")]));
+    const measured = run(path.resolve(programsDir, "lab-reference"), REFERENCE.args.concat(
+        ["--quiet", "--out", path.join(pageDir, "references"), "--error", path.join(nativeDir, "image1.pfm")]));
+    if (reference.status !== 0 || measured.status !== 0)
+        throw new Error("lab-reference failed: " + reference.stderr + measured.stderr);
+    const numbers = /rmse (\S+) rel_mse (\S+)/.exec(measured.stdout);
+    REFERENCE.rmse = Number(numbers[1]);
+    REFERENCE.relMse = Number(numbers[2]);
+    const names = fs.readdirSync(path.join(pageDir, "references")).filter(function (f) { return /-.*\.js$/.test(f); });
+    fs.writeFileSync(path.join(pageDir, "references", "index.js"), "var LAB_REFERENCES = " + JSON.stringify(names) + ";\n");
     const last = lastChapter(), room = fs.readFileSync("scenes/room.scene", "utf8");
     const editor = path.join(nativeDir, "editor");
     EDITS.forEach(function (edit) {
@@ -203,8 +230,8 @@ function prepareNative() {
 
 async function checkConsole(browser, url) {
     const broken = path.join(outDir, "broken.html");
-    fs.writeFileSync(broken, fs.readFileSync(path.join(labDir, "index.html"), "utf8")
-        .replace("<head>", "<head><base href=\"" + fileUrl(labDir) + "/\"><script>console.error(\"canary\")</script>"));
+    fs.writeFileSync(broken, fs.readFileSync(path.join(pageDir, "index.html"), "utf8")
+        .replace("<head>", "<head><base href=\"" + fileUrl(pageDir) + "/\"><script>console.error(\"canary\")</script>"));
     await browser.navigate(fileUrl(broken), 30);
     await browser.evaluate("new Promise(r => setTimeout(r, 500))");
     const caught = browser.problems.some(function (p) { return p.indexOf("canary") >= 0; });
@@ -275,6 +302,18 @@ async function checkRecords(browser) {
     }
 }
 
+async function checkReference(browser, url) {
+    await browser.navigate(url + "#" + REFERENCE.settings.replace(/ /g, "&"), 30);
+    await browser.until("labTest.state().panels.every(p => p.complete || p.error)", 120, "chapter 7's render");
+    await browser.until("labTest.state().panels[0].rmse !== null", 10, "the error against the reference");
+    const panel = (await browser.evaluate("labTest.state()")).panels[0];
+    const close = function (a, b) { return Math.abs(a - b) <= 1e-5 * Math.abs(b); };
+    report(panel.reference && close(panel.rmse, REFERENCE.rmse) && close(panel.relMse, REFERENCE.relMse),
+           "the reference loads (" + panel.reference + "), and the page's RMSE " + panel.rmse + " and relative MSE " +
+           panel.relMse + " are lab-reference's " + REFERENCE.rmse + " and " + REFERENCE.relMse +
+           " within 1e-5 (the page measures its mean in doubles, the programs in floats)");
+}
+
 async function checkEditor(browser, url, last) {
     await browser.navigate(url + "#chapter=" + last.number + "&size=64&spp=1&passes=1", 30);
     await browser.until("labTest.state().panels.every(p => p.complete || p.error)", 60, "a render");
@@ -307,7 +346,7 @@ async function screenshots(browser, url) {
     await box(browser, "#plan");
     await browser.screenshot(path.join(outDir, "lab_inspector_plan.png"));
 
-    await browser.navigate(url + "#chapter=3&M=1&spp=16&size=160&b.M=30&fairness=samples", 30);
+    await browser.navigate(url + "#chapter=3&M=1&spp=8&size=128&b.M=30&fairness=samples", 30);
     await browser.until("labTest.state().panels.every(p => p.complete || p.error)", 300, "the two panels");
     const two = await browser.evaluate("labTest.state()");
     report(two.panels.length === 2 && two.panels.every(function (p) { return !p.error && p.history > 2; }),
@@ -321,11 +360,12 @@ async function screenshots(browser, url) {
     fs.mkdirSync(outDir, {recursive: true});
     const last = prepareNative();
     const browser = await Chromium.open(1400, 1400);
-    const url = fileUrl(path.join(labDir, "index.html"));
+    const url = fileUrl(path.join(pageDir, "index.html"));
     try {
         await checkConsole(browser, url);
         await checkImages(browser);
         await checkRecords(browser);
+        await checkReference(browser, url);
         await checkEditor(browser, url, last);
         await screenshots(browser, url);
         report(browser.problems.length === 0, "no console message on the page through all of it" +

@@ -263,7 +263,7 @@ function currentError(panel) {
     const render = panel.render;
     if (panel.reference && panel.reference.image.length === render.mean.length) {
         const error = render.errorAgainst(panel.reference);
-        return {value: error.rmse, text: "RMSE " + number(error.rmse, 4) + ", relative MSE " +
+        return {value: error.rmse, rmse: error.rmse, relMse: error.relMse, text: "RMSE " + number(error.rmse, 4) + ", relative MSE " +
                 number(error.relMse, 4) + " against the reference (" + panel.reference.spp + " spp)"};
     }
     const se = render.standardError();
@@ -281,6 +281,7 @@ function showStats(panel) {
     const chapter8 = render.info.settings.chapter === 8, done = render.stepsDone();
     const rays = render.rays[0] + render.rays[1] + render.rays[2] + render.rays[3];
     const wall = render.wallSeconds(), error = currentError(panel);
+    panel.measured = error;
     stats.textContent =
         (chapter8 ? "passes " + number(done, 3) + " of " + render.steps + " (" +
                     number(done * render.info.settings.spp, 4) + " spp)"
@@ -490,6 +491,8 @@ window.labTest = {
                         complete: !!(r && r.finished), steps: r ? r.steps : 0,
                         done: r ? r.stepsDone() : 0, started: r ? r.started : null,
                         finished: r ? r.finished : null, reference: !!panel.reference,
+                        rmse: panel.measured ? panel.measured.rmse : null,
+                        relMse: panel.measured ? panel.measured.relMse : null,
                         history: r ? r.history.length : 0};
             }),
             inspector: {summary: $("path-summary").textContent, rows: $("path-table").rows.length,
