@@ -421,6 +421,17 @@ lab-test: lab $(CHAPTER_BINS) $(REFERENCE_BIN) $(LAB_REFERENCE)
 $(LAB_NATIVE): $(patsubst %.c,$(BUILD)/chapter$(FINAL)/%.o,$(LAB_C) bench/lab/lab_native.c) $(BUILD)/chapter$(FINAL)/libmc.a
 	$(CC) $^ $(LDFLAGS) -Wl,$(LAB_WRAPS) $(LIBS) -o $@
 
+# The same without the wrappers (each __real_NAME is NAME, so no call is noted), for the
+# benchmark: what the recorder costs natively when it is linked in but not recording.
+$(LAB_NATIVE)-unwrapped: $(patsubst %.c,$(BUILD)/chapter$(FINAL)/%.o,$(LAB_C) bench/lab/lab_native.c) $(BUILD)/chapter$(FINAL)/libmc.a
+	$(CC) $^ $(LDFLAGS) -Wl,$(subst --wrap=,--defsym=__real_,$(shell echo '$(LAB_WRAPS)' | sed 's/--wrap=\([a-z_]*\)/--wrap=\1=\1/g')) $(LIBS) -o $@
+
+# The lab's benchmark (bench/lab/lab_bench.js): WebAssembly's speed per core against the
+# native build's, the first image's time, the main thread's longest tasks.
+lab-bench: lab $(LAB_NATIVE)-unwrapped
+	@sh .ci/install-deps chromium nodejs
+	node bench/lab/lab_bench.js $(LAB) $(BUILD)/lab-bench
+
 sanitize:
 	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize \
 	    CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \

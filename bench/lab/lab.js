@@ -207,7 +207,8 @@ function startRenders() {
             panel.image.getContext("2d").clearRect(0, 0, panel.image.width, panel.image.height);
             buildForm(panel);
             return loadReference(referenceName(answer.info)).then(function (reference) {
-                panel.reference = reference;
+                if (reference && reference.image.length === panel.render.mean.length)
+                    panel.render.setReference(reference);
                 return panel.render;
             });
         }, function (error) {
@@ -240,31 +241,37 @@ function tonemap(value, exposure) {
     return Math.floor(255 * encoded + 0.5);
 }
 
-function drawBands(panel, all) {
+/* Draw the bands whose pixels changed (all of them with `all`), in the frame's budget of
+ * milliseconds: the rest wait for the next frame, so that the page stays responsive. */
+function drawBands(panel, all, budget) {
     const render = panel.render, exposure = Math.pow(2, Number($("exposure").value));
-    const context = panel.image.getContext("2d");
-    const bands = all ? Array.from({length: render.bands}, function (_, i) { return i; }) : Array.from(render.dirty);
-    render.dirty.clear();
-    for (const band of bands) {
+    const context = panel.image.getContext("2d"), start = performance.now();
+    if (!render.imageData)
+        render.imageData = context.createImageData(render.width, render.bandRows);
+    const data = render.imageData, pixels = data.data;
+    if (all)
+        for (let band = 0; band < render.bands; band++) render.dirty.add(band);
+    for (const band of render.dirty) {
+        if (!all && performance.now() - start > budget) break;
+        render.dirty.delete(band);
         const row0 = band * render.bandRows, rows = Math.min(render.bandRows, render.height - row0);
-        const data = context.createImageData(render.width, rows), pixels = data.data;
         for (let i = 0; i < render.width * rows; i++) {
             const p = row0 * render.width + i;
             for (let c = 0; c < 3; c++)
                 pixels[4 * i + c] = render.count[p] ? tonemap(render.mean[3 * p + c], exposure) : 0;
             pixels[4 * i + 3] = 255;
         }
-        context.putImageData(data, 0, row0);
+        context.putImageData(data, 0, row0, 0, 0, render.width, rows);
     }
 }
 
 /* The panel's error now: against the reference, or the standard error of its samples. */
 function currentError(panel) {
     const render = panel.render;
-    if (panel.reference && panel.reference.image.length === render.mean.length) {
-        const error = render.errorAgainst(panel.reference);
+    if (render.reference) {
+        const error = render.error();
         return {value: error.rmse, rmse: error.rmse, relMse: error.relMse, text: "RMSE " + number(error.rmse, 4) + ", relative MSE " +
-                number(error.relMse, 4) + " against the reference (" + panel.reference.spp + " spp)"};
+                number(error.relMse, 4) + " against the reference (" + render.reference.spp + " spp)"};
     }
     const se = render.standardError();
     return {value: se, text: isNaN(se) ? "error: waiting for two samples in every pixel"
@@ -299,7 +306,8 @@ function showStats(panel) {
 function drawPlot() {
     const series = activePanels().filter(function (p) { return p.render; }).map(function (panel) {
         const s = panel.render.info.settings;
-        return {label: panel.name.toUpperCase() + ": chapter " + s.chapter + (panel.reference ? ", RMSE" : ", standard error"),
+        return {label: panel.name.toUpperCase() + ": " + settingsText(panel).replace(/ program=\S+/, "") +
+                       (panel.render.reference ? " (RMSE)" : " (standard error)"),
                 colour: PANEL_COLOURS[panel.name],
                 points: panel.render.history.map(function (h) { return [h[0], h[2]]; })};
     });
@@ -311,7 +319,7 @@ function frame(now) {
     const started = performance.now();
     for (const panel of activePanels())
         if (panel.render && panel.render.dirty.size)
-            drawBands(panel, false);
+            drawBands(panel, false, 8);
     if (now - lastStats > 250) {
         lastStats = now;
         activePanels().forEach(showStats);
@@ -463,7 +471,8 @@ window.labTest = {
                     }
                     own.setWorkers(0);
                     resolve({width: render.width, height: render.height, image: base64(image),
-                             stdError: base64(se), rays: render.rays, seconds: render.wallSeconds()});
+                             stdError: base64(se), rays: render.rays, seconds: render.wallSeconds(),
+                             workerSeconds: render.seconds});
                 }, function (r, message) { own.setWorkers(0); reject(new Error(message)); });
                 own.run([render]);
             });
@@ -490,7 +499,7 @@ window.labTest = {
                 return {error: panel.error, stats: panel.stats.textContent,
                         complete: !!(r && r.finished), steps: r ? r.steps : 0,
                         done: r ? r.stepsDone() : 0, started: r ? r.started : null,
-                        finished: r ? r.finished : null, reference: !!panel.reference,
+                        finished: r ? r.finished : null, reference: !!(r && r.reference),
                         rmse: panel.measured ? panel.measured.rmse : null,
                         relMse: panel.measured ? panel.measured.relMse : null,
                         history: r ? r.history.length : 0};

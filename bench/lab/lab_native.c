@@ -100,7 +100,9 @@ static void render_command(Lab *lab, const char *path)
     free(out);
 }
 
-/* Rays per second on this thread: whole renders until `seconds` have passed. */
+/* Rays per second on this thread: whole renders until `seconds` have passed; per second
+ * of wall time and per second of this process's processor time (what other programs on
+ * a shared machine do not change). */
 static void speed_command(Lab *lab, double seconds)
 {
     int width = lab_width(lab), height = lab_height(lab);
@@ -108,15 +110,16 @@ static void speed_command(Lab *lab, double seconds)
     double *out = malloc(3 * sizeof *out * BAND * (size_t)width);
     if (!pixels || !out)
         fail(1, "out of memory");
-    double start = stats_now(), rays = 0.0, elapsed;
+    double start = stats_now(), cpu_start = stats_cpu_now(), rays = 0.0, elapsed;
     int renders = 0;
     do {
         rays += render_all(lab, pixels, out);
         renders++;
         elapsed = stats_now() - start;
     } while (elapsed < seconds);
-    printf("rays %.0f seconds %.3f renders %d rays_per_second %.0f\n", rays, elapsed, renders,
-           rays / elapsed);
+    double cpu = stats_cpu_now() - cpu_start;
+    printf("rays %.0f seconds %.3f cpu_seconds %.3f renders %d rays_per_second %.0f "
+           "rays_per_cpu_second %.0f\n", rays, elapsed, cpu, renders, rays / elapsed, rays / cpu);
     free(pixels);
     free(out);
 }

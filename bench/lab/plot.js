@@ -73,22 +73,23 @@ function drawLogLogPlot(canvas, series, labels) {
 
     const anchor = series.map(function (s) { return s.points[s.points.length - 1]; })
         .filter(function (p) { return p && p[0] > 0 && p[1] > 0; })[0];
-    if (anchor) { /* the slope -1/2 through it */
-        context.save();
-        context.setLineDash([6, 4]);
-        context.strokeStyle = "#999";
-        context.beginPath();
-        context.moveTo(px(x0), py(anchor[1] * Math.sqrt(anchor[0] / x0)));
-        context.lineTo(px(x1), py(anchor[1] * Math.sqrt(anchor[0] / x1)));
-        context.stroke();
-        context.restore();
-        context.textAlign = "left";
-        context.fillText("slope 1/\u221at", left + 6, top + 14);
-    }
     context.save();
     context.beginPath();
     context.rect(left, top, width - left - right, height - top - bottom);
     context.clip();
+    if (anchor) { /* the slope -1/2 through it */
+        context.setLineDash([6, 4]);
+        context.strokeStyle = "#999";
+        context.lineWidth = 1;
+        context.beginPath();
+        context.moveTo(px(x0), py(anchor[1] * Math.sqrt(anchor[0] / x0)));
+        context.lineTo(px(x1), py(anchor[1] * Math.sqrt(anchor[0] / x1)));
+        context.stroke();
+        context.setLineDash([]);
+        context.fillStyle = "#444";
+        context.textAlign = "left";
+        context.fillText("dashed: slope 1/\u221at", left + 6, top + 14);
+    }
     series.forEach(function (s) {
         context.strokeStyle = s.colour;
         context.lineWidth = 2;

@@ -53,6 +53,10 @@ class Render {
         this.dirty = new Set();
         this.error = null;
         this.history = [];                         /* [processor seconds, wall seconds, error] */
+        this.empty = this.single = pixels;         /* pixels with no step, with fewer than two */
+        this.variance = 0;                         /* the sum of the pixels' squared standard errors */
+        this.reference = null;
+        this.spare = [];                           /* result buffers to give back to workers */
     }
 
     tasksLeft() {
@@ -79,6 +83,7 @@ class Render {
         for (let next; (next = this.waiting.get(this.added[band] * this.bands + band));) {
             this.waiting.delete(this.added[band] * this.bands + band);
             this.add(next);
+            this.spare.push(next.values.buffer);
             this.added[band]++;
             this.dirty.add(band);
         }
@@ -86,19 +91,41 @@ class Render {
             this.finished = performance.now();
     }
 
+    /* Measure against this reference from now on: {image, mse, relMse} (bench/measure.h). */
+    setReference(reference) {
+        this.reference = reference;
+        this.squared = this.relative = 0;
+        for (let i = 0; i < this.mean.length; i++)
+            this.addDifference(i, 1);
+    }
+
+    /* Add (sign 1) or take out (-1) value i's squared difference from the reference. */
+    addDifference(i, sign) {
+        const r = this.reference.image[i], d = this.mean[i] - r;
+        this.squared += sign * d * d;
+        this.relative += sign * d * d / (r * r + 0.01);
+    }
+
     /* Welford's update of each pixel with its value of this step (renderer.c's
-     * pixel_sum_add), a value that is not finite being dropped. */
+     * pixel_sum_add), a value that is not finite being dropped. The sums behind the
+     * errors follow each pixel's change, so that measuring costs nothing per pixel. */
     add(result) {
-        const values = result.values, first = result.row0 * this.width;
+        const values = result.values, first = result.row0 * this.width, reference = this.reference;
         for (let i = 0; i < result.rows * this.width; i++) {
             const r = values[3 * i], g = values[3 * i + 1], b = values[3 * i + 2];
             if (!(isFinite(r) && isFinite(g) && isFinite(b)))
                 continue;
             const p = first + i, n = ++this.count[p];
+            if (n === 1) this.empty--;
+            if (n === 2) this.single--;
             for (let c = 0; c < 3; c++) {
-                const value = values[3 * i + c], delta = value - this.mean[3 * p + c];
-                this.mean[3 * p + c] += delta / n;
-                this.m2[3 * p + c] += delta * (value - this.mean[3 * p + c]);
+                const k = 3 * p + c, value = values[3 * i + c], delta = value - this.mean[k];
+                if (reference) this.addDifference(k, -1);
+                if (n > 2) this.variance -= this.m2[k] / (n - 2) / (n - 1);
+                this.mean[k] += delta / n;
+                this.m2[k] += delta * (value - this.mean[k]);
+                if (n > 1) this.variance += this.m2[k] / (n - 1) / n;
+                if (reference) this.addDifference(k, 1);
             }
         }
     }
@@ -123,32 +150,17 @@ class Render {
      * / n): what the error of the image is, if its estimator is unbiased. NaN until
      * every pixel has two steps. */
     standardError() {
-        let sum = 0;
-        for (let p = 0; p < this.count.length; p++) {
-            const n = this.count[p];
-            if (n < 2)
-                return NaN;
-            for (let c = 0; c < 3; c++)
-                sum += this.m2[3 * p + c] / (n - 1) / n;
-        }
-        return Math.sqrt(sum / this.mean.length);
+        return this.single > 0 ? NaN : Math.sqrt(Math.max(0, this.variance) / this.mean.length);
     }
 
-    /* RMSE and relative MSE against a reference (bench/measure.h): the squared
-     * differences less the reference's own variance. NaN until every pixel has a step. */
-    errorAgainst(reference) {
-        if (this.count.some(function (n) { return n === 0; }))
+    /* RMSE and relative MSE against the reference: the squared differences less the
+     * reference's own variance. NaN until every pixel has a step. */
+    error() {
+        if (this.empty > 0)
             return {rmse: NaN, relMse: NaN};
-        let raw = 0, rawRelative = 0;
-        const r = reference.image;
-        for (let i = 0; i < this.mean.length; i++) {
-            const d = this.mean[i] - r[i];
-            raw += d * d;
-            rawRelative += d * d / (r[i] * r[i] + 0.01);
-        }
-        const mse = raw / this.mean.length - reference.mse;
+        const mse = this.squared / this.mean.length - this.reference.mse;
         return {rmse: mse > 0 ? Math.sqrt(mse) : 0,
-                relMse: rawRelative / this.mean.length - reference.relMse};
+                relMse: this.relative / this.mean.length - this.reference.relMse};
     }
 }
 
@@ -211,12 +223,13 @@ class Pool {
             const task = render.nextTask();
             task.type = "band";
             task.job = render.setup.key;
+            task.buffer = render.spare.pop() || null; /* filled and sent back: less garbage */
             if (slot.key !== render.setup.key) {
                 task.setup = render.setup;
                 slot.key = render.setup.key;
             }
             slot.render = render;
-            slot.worker.postMessage(task);
+            slot.worker.postMessage(task, task.buffer ? [task.buffer] : []);
         }
     }
 

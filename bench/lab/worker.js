@@ -3,8 +3,9 @@
  *
  * It runs after the module's script in the same Blob (a page opened from disk can start
  * a worker only from a Blob), so createLabModule is defined. Messages in:
- *   {type: "band", job, setup?, step, row0, rows}   render a band (setup: the job's scene
- *                                                   and settings, when they are new here)
+ *   {type: "band", job, setup?, step, row0, rows, buffer}   render a band (setup: the
+ *                      job's scene and settings, when they are new here; buffer: an
+ *                      earlier result's, to fill again if it has the size)
  *   {type: "record", id, setup, col, row, first, count}   record paths (record.h)
  *   {type: "scene", id, setup}                      the scene's plan (lab_scene)
  * and out: {type: "band", job, step, row0, rows, values, rays, seconds}, {type: "record"
@@ -68,7 +69,10 @@ function renderBand(message) {
         M._free(out);
         throw failure();
     }
-    const values = new Float64Array(M.HEAPF64.buffer, out, count).slice();
+    const result = new Float64Array(M.HEAPF64.buffer, out, count);
+    const values = message.buffer && message.buffer.byteLength === 8 * count
+        ? new Float64Array(message.buffer) : new Float64Array(count);
+    values.set(result);
     M._free(out);
     const rays = [0, 1, 2, 3].map(function (kind) { return M._lab_rays(lab, kind); });
     postMessage({type: "band", job: message.job, step: message.step, row0: message.row0,

@@ -1,0 +1,125 @@
+/* lab_bench.js (bench, chapter 8): the lab's benchmark (make lab-bench). A benchmark, not
+ * a test: it asserts nothing and prints what it measures, with the goals beside it.
+ *
+ *   node bench/lab/lab_bench.js LAB_DIR OUT_DIR
+ *
+ * 1. Speed per core: the same render (the room, chapter 2's and chapter 7's estimators)
+ *    natively on one thread (lab-native-unwrapped: the native build without the
+ *    recorder's wrappers; lab-native: with them, not recording) and in the page on one
+ *    worker (rays over the worker's time), in turns, ROUNDS times each; the medians'
+ *    ratio. Goal: WebAssembly >= 0.6 x native.
+ * 2. The first full image of chapter 2's path tracer, 256 x 256, 1 spp, 2 workers: from
+ *    the page's start (navigation) and from the render's start. Goal: <= 1 s.
+ * 3. The main thread while rendering: the longest task (PerformanceObserver "longtask",
+ *    which reports tasks over 50 ms) between a render's start and end, and the longest
+ *    animation frame's work. Goal: never blocked for more than 50 ms.
+ * Everything goes to stdout and OUT_DIR/lab-bench.txt.
+ */
+"use strict";
+
+const childProcess = require("child_process");
+const fs = require("fs");
+const path = require("path");
+const {Chromium, fileUrl} = require("./chromium.js");
+
+const [labDir, outDir] = process.argv.slice(2);
+const ROUNDS = 3;
+const lines = [];
+
+function say(text) {
+    console.log(text);
+    lines.push(text);
+}
+
+function median(values) {
+    const sorted = values.slice().sort(function (a, b) { return a - b; });
+    return sorted[Math.floor(sorted.length / 2)];
+}
+
+/* Rays per second of one native thread (wall, processor). */
+function native(program, settings, seconds) {
+    const out = childProcess.execFileSync(path.join(labDir, program),
+        ["scenes/room.scene", settings, "speed", String(seconds)], {encoding: "utf8"});
+    const wall = Number(/rays_per_second (\d+)/.exec(out)[1]), cpu = Number(/rays_per_cpu_second (\d+)/.exec(out)[1]);
+    return {wall: wall, cpu: cpu};
+}
+
+/* Rays per second of one worker: its rays over its time in lab_render_band. */
+async function webAssembly(browser, settings) {
+    const result = await browser.evaluate("labTest.render('room.scene', " + JSON.stringify(settings) + ", 1)", 600);
+    return result.rays.reduce(function (a, b) { return a + b; }, 0) / result.workerSeconds;
+}
+
+async function speed(browser, settings) {
+    const wasm = [], plain = [], plainCpu = [], wrapped = [];
+    for (let round = 0; round < ROUNDS; round++) {
+        const unwrapped = native("lab-native-unwrapped", settings, 3);
+        plain.push(unwrapped.wall);
+        plainCpu.push(unwrapped.cpu);
+        wrapped.push(native("lab-native", settings, 3).wall);
+        wasm.push(await webAssembly(browser, settings));
+    }
+    const m = function (values) { return (median(values) / 1e6).toFixed(3); };
+    say("speed, " + settings + " (Mrays/s on one core, medians of " + ROUNDS + " rounds in turns):");
+    say("  native build         " + m(plain) + " per wall second, " + m(plainCpu) + " per processor second" +
+        "   [" + plain.map(function (v) { return (v / 1e6).toFixed(3); }).join(" ") + "]");
+    say("  native with wrappers " + m(wrapped) + " (the recorder linked in, not recording: " +
+        ((median(wrapped) / median(plain) - 1) * 100).toFixed(1) + "%)");
+    say("  WebAssembly, 1 worker " + m(wasm) + "   [" + wasm.map(function (v) { return (v / 1e6).toFixed(3); }).join(" ") + "]");
+    say("  ratio WebAssembly / native " + (median(wasm) / median(plain)).toFixed(2) + " (goal >= 0.6)");
+}
+
+async function firstImage(browser, url) {
+    const fromPage = [], fromRender = [];
+    for (let round = 0; round < ROUNDS; round++) {
+        await browser.navigate(url + "#chapter=2&spp=1&size=256&workers=2", 60);
+        await browser.until("labTest.state().panels.every(p => p.complete || p.error)", 60, "the first image");
+        const panel = (await browser.evaluate("labTest.state()")).panels[0];
+        fromPage.push(panel.finished / 1000);
+        fromRender.push((panel.finished - panel.started) / 1000);
+    }
+    say("first full image, chapter 2, 256 x 256, 1 spp, 2 workers (seconds, " + ROUNDS + " loads):");
+    say("  from the page's start   " + fromPage.map(function (v) { return v.toFixed(3); }).join(" ") +
+        " (median " + median(fromPage).toFixed(3) + ", goal <= 1)");
+    say("  from the render's start " + fromRender.map(function (v) { return v.toFixed(3); }).join(" ") +
+        " (median " + median(fromRender).toFixed(3) + ")");
+}
+
+async function mainThread(browser, url, fragment) {
+    await browser.navigate(url + fragment, 60);
+    await browser.until("labTest.state().panels.every(p => p.complete || p.error)", 600, fragment);
+    const state = await browser.evaluate("labTest.state()");
+    const start = Math.min.apply(null, state.panels.map(function (p) { return p.started; }));
+    const end = Math.max.apply(null, state.panels.map(function (p) { return p.finished; }));
+    const during = state.longTasks.filter(function (t) { return t.start + t.duration > start && t.start < end; });
+    const before = state.longTasks.filter(function (t) { return t.start + t.duration <= start; });
+    say("main thread, " + fragment + ", " + ((end - start) / 1000).toFixed(1) + " s of rendering: " +
+        (during.length ? during.length + " tasks over 50 ms, the longest " +
+                         Math.max.apply(null, during.map(function (t) { return t.duration; })).toFixed(0) + " ms"
+                       : "no task over 50 ms") +
+        "; longest frame's work " + state.longestFrame.toFixed(1) + " ms" +
+        (before.length ? "; before the render started: " + before.map(function (t) { return t.duration.toFixed(0) + " ms"; }).join(", ") : ""));
+}
+
+(async function main() {
+    fs.mkdirSync(outDir, {recursive: true});
+    const browser = await Chromium.open(1400, 1400);
+    const url = fileUrl(path.join(labDir, "index.html"));
+    try {
+        say("lab-bench on " + require("os").cpus().length + " cores, load average " +
+            require("os").loadavg().map(function (v) { return v.toFixed(2); }).join(" ") + ", " + new Date().toISOString());
+        await browser.navigate(url + "#chapter=2&spp=1&size=16", 60);
+        await speed(browser, "chapter=2 size=256 spp=8");
+        await speed(browser, "chapter=7 size=256 spp=4");
+        await firstImage(browser, url);
+        await mainThread(browser, url, "#chapter=2&spp=16&size=256&workers=2");
+        await mainThread(browser, url, "#chapter=7&spp=4&size=800&workers=2");
+        await mainThread(browser, url, "#chapter=8&passes=2&size=256&workers=2");
+        await mainThread(browser, url, "#chapter=3&M=1&spp=8&size=256&b.M=30&fairness=time&workers=2");
+        if (browser.problems.length)
+            say("console messages: " + browser.problems.join("; "));
+    } finally {
+        await browser.close();
+    }
+    fs.writeFileSync(path.join(outDir, "lab-bench.txt"), lines.join("\n") + "\n");
+})();
