@@ -21,6 +21,9 @@
 #   make bench            the speed benchmark (a benchmark, not a test)
 #   make gallery          rewrite build/figures/index.html from the figures there
 #   make browser-test     open that page in headless Chromium and check every image loads
+#   make lab              the lab: build/lab/index.html, every chapter live in the browser
+#                         (docs/lab.md); lab-test (in headless Chromium), lab-bench,
+#                         lab-references (the page's references, from the cache)
 #   make clean
 #
 # The lesson and the bench. lib/ is the lesson: what the chapters teach. bench/ measures
@@ -304,11 +307,13 @@ test: all check-sources
 # `make browser-test` opens it in headless Chromium. DIFFS: the folder with the
 # diff-chapterN.diff files to show.
 DIFFS   ?= $(BUILD)
+# The lab's page (make lab) as the gallery links to it, relative to the figures folder.
+LAB_LINK = $(shell realpath -m --relative-to=$(FIGURES) $(BUILD)/lab/index.html)
 .PHONY: gallery browser-test
 $(GALLERY): $(BUILD)/chapter$(FINAL)/bench/gallery_main.o $(BUILD)/chapter$(FINAL)/libmc.a
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 gallery: $(GALLERY)
-	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK)
 figures:
 	@start=$$(date +%s); started=$$(date '+%Y-%m-%d %H:%M:%S %z'); \
 	$(MAKE) --no-print-directory -j$$(nproc) $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) || exit 1; \
@@ -320,7 +325,7 @@ figures:
 	echo "make figures: $$seconds s"
 	@$(MAKE) --no-print-directory exercise-solutions
 	@for n in $(CHAPTERS); do $(MAKE) --no-print-directory diff-chapter$$n > /dev/null || exit 1; done
-	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK)
 browser-test: $(GALLERY)
 	sh bench/browser_gallery.sh $(FIGURES)
 

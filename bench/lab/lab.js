@@ -269,7 +269,7 @@ function drawBands(panel, all, budget) {
 function currentError(panel) {
     const render = panel.render;
     if (render.reference) {
-        const error = render.error();
+        const error = render.referenceError();
         return {value: error.rmse, rmse: error.rmse, relMse: error.relMse, text: "RMSE " + number(error.rmse, 4) + ", relative MSE " +
                 number(error.relMse, 4) + " against the reference (" + render.reference.spp + " spp)"};
     }
@@ -293,7 +293,7 @@ function showStats(panel) {
         (chapter8 ? "passes " + number(done, 3) + " of " + render.steps + " (" +
                     number(done * render.info.settings.spp, 4) + " spp)"
                   : "spp " + number(done, 3) + " of " + render.steps) +
-        (render.finished ? ", done" : "") + "  " + wall.toFixed(2) + " s  " +
+        (render.stopped ? ", stopped at equal time" : render.finished ? ", done" : "") + "  " + wall.toFixed(2) + " s  " +
         number(rays / wall / 1e6, 3) + " Mrays/s (" + number(rays / Math.max(render.seconds, 1e-9) / 1e6, 3) +
         " per worker)\n" + error.text;
     if (!isNaN(error.value) && error.value > 0) {
@@ -542,7 +542,7 @@ function start() {
     helper = new Helper();
     pool = new Pool(page.workers, function (render) {
         for (const panel of activePanels())
-            if (panel.render === render && render.finished)
+            if (panel.render && panel.render.finished)
                 showStats(panel);
     }, function (render, message) {
         for (const panel of activePanels())

@@ -7,7 +7,8 @@
  * image is the chapter program's, bit for bit where the WebAssembly arithmetic is the
  * native one, for any number of workers. With two renders the pool shares the workers
  * between them at equal samples (the one behind gets the next task) or at equal
- * processor time (the one that has used less).
+ * processor time (the one that has used less; when one has taken all its samples, the
+ * other stops there, at the same time).
  */
 "use strict";
 
@@ -60,7 +61,14 @@ class Render {
     }
 
     tasksLeft() {
-        return !this.error && this.issued < this.steps * this.bands;
+        return !this.error && !this.stopped && this.issued < this.steps * this.bands;
+    }
+
+    /* Stop here: the other panel, at equal time, has finished. */
+    stop() {
+        if (this.finished) return;
+        this.stopped = true;
+        this.finished = performance.now();
     }
 
     /* The next task, in step order. */
@@ -155,7 +163,7 @@ class Render {
 
     /* RMSE and relative MSE against the reference: the squared differences less the
      * reference's own variance. NaN until every pixel has a step. */
-    error() {
+    referenceError() {
         if (this.empty > 0)
             return {rmse: NaN, relMse: NaN};
         const mse = this.squared / this.mean.length - this.reference.mse;
@@ -236,9 +244,13 @@ class Pool {
     message(slot, event) {
         const message = event.data, render = slot.render;
         slot.render = null;
-        if (render && this.renders.indexOf(render) >= 0 && message.job === render.setup.key) {
+        if (render && !render.stopped && this.renders.indexOf(render) >= 0 &&
+            message.job === render.setup.key) {
             if (message.type === "band") {
                 render.accept(message);
+                if (render.finished && this.mode === "time") /* equal time reached */
+                    for (const other of this.renders)
+                        other.stop();
                 this.onResult(render);
             } else {
                 render.error = message.message;
