@@ -454,14 +454,17 @@ function base64(floats) {
 }
 
 window.labTest = {
-    /* Render a scene of scenes/ with these settings on `workers` workers of their own: the
-     * image (float32, rows from the top) and each pixel's standard error, as base64. */
-    render: function (sceneName, settings, workers) {
+    /* Render a scene of scenes/ with these settings on `workers` workers of their own, in
+     * bands of `bandRows` rows (default: the page's), each result delayed by up to
+     * `jitter` ms at random (so that they arrive out of order): the image (float32, rows
+     * from the top), the means as the page keeps them (float64), and each pixel's
+     * standard error, as base64. */
+    render: function (sceneName, settings, workers, bandRows, jitter) {
         const setup = {key: "test" + (++jobs), sceneName: sceneName, sceneText: scenes[sceneName],
                        settings: settings};
         return helper.ask("scene", setup).then(function (answer) {
             return new Promise(function (resolve, reject) {
-                const render = new Render(setup, answer.info);
+                const render = new Render(setup, answer.info, bandRows);
                 const own = new Pool(workers, function () {
                     if (!render.complete()) return;
                     const image = Float32Array.from(render.mean), se = new Float32Array(render.mean.length);
@@ -471,9 +474,11 @@ window.labTest = {
                     }
                     own.setWorkers(0);
                     resolve({width: render.width, height: render.height, image: base64(image),
+                             means: base64(render.mean),
                              stdError: base64(se), rays: render.rays, seconds: render.wallSeconds(),
                              workerSeconds: render.seconds});
                 }, function (r, message) { own.setWorkers(0); reject(new Error(message)); });
+                own.jitter = jitter || 0;
                 own.run([render]);
             });
         });

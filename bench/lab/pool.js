@@ -28,8 +28,9 @@ function newLabWorker() {
 const TASK_SAMPLES = 8192;
 
 class Render {
-    /* setup: {key, sceneName, sceneText, settings}; info: lab_configure's (worker.js). */
-    constructor(setup, info) {
+    /* setup: {key, sceneName, sceneText, settings}; info: lab_configure's (worker.js);
+     * bandRows: rows per task (by default, about TASK_SAMPLES samples' worth). */
+    constructor(setup, info, bandRows) {
         this.setup = setup;
         this.info = info;
         this.width = info.width;
@@ -38,7 +39,7 @@ class Render {
         const pixels = this.width * this.height;
         const perStep = info.settings.chapter === 8 ? info.settings.spp : 1;
         this.bandRows = Math.max(1, Math.min(this.height,
-                                             Math.round(TASK_SAMPLES / (this.width * perStep))));
+                                             bandRows || Math.round(TASK_SAMPLES / (this.width * perStep))));
         this.bands = Math.ceil(this.height / this.bandRows);
         this.mean = new Float64Array(3 * pixels);
         this.m2 = new Float64Array(3 * pixels);
@@ -178,6 +179,7 @@ class Pool {
         this.workers = [];
         this.renders = [];
         this.mode = "samples";
+        this.jitter = 0; /* ms: a test delays each result by up to this, at random */
         this.onResult = onResult;
         this.onError = onError;
         this.setWorkers(count);
@@ -244,6 +246,16 @@ class Pool {
     message(slot, event) {
         const message = event.data, render = slot.render;
         slot.render = null;
+        if (this.jitter > 0 && message.type === "band") /* a test's: results out of order */
+            setTimeout(this.deliver.bind(this, render, message), Math.random() * this.jitter);
+        else
+            this.deliver(render, message);
+        if (message.type === "error")
+            slot.key = "";
+        this.schedule();
+    }
+
+    deliver(render, message) {
         if (render && !render.stopped && this.renders.indexOf(render) >= 0 &&
             message.job === render.setup.key) {
             if (message.type === "band") {
@@ -257,9 +269,6 @@ class Pool {
                 this.onError(render, message.message);
             }
         }
-        if (message.type === "error")
-            slot.key = "";
-        this.schedule();
     }
 }
 
