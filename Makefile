@@ -425,6 +425,7 @@ lab-test: lab $(CHAPTER_BINS) $(REFERENCE_BIN) $(LAB_REFERENCE)
 	node bench/lab/browser_lab.js $(LAB) $(BUILD) $(BUILD)/lab-test
 
 $(LAB_NATIVE): $(patsubst %.c,$(BUILD)/chapter$(FINAL)/%.o,$(LAB_C) bench/lab/lab_native.c) $(BUILD)/chapter$(FINAL)/libmc.a
+	@mkdir -p $(@D)
 	$(CC) $^ $(LDFLAGS) -Wl,$(LAB_WRAPS) $(LIBS) -o $@
 
 # The same without the wrappers (each __real_NAME is NAME, so no call is noted), for the
