@@ -335,6 +335,7 @@ async function checkEditor(browser, url, last) {
         report(shown === edit.message, "editor, " + edit[0] + ": '" + shown + "'" +
                (shown === edit.message ? " is " + last.program + "'s message" : " but " + last.program + " says '" + edit.message + "'"));
     }
+    await box(browser, "#scene-name");
     await browser.screenshot(path.join(outDir, "lab_editor.png"));
 }
 

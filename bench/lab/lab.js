@@ -123,7 +123,9 @@ function buildForm(panel) {
         } else {
             input = document.createElement("input");
             input.value = field.key in panel.overrides ? panel.overrides[field.key] : "";
-            input.placeholder = field.key in effective ? String(effective[field.key]) : "";
+            const value = effective[field.key];
+            input.placeholder = typeof value === "number" && !Number.isInteger(value) ? String(Number(value.toPrecision(4)))
+                              : value === undefined ? "" : String(value);
         }
         input.name = field.key;
         input.onchange = function () { formChanged(panel, field.key, input.value); };
@@ -274,6 +276,8 @@ function currentError(panel) {
                 number(error.relMse, 4) + " against the reference (" + render.reference.spp + " spp)"};
     }
     const se = render.standardError();
+    if (render.info.settings.chapter === 1)
+        return {value: NaN, text: "Whitted's image is deterministic: no noise to measure"};
     return {value: se, text: isNaN(se) ? "error: waiting for two samples in every pixel"
                                        : "standard error " + number(se, 4) + " (from the samples: no reference for these settings)"};
 }
@@ -339,11 +343,12 @@ function inspect(panel, col, row) {
         if (other !== panel)
             other.overlay.getContext("2d").clearRect(0, 0, other.overlay.width, other.overlay.height);
     inspector.elements.overlay = panel.overlay;
-    return helper.ask("record", panel.render.setup, {col: col, row: row, first: 0, count: page.paths})
+    const count = panel.render.info.settings.chapter === 1 ? 1 : page.paths; /* deterministic */
+    return helper.ask("record", panel.render.setup, {col: col, row: row, first: 0, count: count})
         .then(function (answer) {
             inspector.show(JSON.parse(answer.json), panel.plan, panel.render.width, panel.render.height);
             $("inspector-hint").textContent = "panel " + panel.name.toUpperCase() + ": samples 0 to " +
-                (page.paths - 1) + " of pixel (" + col + ", " + row + "); click a row or step through its vertices";
+                (count - 1) + " of pixel (" + col + ", " + row + "); click a row or step through its vertices";
             return answer.json;
         }, function (error) {
             $("inspector-hint").textContent = "cannot record: " + error.message;
