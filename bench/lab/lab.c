@@ -7,6 +7,7 @@
 #include "lab.h"
 
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -186,38 +187,48 @@ static int whole(Lab *lab, const char *key, const char *value, long min, long ma
     return 0;
 }
 
-/* A real number in [min, max] (an open end where `open` says: 1 below, 2 above). */
+/* A real number in [min, max], or in (min, max] where `open`. */
 static int real(Lab *lab, const char *key, const char *value, double min, double max, int open,
                 double *out)
 {
     char *end;
     double x = strtod(value, &end);
-    if (*value == '\0' || *end != '\0' || !(x >= min && x <= max) || ((open & 1) && x == min) ||
-        ((open & 2) && x == max))
-        return fail(lab, "%s: expected a number %s %g and %s %g, got '%s'", key,
-                    open & 1 ? "above" : "from", min, open & 2 ? "below" : "to", max, value);
+    if (*value == '\0' || *end != '\0' || !(x >= min && x <= max) || (open && x == min))
+        return fail(lab, open ? "%s: expected a number above %g, at most %g, got '%s'"
+                              : "%s: expected a number from %g to %g, got '%s'", key, min, max, value);
     *out = x;
     return 0;
 }
 
-/* The chapter that introduces each key. */
+/* The settings: each key, the chapter that introduces it, and for a number where it goes
+ * in LabSettings (an int or a double) and its range (`open`: the lower end excluded). */
+typedef enum { WHOLE, REAL, WORD } Kind;
 static const struct {
     const char *key;
     int chapter;
+    Kind kind;
+    size_t offset;
+    double min, max;
+    int open;
 } KEYS[] = {
-    {"chapter", 1}, {"size", 1},   {"seed", 1},   {"depth", 1},  {"program", 1},
-    {"spp", 2},     {"sampling", 2}, {"M", 3},    {"fresnel", 4}, {"sigma", 5},
-    {"rr", 6},      {"mis", 7},    {"mirror", 7}, {"guide", 7},  {"passes", 8},
-    {"photons", 8}, {"radius", 8}, {"alpha", 8},
+    {"size", 1, WHOLE, offsetof(LabSettings, size), 1, LAB_SIZE_MAX, 0},
+    {"depth", 1, WHOLE, offsetof(LabSettings, path.max_depth), 1, 1000, 0},
+    {"seed", 1, WORD, 0, 0, 0, 0},
+    {"program", 1, WORD, 0, 0, 0, 0},
+    {"spp", 2, WHOLE, offsetof(LabSettings, spp), 1, 1 << 20, 0},
+    {"sampling", 2, WORD, 0, 0, 0, 0},
+    {"M", 3, WHOLE, offsetof(LabSettings, path.shadow_rays), 0, 1000, 0},
+    {"fresnel", 4, WORD, 0, 0, 0, 0},
+    {"sigma", 5, WORD, 0, 0, 0, 0},
+    {"rr", 6, WORD, 0, 0, 0, 0},
+    {"mis", 7, WHOLE, offsetof(LabSettings, path.mis), 0, 1, 0},
+    {"mirror", 7, WHOLE, offsetof(LabSettings, path.mirror_light), 0, 1000, 0},
+    {"guide", 7, REAL, offsetof(LabSettings, path.sphere_guide), 0, 1000, 0},
+    {"passes", 8, WHOLE, offsetof(LabSettings, passes), 1, 1 << 20, 0},
+    {"photons", 8, WHOLE, offsetof(LabSettings, photons), 1, 1 << 26, 0},
+    {"radius", 8, REAL, offsetof(LabSettings, radius), 0, 1e50, 1},
+    {"alpha", 8, REAL, offsetof(LabSettings, alpha), 0, 1, 1},
 };
-
-static int introduced_by(const char *key)
-{
-    for (size_t i = 0; i < sizeof KEYS / sizeof KEYS[0]; i++)
-        if (strcmp(KEYS[i].key, key) == 0)
-            return KEYS[i].chapter;
-    return 0;
-}
 
 static int set_sampling(Lab *lab, LabSettings *s, const char *value)
 {
@@ -239,70 +250,56 @@ static int set_sampling(Lab *lab, LabSettings *s, const char *value)
                      "got '%s'", value);
 }
 
-/* One key=value of chapter s->chapter's settings. */
-static int set_key(Lab *lab, LabSettings *s, const char *key, const char *value)
+/* A setting whose value is a word (or a number or a word). */
+static int set_word(Lab *lab, LabSettings *s, const char *key, const char *value)
 {
-    int chapter = introduced_by(key);
-    if (chapter == 0)
-        return fail(lab, "unknown setting '%s'", key);
-    if (chapter > s->chapter)
-        return fail(lab, "%s: chapter %d introduces it", key, chapter);
-    long n = 0;
-    double x = 0.0;
-    int status = 0;
-    if (strcmp(key, "size") == 0) {
-        status = whole(lab, key, value, 1, LAB_SIZE_MAX, &n);
-        s->size = (int)n;
-    } else if (strcmp(key, "seed") == 0) {
+    if (strcmp(key, "seed") == 0) {
         char *end;
         s->seed = strtoull(value, &end, 10);
         if (*value < '0' || *value > '9' || *end != '\0')
-            status = fail(lab, "seed: expected digits, got '%s'", value);
-    } else if (strcmp(key, "depth") == 0) {
-        status = whole(lab, key, value, 1, 1000, &n);
-        s->path.max_depth = (int)n;
+            return fail(lab, "seed: expected digits, got '%s'", value);
     } else if (strcmp(key, "program") == 0) {
         snprintf(s->program, sizeof s->program, "%s", value);
-    } else if (strcmp(key, "spp") == 0) {
-        status = whole(lab, key, value, 1, 1 << 20, &n);
-        s->spp = (int)n;
     } else if (strcmp(key, "sampling") == 0) {
-        status = set_sampling(lab, s, value);
-    } else if (strcmp(key, "M") == 0) {
-        status = whole(lab, key, value, 0, 1000, &n);
-        s->path.shadow_rays = (int)n;
+        return set_sampling(lab, s, value);
     } else if (strcmp(key, "fresnel") == 0) {
         if (strcmp(value, "schlick") != 0 && strcmp(value, "exact") != 0)
             return fail(lab, "fresnel: expected schlick or exact, got '%s'", value);
         s->path.fresnel = strcmp(value, "exact") == 0 ? FRESNEL_EXACT : FRESNEL_SCHLICK;
     } else if (strcmp(key, "sigma") == 0) {
-        status = strcmp(value, "scene") == 0 ? (x = -1.0, 0) : real(lab, key, value, 0.0, 10.0, 0, &x);
-        s->sigma = x;
-    } else if (strcmp(key, "rr") == 0) {
+        s->sigma = -1.0;
+        if (strcmp(value, "scene") != 0)
+            return real(lab, key, value, 0.0, 10.0, 0, &s->sigma);
+    } else { /* rr */
         s->path.rr_throughput = strcmp(value, "bounded") == 0;
         if (!s->path.rr_throughput)
-            status = real(lab, key, value, 0.0, 1.0, 1, &s->path.rr_survival);
-    } else if (strcmp(key, "mis") == 0) {
-        status = whole(lab, key, value, 0, 1, &n);
-        s->path.mis = (int)n;
-    } else if (strcmp(key, "mirror") == 0) {
-        status = whole(lab, key, value, 0, 1000, &n);
-        s->path.mirror_light = (int)n;
-        s->mirror_given = 1;
-    } else if (strcmp(key, "guide") == 0) {
-        status = real(lab, key, value, 0.0, 1000.0, 0, &s->path.sphere_guide);
-    } else if (strcmp(key, "passes") == 0) {
-        status = whole(lab, key, value, 1, 1 << 20, &n);
-        s->passes = (int)n;
-    } else if (strcmp(key, "photons") == 0) {
-        status = whole(lab, key, value, 1, 1 << 26, &n);
-        s->photons = (int)n;
-    } else if (strcmp(key, "radius") == 0) {
-        status = real(lab, key, value, 0.0, 1e50, 1, &s->radius);
-    } else if (strcmp(key, "alpha") == 0) {
-        status = real(lab, key, value, 0.0, 1.0, 1, &s->alpha);
+            return real(lab, key, value, 0.0, 1.0, 1, &s->path.rr_survival);
     }
-    return status;
+    return 0;
+}
+
+/* One key=value of chapter s->chapter's settings. */
+static int set_key(Lab *lab, LabSettings *s, const char *key, const char *value)
+{
+    size_t i = 0, count = sizeof KEYS / sizeof KEYS[0];
+    while (i < count && strcmp(KEYS[i].key, key) != 0)
+        i++;
+    if (i == count)
+        return fail(lab, "unknown setting '%s'", key);
+    if (KEYS[i].chapter > s->chapter)
+        return fail(lab, "%s: chapter %d introduces it", key, KEYS[i].chapter);
+    if (strcmp(key, "mirror") == 0)
+        s->mirror_given = 1;
+    char *field = (char *)s + KEYS[i].offset;
+    if (KEYS[i].kind == REAL)
+        return real(lab, key, value, KEYS[i].min, KEYS[i].max, KEYS[i].open, (double *)field);
+    if (KEYS[i].kind == WORD)
+        return set_word(lab, s, key, value);
+    long n;
+    if (whole(lab, key, value, (long)KEYS[i].min, (long)KEYS[i].max, &n) != 0)
+        return -1;
+    *(int *)field = (int)n;
+    return 0;
 }
 
 /* Parse "key=value" words into *s: chapter=N first, then the others over its defaults. */
