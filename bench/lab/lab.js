@@ -188,7 +188,10 @@ function restart() {
     restart.timer = setTimeout(startRenders, 30);
 }
 
+let generation = 0; /* of startRenders: an older start that answers late is dropped */
+
 function startRenders() {
+    const mine = ++generation;
     pool.mode = page.fairness;
     pool.run([]);
     inspector.clear();
@@ -222,11 +225,18 @@ function startRenders() {
         });
     });
     Promise.all(starting).then(function (renders) {
-        pool.run(renders.filter(function (r) { return r; }));
+        if (mine !== generation) return;
         if (!inspector.record && panels.a.plan) {
             inspector.plan = panels.a.plan;
             inspector.drawPlan();
         }
+        /* After the next frame: the page laid out and painted with its new forms first, so
+         * that no long task of the main thread falls into the render. */
+        requestAnimationFrame(function () {
+            setTimeout(function () {
+                if (mine === generation) pool.run(renders.filter(function (r) { return r; }));
+            }, 0);
+        });
         if (page.pixel && panels.a.render) {
             inspect(panels.a, page.pixel[0], page.pixel[1]);
             page.pixel = null;

@@ -7,7 +7,8 @@
  *    natively on one thread (lab-native-unwrapped: the native build without the
  *    recorder's wrappers; lab-native: with them, not recording) and in the page on one
  *    worker, in turns, ROUNDS times each; rays per processor second (natively the
- *    process's; in the page the worker threads', from /proc), which other programs on
+ *    process's; in the page all that Chromium's page process used, from /proc: the
+ *    worker and a little more), which other programs on
  *    a shared machine change less than rays per wall second (also shown; in the page
  *    over the worker's own time in lab_render_band); the medians' ratio. Goal:
  *    WebAssembly >= 0.6 x native.
@@ -47,41 +48,33 @@ function native(program, settings, seconds) {
     return {wall: wall, cpu: cpu};
 }
 
-/* Processor seconds of the page's dedicated workers so far: the threads named so in
- * Chromium's renderer processes of this browser's profile (/proc, 100 ticks a second). */
-function workerProcessorSeconds(browser) {
+/* Processor seconds used so far by Chromium's renderer processes of this browser's
+ * profile (/proc/PID/stat, 100 ticks a second): the page's workers (those that have ended
+ * too), its main thread and its helpers. */
+function rendererProcessorSeconds(browser) {
     let ticks = 0;
     for (const pid of fs.readdirSync("/proc").filter(function (name) { return /^\d+$/.test(name); })) {
-        let command;
         try {
-            command = fs.readFileSync("/proc/" + pid + "/cmdline", "latin1");
+            const command = fs.readFileSync("/proc/" + pid + "/cmdline", "latin1");
+            if (command.indexOf("--type=renderer") < 0 || command.indexOf(browser.profile) < 0)
+                continue;
+            const stat = fs.readFileSync("/proc/" + pid + "/stat", "latin1");
+            const fields = stat.slice(stat.lastIndexOf(")") + 2).split(" ");
+            ticks += Number(fields[11]) + Number(fields[12]); /* utime, stime */
         } catch (error) {
-            continue;
-        }
-        if (command.indexOf("--type=renderer") < 0 || command.indexOf(browser.profile) < 0)
-            continue;
-        for (const task of fs.readdirSync("/proc/" + pid + "/task")) {
-            try {
-                const stat = fs.readFileSync("/proc/" + pid + "/task/" + task + "/stat", "latin1");
-                const name = stat.slice(stat.indexOf("(") + 1, stat.lastIndexOf(")"));
-                const fields = stat.slice(stat.lastIndexOf(")") + 2).split(" ");
-                if (name.indexOf("DedicatedWorker") === 0)
-                    ticks += Number(fields[11]) + Number(fields[12]); /* utime, stime */
-            } catch (error) {
-                continue; /* a thread that has ended */
-            }
+            continue; /* a process that has ended */
         }
     }
     return ticks / 100;
 }
 
 /* Rays per second of one worker: its rays over its time in lab_render_band (wall), and
- * over the processor time the workers' threads used meanwhile. */
+ * over the processor time the page used meanwhile (a little more than the worker's). */
 async function webAssembly(browser, settings) {
-    const before = workerProcessorSeconds(browser);
+    const before = rendererProcessorSeconds(browser);
     const result = await browser.evaluate("labTest.render('room.scene', " + JSON.stringify(settings) + ", 1)", 600);
     const rays = result.rays.reduce(function (a, b) { return a + b; }, 0);
-    return {wall: rays / result.workerSeconds, cpu: rays / (workerProcessorSeconds(browser) - before)};
+    return {wall: rays / result.workerSeconds, cpu: rays / (rendererProcessorSeconds(browser) - before)};
 }
 
 async function speed(browser, settings) {
@@ -145,8 +138,8 @@ async function mainThread(browser, url, fragment) {
         say("lab-bench on " + require("os").cpus().length + " cores, load average " +
             require("os").loadavg().map(function (v) { return v.toFixed(2); }).join(" ") + ", " + new Date().toISOString());
         await browser.navigate(url + "#chapter=2&spp=1&size=16", 60);
-        await speed(browser, "chapter=2 size=256 spp=8");
-        await speed(browser, "chapter=7 size=256 spp=4");
+        await speed(browser, "chapter=2 size=256 spp=16");
+        await speed(browser, "chapter=7 size=256 spp=8");
         await firstImage(browser, url);
         await mainThread(browser, url, "#chapter=2&spp=16&size=256&workers=2");
         await mainThread(browser, url, "#chapter=7&spp=4&size=800&workers=2");

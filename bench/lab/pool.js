@@ -199,9 +199,12 @@ class Pool {
         this.schedule();
     }
 
-    /* Render these renders from now on (the others stop: their results are ignored). */
+    /* Render these renders from now on (the others stop: their results are ignored); their
+     * time starts now. */
     run(renders) {
         this.renders = renders;
+        for (const render of renders)
+            render.started = performance.now();
         this.schedule();
     }
 
