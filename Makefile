@@ -341,10 +341,12 @@ browser-test: $(GALLERY)
 # modules also where `node` is not Debian's. Threads in WebAssembly would need a page
 # served with cross-origin isolation: the module has none (-pthread is left out), the
 # page's workers are its threads. -msimd128: the compiler may use WebAssembly's 128-bit
-# vectors (browsers since 2021), as GCC uses SSE2 natively (docs/lab.md: what it buys).
+# vectors (browsers since 2021), as GCC uses SSE2 natively; -flto: it may inline across
+# files, the wrapped calls excepted (the linker keeps them calls; make lab-test checks the
+# records). docs/lab.md: what each buys.
 LAB           := $(BUILD)/lab
 LAB_EMCC       = NODE_PATH=/usr/share/nodejs emcc
-LAB_EMCC_FLAGS = $(filter-out -pthread,$(REQUIRED)) -DCHAPTER=$(FINAL) -Ilib -Ibench $(PKG_CFLAGS) -O3 -msimd128 -MMD -MP
+LAB_EMCC_FLAGS = $(filter-out -pthread,$(REQUIRED)) -DCHAPTER=$(FINAL) -Ilib -Ibench $(PKG_CFLAGS) -O3 -msimd128 -flto -MMD -MP
 LAB_LIB       := $(call upto,$(FINAL),$(LIB_SOURCES))
 LAB_BENCH     := bench/scene_file.c bench/material_names.c bench/renderer.c bench/image.c \
                  bench/atomic_file.c bench/stats.c bench/ppm.c
@@ -370,7 +372,7 @@ $(LAB)/wasm/%.o: %.c | $(LAB)/.emscripten
 $(LAB)/wasm/bench/image.o: LAB_EMCC_FLAGS += -DSTB_IMAGE_WRITE_IMPLEMENTATION
 
 $(LAB)/wasm/lab_module.js: $(LAB_OBJS) bench/lab/record.c bench/lab/lab.h
-	$(LAB_EMCC) -O3 -msimd128 $(LAB_OBJS) -Wl,$(LAB_WRAPS) -sEXPORTED_FUNCTIONS=$(LAB_EXPORTS) \
+	$(LAB_EMCC) -O3 -msimd128 -flto $(LAB_OBJS) -Wl,$(LAB_WRAPS) -sEXPORTED_FUNCTIONS=$(LAB_EXPORTS) \
 	    -sEXPORTED_RUNTIME_METHODS=UTF8ToString -sALLOW_MEMORY_GROWTH=1 -sSINGLE_FILE=1 \
 	    -sENVIRONMENT=web,worker -sMODULARIZE=1 -sEXPORT_NAME=createLabModule -o $@
 
