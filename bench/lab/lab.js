@@ -473,8 +473,9 @@ window.labTest = {
      * bands of `bandRows` rows (default: the page's), each result delayed by up to
      * `jitter` ms at random (so that they arrive out of order): the image (float32, rows
      * from the top), the means as the page keeps them (float64), and each pixel's
-     * standard error, as base64. */
-    render: function (sceneName, settings, workers, bandRows, jitter) {
+     * standard error, as base64. With `keep`, its workers live on until release() (the
+     * benchmark reads their threads' processor time). */
+    render: function (sceneName, settings, workers, bandRows, jitter, keep) {
         const setup = {key: "test" + (++jobs), sceneName: sceneName, sceneText: scenes[sceneName],
                        settings: settings};
         return helper.ask("scene", setup).then(function (answer) {
@@ -487,7 +488,7 @@ window.labTest = {
                         const n = render.count[Math.floor(i / 3)];
                         se[i] = n > 1 ? Math.sqrt(render.m2[i] / (n - 1) / n) : 0;
                     }
-                    own.setWorkers(0);
+                    if (keep) labTest.kept = own; else own.setWorkers(0);
                     resolve({width: render.width, height: render.height, image: base64(image),
                              means: base64(render.mean),
                              stdError: base64(se), rays: render.rays, seconds: render.wallSeconds(),
@@ -509,6 +510,10 @@ window.labTest = {
         $("scene-name").value = name;
         $("scene-text").value = text;
         return applyScene().then(function () { return $("scene-error").textContent; });
+    },
+    release: function () {
+        if (labTest.kept) labTest.kept.setWorkers(0);
+        labTest.kept = null;
     },
     inspect: function (panel, col, row) { return inspect(panels[panel], col, row); },
     step: function (by) { inspector.step(by); },

@@ -7,11 +7,10 @@
  *    natively on one thread (lab-native-unwrapped: the native build without the
  *    recorder's wrappers; lab-native: with them, not recording) and in the page on one
  *    worker, in turns, ROUNDS times each; rays per processor second (natively the
- *    process's; in the page all that Chromium's page process used, from /proc: the
- *    worker and a little more), which other programs on
- *    a shared machine change less than rays per wall second (also shown; in the page
- *    over the worker's own time in lab_render_band); the medians' ratio. Goal:
- *    WebAssembly >= 0.6 x native.
+ *    process's; in the page the worker threads', from /proc), which other programs on a
+ *    shared machine change less than rays per wall second (also shown; in the page over
+ *    the worker's own time in lab_render_band); the medians' ratio. Goal: WebAssembly
+ *    >= 0.6 x native.
  * 2. The first full image of chapter 2's path tracer, 256 x 256, 1 spp, 2 workers: from
  *    the page's start (navigation) and from the render's start. Goal: <= 1 s.
  * 3. The main thread while rendering: the longest task (PerformanceObserver "longtask",
@@ -48,33 +47,39 @@ function native(program, settings, seconds) {
     return {wall: wall, cpu: cpu};
 }
 
-/* Processor seconds used so far by Chromium's renderer processes of this browser's
- * profile (/proc/PID/stat, 100 ticks a second): the page's workers (those that have ended
- * too), its main thread and its helpers. */
-function rendererProcessorSeconds(browser) {
+/* Processor seconds used so far by the page's web workers: the threads Chromium names
+ * DedicatedWorker in its renderer processes of this browser's profile (/proc, 100 ticks
+ * a second). A worker's compiling of the module runs on other threads. */
+function workerProcessorSeconds(browser) {
     let ticks = 0;
     for (const pid of fs.readdirSync("/proc").filter(function (name) { return /^\d+$/.test(name); })) {
         try {
             const command = fs.readFileSync("/proc/" + pid + "/cmdline", "latin1");
             if (command.indexOf("--type=renderer") < 0 || command.indexOf(browser.profile) < 0)
                 continue;
-            const stat = fs.readFileSync("/proc/" + pid + "/stat", "latin1");
-            const fields = stat.slice(stat.lastIndexOf(")") + 2).split(" ");
-            ticks += Number(fields[11]) + Number(fields[12]); /* utime, stime */
+            for (const task of fs.readdirSync("/proc/" + pid + "/task")) {
+                const stat = fs.readFileSync("/proc/" + pid + "/task/" + task + "/stat", "latin1");
+                const fields = stat.slice(stat.lastIndexOf(")") + 2).split(" ");
+                if (stat.slice(stat.indexOf("(") + 1).indexOf("DedicatedWorker") === 0)
+                    ticks += Number(fields[11]) + Number(fields[12]); /* utime, stime */
+            }
         } catch (error) {
-            continue; /* a process that has ended */
+            continue; /* a process or thread that has ended */
         }
     }
     return ticks / 100;
 }
 
 /* Rays per second of one worker: its rays over its time in lab_render_band (wall), and
- * over the processor time the page used meanwhile (a little more than the worker's). */
+ * over the processor time of the workers' threads meanwhile (the render's worker kept
+ * alive until it is read). */
 async function webAssembly(browser, settings) {
-    const before = rendererProcessorSeconds(browser);
-    const result = await browser.evaluate("labTest.render('room.scene', " + JSON.stringify(settings) + ", 1)", 600);
+    await browser.evaluate("labTest.release(), new Promise(r => setTimeout(r, 300))");
+    const before = workerProcessorSeconds(browser);
+    const result = await browser.evaluate("labTest.render('room.scene', " + JSON.stringify(settings) +
+                                          ", 1, 0, 0, true)", 600);
     const rays = result.rays.reduce(function (a, b) { return a + b; }, 0);
-    return {wall: rays / result.workerSeconds, cpu: rays / (rendererProcessorSeconds(browser) - before)};
+    return {wall: rays / result.workerSeconds, cpu: rays / (workerProcessorSeconds(browser) - before)};
 }
 
 async function speed(browser, settings) {
