@@ -104,6 +104,6 @@ function drawLogLogPlot(canvas, series, labels) {
     context.textAlign = "right";
     series.forEach(function (s, index) {
         context.fillStyle = s.colour;
-        context.fillText(s.label, width - right - 6, height - bottom - 8 - 16 * (series.length - 1 - index));
+        context.fillText(s.label, width - right - 6, top + 16 + 16 * index);
     });
 }
