@@ -164,11 +164,15 @@ CHAPTER_TESTS := $(filter-out $(CHAPTER$(FINAL)_TESTS),$(ALL_TESTS))
 # solution (chapter N's library), which lists the exercises and renders the references,
 # and by bench/exercise/check.sh from the student's tree (bench/exercise/student.mk).
 # A chapter without bench/exercise/chapterN.c has no exercises yet.
-EXERCISE_COMMON   := $(wildcard bench/exercise/grade.c bench/exercise/grading.c bench/exercise/render_check.c)
+EXERCISE_COMMON   := $(wildcard bench/exercise/grade.c bench/exercise/grading.c bench/exercise/answers.c \
+                                bench/exercise/supervise.c bench/exercise/render_check.c)
 EXERCISE_CHAPTERS := $(foreach n,$(CHAPTERS),$(if $(wildcard bench/exercise/chapter$(n).c),$(n)))
 EXERCISE_DIR      := $(BUILD)/exercise
+# STUDENT and ONLY reach check-exercise-chapterN's shell through its environment, never
+# pasted into its text, so that any path works (spaces, quotes, a leading dash).
 STUDENT           ?=
 ONLY              ?=
+export STUDENT ONLY
 grader_of          = $(BUILD)/chapter$(1)/bench/exercise/grade
 grader_sources     = $(call upto,$(1),$(EXERCISE_COMMON)) bench/exercise/chapter$(1).c
 SOLUTION_GRADERS  := $(foreach n,$(EXERCISE_CHAPTERS),$(call grader_of,$(n)))
@@ -183,12 +187,13 @@ exercise-chapter$(1): source-chapter$(1) $(call grader_of,$(1))
 	@sh bench/exercise/exercise.sh $(1) $(BUILD)/source/chapter$(1) $(call grader_of,$(1)) $(EXERCISE_DIR)/chapter$(1)
 
 check-exercise-chapter$(1): $(call grader_of,$(1))
-	@student=$$(if $$(STUDENT),$$(STUDENT),$(EXERCISE_DIR)/chapter$(1)); \
+	@student=$$$${STUDENT:-$(EXERCISE_DIR)/chapter$(1)}; \
 	if [ ! -d "$$$$student/lib" ]; then echo "no exercise tree in $$$$student: make exercise-chapter$(1) first (or STUDENT=DIR)"; exit 2; fi; \
+	set -f; \
 	CC="$$(CC)" CFLAGS="$$(CFLAGS)" LDFLAGS="$$(LDFLAGS)" LIBS="$$(LIBS)" PKG_CFLAGS="$$(PKG_CFLAGS)" \
 	BENCH_OBJECTS="$$(addprefix $$(CURDIR)/,$(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call upto,$(1),$(BENCH_SOURCES))))" \
 	GRADER_FILES="$$(addprefix $$(CURDIR)/,$(call grader_sources,$(1)))" \
-	sh bench/exercise/check.sh $(1) "$$$$student" $(call grader_of,$(1)) $(EXERCISE_DIR)/references/chapter$(1) $$(ONLY)
+	sh bench/exercise/check.sh $(1) "$$$$student" $(call grader_of,$(1)) $(EXERCISE_DIR)/references/chapter$(1) $$$${ONLY:-}
 else
 exercise-chapter$(1) check-exercise-chapter$(1):
 	@echo "chapter $(1) has no exercises yet (bench/exercise/chapter$(1).c)"; exit 2
