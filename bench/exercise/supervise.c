@@ -41,7 +41,7 @@ static double now(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-/* When a process dies, its parent gets SIGKILL (Linux; elsewhere nothing). */
+/* This process gets SIGKILL when its parent dies (Linux; elsewhere nothing happens). */
 static void die_with_parent(void)
 {
 #ifdef PR_SET_PDEATHSIG
@@ -83,8 +83,8 @@ static void start_program(const char *program, const char *id, const char *secre
     _exit(127);
 }
 
-/* The guard: leads the process group, starts the program, and sends the judge its
- * process id and, when it ends, its wait status, through `status`. */
+/* The guard: leads the process group, starts the program and, when it ends, sends the
+ * judge its wait status through `status`. */
 static void guard(const char *program, const char *id, const char *secret, int channel,
                   int output, int status, pid_t judge)
 {
@@ -99,13 +99,13 @@ static void guard(const char *program, const char *id, const char *secret, int c
         start_program(program, id, secret, channel, output);
     close(channel);
     close(output);
-    int message[2] = {(int)student, 0};
-    if (student < 0 || answers_write_all(status, &message[0], sizeof message[0]) != 0)
+    int ended;
+    if (student < 0)
         _exit(1);
-    while (waitpid(student, &message[1], 0) < 0)
+    while (waitpid(student, &ended, 0) < 0)
         if (errno != EINTR)
             _exit(1);
-    answers_write_all(status, &message[1], sizeof message[1]);
+    answers_write_all(status, &ended, sizeof ended);
     _exit(0);
 }
 
@@ -114,7 +114,7 @@ static void guard(const char *program, const char *id, const char *secret, int c
 typedef struct {
     pid_t guard;
     int channel, output, status; /* read ends, -1 once at their end */
-    int status_words[2];         /* the program's process id, then its wait status */
+    int program_status;          /* its wait status, once all its bytes are in */
     size_t status_bytes;
     int timed_out;
 } Watch;
@@ -175,15 +175,15 @@ static size_t read_output(Watch *w, ProbeRun *run)
 
 static size_t read_status(Watch *w)
 {
-    size_t got = read_some(&w->status, (unsigned char *)w->status_words + w->status_bytes,
-                           sizeof w->status_words - w->status_bytes);
+    size_t got = read_some(&w->status, (unsigned char *)&w->program_status + w->status_bytes,
+                           sizeof w->program_status - w->status_bytes);
     w->status_bytes += got;
     return got;
 }
 
 static int program_ended(const Watch *w)
 {
-    return w->status_bytes == sizeof w->status_words;
+    return w->status_bytes == sizeof w->program_status;
 }
 
 /* Whether the run is over: answered, garbled, the program ended, or its guard gone. */
@@ -346,14 +346,14 @@ static void describe_end(const Watch *w, ProbeRun *run, int seconds)
                  plural(count));
     else if (run->answers.garbled[0])
         snprintf(run->ended, sizeof run->ended, "your program's answers arrived garbled after %ld "
-                 "(%s): does your code write to file descriptor 3, or to memory not its own?",
+                 "(%s): does your code write to file descriptor 3, fork, or write to memory not its own?",
                  count, run->answers.garbled);
     else if (w->timed_out)
         snprintf(run->ended, sizeof run->ended, "no answer within %d second%s: an endless loop (a "
                  "path that never ends, a loop whose condition never changes)?", seconds,
                  plural(seconds));
     else if (program_ended(w))
-        describe_status(w->status_words[1], count, run->ended, sizeof run->ended);
+        describe_status(w->program_status, count, run->ended, sizeof run->ended);
     else
         snprintf(run->ended, sizeof run->ended, "the grader's guard over your program was "
                  "killed after %ld answer%s: does your code send signals to its parent or its "
@@ -384,60 +384,71 @@ static void release_stops(const struct sigaction saved[3])
     }
 }
 
+/* Become a subreaper, fork the guard and keep the pipes' read ends. Returns the guard's
+ * process id, or -1 with errno set. */
+static pid_t start_guard(const char *program, const char *id, const char *secret,
+                         int pipes[3][2])
+{
+#ifdef PR_SET_CHILD_SUBREAPER
+    prctl(PR_SET_CHILD_SUBREAPER, 1);
+#endif
+    signal(SIGCHLD, SIG_DFL); /* children stay to be waited for */
+    pid_t judge = getpid(), pid = fork();
+    if (pid == 0)
+        guard(program, id, secret, pipes[0][1], pipes[1][1], pipes[2][1], judge);
+    if (pid > 0)
+        setpgid(pid, pid); /* as the guard does: whichever comes first */
+    for (int i = 0; i < 3; i++)
+        close_end(&pipes[i][1]);
+    return pid;
+}
+
+/* Watch until the end, the deadline or a stop signal; then leave nothing behind. */
+static void watch_to_the_end(Watch *w, ProbeRun *run, int seconds)
+{
+    watch(w, run, now() + seconds);
+    if (w->timed_out)
+        terminate(w, run);
+    end_everything(w->guard);
+    drain(w, run);
+    describe_end(w, run, seconds);
+}
+
 int supervise_probe(const char *program, const char *id, int seconds, ProbeRun *run,
                     char *error, size_t size)
 {
     memset(run, 0, sizeof *run);
+    int pipes[3][2] = {{-1, -1}, {-1, -1}, {-1, -1}}; /* the answers, the output, the status */
     unsigned char secret[ANSWERS_SECRET];
     char secret_text[2 * ANSWERS_SECRET + 1];
-    int channel[2], output[2], status[2];
     run->output = malloc(SUPERVISE_KEPT);
-    if (!run->output || answers_new_secret(secret) != 0 || make_pipe(channel) != 0) {
-        snprintf(error, size, "cannot prepare a run: %s", strerror(errno));
-        return -1;
-    }
-    if (make_pipe(output) != 0 || make_pipe(status) != 0) {
-        snprintf(error, size, "cannot make a pipe: %s", strerror(errno));
-        return -1;
-    }
-    answers_secret_text(secret, secret_text);
-    answer_reader_init(&run->answers, secret, id);
-#ifdef PR_SET_CHILD_SUBREAPER
-    prctl(PR_SET_CHILD_SUBREAPER, 1);
-#endif
-    struct sigaction saved[3];
-    catch_stops(saved);
-    signal(SIGCHLD, SIG_DFL); /* children stay to be waited for */
-    double deadline = now() + seconds;
-    pid_t judge = getpid();
-    Watch w = {0, channel[0], output[0], status[0], {0, 0}, 0, 0};
-    w.guard = fork();
-    if (w.guard == 0)
-        guard(program, id, secret_text, channel[1], output[1], status[1], judge);
-    if (w.guard > 0)
-        setpgid(w.guard, w.guard); /* as the guard does: whichever comes first */
-    close(channel[1]);
-    close(output[1]);
-    close(status[1]);
-    if (w.guard < 0) {
-        snprintf(error, size, "cannot fork: %s", strerror(errno));
+    int ready = run->output && answers_new_secret(secret) == 0;
+    for (int i = 0; i < 3; i++)
+        ready = ready && make_pipe(pipes[i]) == 0;
+    pid_t guard_pid = -1;
+    if (ready) {
+        answers_secret_text(secret, secret_text);
+        answer_reader_init(&run->answers, secret, id);
+        struct sigaction saved[3];
+        catch_stops(saved);
+        guard_pid = start_guard(program, id, secret_text, pipes);
+        Watch w = {guard_pid, pipes[0][0], pipes[1][0], pipes[2][0], 0, 0, 0};
+        for (int i = 0; i < 3; i++)
+            pipes[i][0] = -1; /* the watch's now: it closes each at its end */
+        if (guard_pid > 0)
+            watch_to_the_end(&w, run, seconds);
         close_end(&w.channel);
         close_end(&w.output);
         close_end(&w.status);
         release_stops(saved);
-        return -1;
     }
-    watch(&w, run, deadline);
-    if (w.timed_out)
-        terminate(&w, run);
-    end_everything(w.guard);
-    drain(&w, run);
-    close_end(&w.channel);
-    close_end(&w.output);
-    close_end(&w.status);
-    describe_end(&w, run, seconds);
-    release_stops(saved);
-    return 0;
+    if (guard_pid < 0)
+        snprintf(error, size, "cannot start the student's program: %s", strerror(errno));
+    for (int i = 0; i < 3; i++) {
+        close_end(&pipes[i][0]);
+        close_end(&pipes[i][1]);
+    }
+    return guard_pid < 0 ? -1 : 0;
 }
 
 void probe_run_free(ProbeRun *run)
