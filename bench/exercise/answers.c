@@ -160,19 +160,19 @@ void answer_reader_free(AnswerReader *r)
     r->values = NULL;
 }
 
-static int grow(void **block, size_t *capacity, size_t needed, size_t item)
+/* `block`, or a larger copy of it, with room for `needed` items of `item` bytes (its
+ * capacity doubled until enough); NULL when memory runs out (block is then untouched). */
+static void *room_for(void *block, size_t *capacity, size_t needed, size_t item)
 {
     if (needed <= *capacity)
-        return 0;
+        return block;
     size_t larger = *capacity ? *capacity : 1024;
     while (larger < needed)
         larger *= 2;
-    void *bigger = realloc(*block, larger * item);
-    if (!bigger)
-        return -1;
-    *block = bigger;
-    *capacity = larger;
-    return 0;
+    void *bigger = realloc(block, larger * item);
+    if (bigger)
+        *capacity = larger;
+    return bigger;
 }
 
 static int garbled(AnswerReader *r, const char *what)
@@ -223,12 +223,15 @@ static int take_frame(AnswerReader *r)
     memcpy(&sum, r->pending + size - CHECKSUM, CHECKSUM);
     if (sum != checksum(r->pending, size - CHECKSUM))
         return garbled(r, "is damaged (its checksum does not match)");
-    size_t capacity = (size_t)r->capacity;
-    if (grow((void **)&r->values, &capacity, (size_t)r->count + h.count, sizeof *r->values) != 0)
-        return -2;
-    r->capacity = (long)capacity;
-    memcpy(r->values + r->count, r->pending + HEADER, 8 * (size_t)h.count);
-    r->count += h.count;
+    if (h.count > 0) {
+        double *values = room_for(r->values, &r->capacity, (size_t)r->count + h.count,
+                                  sizeof *values);
+        if (!values)
+            return -2;
+        r->values = values;
+        memcpy(r->values + r->count, r->pending + HEADER, 8 * (size_t)h.count);
+        r->count += h.count;
+    }
     r->sequence++;
     r->ended = h.kind == KIND_END;
     memmove(r->pending, r->pending + size, r->pending_size - size);
@@ -242,8 +245,10 @@ int answer_feed(AnswerReader *r, const unsigned char *bytes, size_t size)
         return -1;
     if (r->ended)
         return 1;
-    if (grow((void **)&r->pending, &r->pending_capacity, r->pending_size + size, 1) != 0)
+    unsigned char *pending = room_for(r->pending, &r->pending_capacity, r->pending_size + size, 1);
+    if (!pending)
         return -2;
+    r->pending = pending;
     memcpy(r->pending + r->pending_size, bytes, size);
     r->pending_size += size;
     int taken;

@@ -38,7 +38,8 @@ typedef struct {
     unsigned char *pending; /* bytes of a frame not yet complete */
     size_t pending_size, pending_capacity;
     double *values;
-    long count, capacity;
+    long count;
+    size_t capacity;        /* values that fit in `values` */
     int ended;              /* the end frame arrived */
     char garbled[256];      /* what was wrong with the first bad frame, or "" */
 } AnswerReader;
