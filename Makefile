@@ -161,8 +161,9 @@ CHAPTER_TESTS := $(filter-out $(CHAPTER$(FINAL)_TESTS),$(ALL_TESTS))
 # ---- exercises (README.md, "Do the chapters yourself") ----------------------------------
 # Chapter N's exercises are the functions its lesson marks "Exercise N.k"; its grader,
 # bench/exercise/chapterN.c with grade.c and what they share, is built twice: from the
-# solution (chapter N's library), which lists the exercises and renders the references,
-# and by bench/exercise/check.sh from the student's tree (bench/exercise/student.mk).
+# solution (chapter N's library), which lists the exercises, renders the references and
+# gives every verdict, and by bench/exercise/check.sh from the student's tree
+# (bench/exercise/student.mk), which only computes the answers the first one judges.
 # A chapter without bench/exercise/chapterN.c has no exercises yet.
 EXERCISE_COMMON   := $(wildcard bench/exercise/grade.c bench/exercise/grading.c bench/exercise/answers.c \
                                 bench/exercise/supervise.c bench/exercise/render_check.c)
