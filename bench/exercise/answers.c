@@ -222,7 +222,7 @@ static int take_frame(AnswerReader *r)
     uint64_t sum;
     memcpy(&sum, r->pending + size - CHECKSUM, CHECKSUM);
     if (sum != checksum(r->pending, size - CHECKSUM))
-        return garbled(r, "is damaged (its checksum does not match)");
+        return garbled(r, "is damaged: its checksum does not match");
     if (h.count > 0) {
         double *values = room_for(r->values, &r->capacity, (size_t)r->count + h.count,
                                   sizeof *values);

@@ -66,9 +66,9 @@ static void forge_everywhere(void)
     _exit(0);
 }
 
-/* The run's secret, read from this process's own command line (--probe ID SECRET), in
- * an end frame: the stream ends before any answer. */
-static void end_with_the_secret(void)
+/* The run's secret, read from this process's own command line (--probe ID SECRET).
+ * Returns 0, or -1. */
+static int read_the_secret(unsigned char secret[ANSWERS_SECRET])
 {
     char line[4096] = {0};
     int fd = open("/proc/self/cmdline", O_RDONLY);
@@ -76,12 +76,29 @@ static void end_with_the_secret(void)
     const char *argument = line;
     for (int i = 0; n > 0 && i < 3; i++)
         argument += strlen(argument) + 1;
-    unsigned char secret[ANSWERS_SECRET];
+    return answers_parse_secret(argument, secret);
+}
+
+/* Frames with the run's secret: an end frame before any answer ("end"), answers to
+ * another exercise ("other"), a frame with one byte changed ("damaged"), or the first
+ * bytes of a frame ("partial"); then the end of the process. */
+static void use_the_secret(const char *how)
+{
     static AnswerWriter writer;
-    if (answers_parse_secret(argument, secret) == 0) {
-        answer_writer_init(&writer, 3, secret, "1.1");
-        answer_end(&writer);
-    }
+    unsigned char secret[ANSWERS_SECRET], bytes[256];
+    int ends[2];
+    if (read_the_secret(secret) != 0 || pipe(ends) != 0)
+        _exit(0);
+    answer_writer_init(&writer, strcmp(how, "end") == 0 ? 3 : ends[1], secret,
+                       strcmp(how, "other") == 0 ? "1.2" : "1.1");
+    if (strcmp(how, "end") != 0)
+        answer_put(&writer, INFINITY);
+    answer_end(&writer);
+    ssize_t n = read(ends[0], bytes, sizeof bytes);
+    if (strcmp(how, "damaged") == 0)
+        bytes[ANSWERS_HEADER] ^= 1;
+    if (n > 0 && write(3, bytes, strcmp(how, "partial") == 0 ? 20 : (size_t)n) < 0)
+        _exit(1);
     _exit(0);
 }
 
@@ -218,8 +235,14 @@ static void instead(void)
         dup2(1, 3);
     if (is("forge-everywhere"))
         forge_everywhere();
-    if (is("forge-with-secret"))
-        end_with_the_secret();
+    if (is("end-with-the-secret"))
+        use_the_secret("end");
+    if (is("other-exercise"))
+        use_the_secret("other");
+    if (is("damaged-frame"))
+        use_the_secret("damaged");
+    if (is("partial-frame"))
+        use_the_secret("partial");
     if (is("raise-kill"))
         raise(SIGKILL);
     if (is("abort"))
