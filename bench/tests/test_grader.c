@@ -37,6 +37,7 @@ typedef struct {
 static const Case cases[] = {
     {"", "blank", "FAIL: misses a ray"},
     {"exit", "blank", "FAIL: your program ended with exit status 0 before answering"},
+    {"fork-then-exit", "blank", "FAIL: your program ended with exit status 0 before answering"},
     {"constructor-exit", "blank", "FAIL: your program ended with exit status 0 before answering"},
     {"atexit", "blank", "FAIL: your program ended with exit status 0"},
     {"exec-true", "blank", "FAIL: your program ended with exit status 0"},
