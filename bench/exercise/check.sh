@@ -1,8 +1,8 @@
 #!/bin/sh
 # check.sh CHAPTER STUDENT SOLUTION REFERENCES [ID...]: grade a student's tree.
 #
-# Builds STUDENT (a copy of make exercise-chapterN's tree) into STUDENT/check/build/grade
-# with bench/exercise/student.mk (GRADER_FILES, BENCH_OBJECTS, CC, CFLAGS, PKG_CFLAGS,
+# Builds STUDENT (a copy of make exercise-chapterN's tree) into STUDENT/check/build/probe
+# with bench/exercise/student.mk (PROBE_FILES, BENCH_OBJECTS, CC, CFLAGS, PKG_CFLAGS,
 # LDFLAGS, LIBS from the environment). SOLUTION, the grader built from the solution,
 # lists the exercises, renders the references into REFERENCES (again whenever it is newer
 # than them) and grades every exercise (or the IDs given): it runs the student's program
@@ -77,8 +77,8 @@ fi
 # may delete its check/ folder).
 copy=$(mktemp -d) || exit 2
 trap 'rm -rf -- "$copy"' EXIT
-program=$copy/grade
-cp -- "$out/build/grade" "$program" || exit 2
+program=$copy/probe
+cp -- "$out/build/probe" "$program" || exit 2
 
 status=0
 passed=0 total=0

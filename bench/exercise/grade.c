@@ -1,18 +1,16 @@
 /* grade.c (bench, chapter 1): the exercise grader of one chapter (grading.h), built from
- * the solution's library (the judge) and from the student's (the probe), each with the
- * chapter's table, bench/exercise/chapterN.c:
+ * the solution's library with the chapter's table, bench/exercise/chapterN.c:
  *     grade --list | --blank ID | --reference ID FOLDER    the exercises, a blank body under
  *                                   its task, the solution's reference render
- *     grade --judge ID OUT REFERENCES PROGRAM SECONDS   run PROGRAM --probe ID SECRET under
- *        watch (supervise.h) and grade its answers: "pass" or "FAIL: what is wrong", then the
- *        numbers behind it; pictures and what PROGRAM printed into OUT; exit 0 or 1
- *     grade --probe ID SECRET        exercise ID's answers, on file descriptor 3 (answers.h)
- * Bad use, or a judge that cannot run its probe, exits 2.
+ *     grade --judge ID OUT REFERENCES PROBE SECONDS   run PROBE ID SECRET (probe.c, built from
+ *        the student's library) under watch (supervise.h) and grade its answers: "pass" or
+ *        "FAIL: what is wrong", then the numbers behind it; pictures and what PROBE printed
+ *        into OUT; exit 0 or 1
+ * Bad use, or a judge that cannot start its probe, exits 2.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "atomic_file.h"
 #include "grading.h"
@@ -24,14 +22,6 @@
 #define TASK_WIDTH 84
 #define QUOTED_LINES 3
 #define QUOTED_WIDTH 100
-
-static const Exercise *find(const char *id)
-{
-    for (int i = 0; i < exercise_count; i++)
-        if (strcmp(exercises[i].id, id) == 0)
-            return &exercises[i];
-    return NULL;
-}
 
 /* The task as a comment, wrapped at spaces, then the neutral body, indented. */
 static void print_blank(const Exercise *e)
@@ -58,30 +48,8 @@ static void print_blank(const Exercise *e)
 static int usage(void)
 {
     fprintf(stderr, "usage: grade --list | --blank ID | --reference ID FOLDER | --judge ID OUT "
-                    "REFERENCES PROGRAM SECONDS | --probe ID SECRET\n");
+                    "REFERENCES PROBE SECONDS\n");
     return 2;
-}
-
-/* The student's program: compute the answers and send them, then end at once (no
- * student code runs after them: no atexit handler, no destructor). */
-static int probe(const Exercise *e, const char *secret_text)
-{
-    unsigned char secret[ANSWERS_SECRET];
-    if (answers_parse_secret(secret_text, secret) != 0)
-        return usage();
-    setvbuf(stdout, NULL, _IOLBF, 0);
-    static AnswerWriter writer;
-    answer_writer_init(&writer, 3, secret, e->id);
-    Grading g;
-    memset(&g, 0, sizeof g);
-    g.id = e->id;
-    g.writer = &writer;
-    e->grade(&g);
-    int status = answer_end(&writer) == 0 ? 0 : 3;
-    if (status != 0)
-        perror("grade: cannot send the answers to the grader");
-    fflush(NULL);
-    _exit(status);
 }
 
 /* One line of what the program printed, its bytes made printable, cut at QUOTED_WIDTH;
@@ -166,7 +134,7 @@ static int judge(const Exercise *e, char **argv)
 
 int main(int argc, char **argv)
 {
-    const Exercise *e = argc >= 3 ? find(argv[2]) : NULL;
+    const Exercise *e = argc >= 3 ? exercise_find(argv[2]) : NULL;
     if (argc == 2 && strcmp(argv[1], "--list") == 0) {
         for (int i = 0; i < exercise_count; i++)
             printf("%s %s\n", exercises[i].id, exercises[i].function);
@@ -188,8 +156,6 @@ int main(int argc, char **argv)
 #endif
         return 0;
     }
-    if (argc == 4 && strcmp(argv[1], "--probe") == 0 && e)
-        return probe(e, argv[3]);
     if (argc == 7 && strcmp(argv[1], "--judge") == 0 && e)
         return judge(e, argv);
     return usage();

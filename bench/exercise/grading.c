@@ -23,6 +23,14 @@ static void append(char *text, size_t size, const char *format, va_list args)
         vsnprintf(text + used, size - used, format, args);
 }
 
+const Exercise *exercise_find(const char *id)
+{
+    for (int i = 0; i < exercise_count; i++)
+        if (strcmp(exercises[i].id, id) == 0)
+            return &exercises[i];
+    return NULL;
+}
+
 int grading_probing(const Grading *g)
 {
     return g->writer != NULL;

@@ -56,6 +56,9 @@ typedef struct {
 extern const Exercise exercises[];
 extern const int exercise_count;
 
+/* The exercise of that id, or NULL. */
+const Exercise *exercise_find(const char *id);
+
 /* Whether this is the student's program (the probe), not the grader (the judge). */
 int grading_probing(const Grading *g);
 

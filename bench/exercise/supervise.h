@@ -1,7 +1,7 @@
 /* supervise.h (bench, chapter 1): running a student's program under watch, for the grader.
  *
  * The grader (built from the solution: no student code runs in it) starts the student's
- * program, PROGRAM --probe ID SECRET, in a process group of its own, with stdin from
+ * program, PROGRAM ID SECRET (probe.c), in a process group of its own, with stdin from
  * /dev/null, stdout and stderr into a pipe the grader keeps the start of, and the answers'
  * pipe (answers.h) as file descriptor 3. It reads both until the end frame, the end of
  * the program, or the time limit; then SIGTERM, a second's grace and SIGKILL to the group,

@@ -66,7 +66,7 @@ static void forge_everywhere(void)
     _exit(0);
 }
 
-/* The run's secret, read from this process's own command line (--probe ID SECRET).
+/* The run's secret, read from this process's own command line (probe ID SECRET).
  * Returns 0, or -1. */
 static int read_the_secret(unsigned char secret[ANSWERS_SECRET])
 {
@@ -74,7 +74,7 @@ static int read_the_secret(unsigned char secret[ANSWERS_SECRET])
     int fd = open("/proc/self/cmdline", O_RDONLY);
     ssize_t n = fd >= 0 ? read(fd, line, sizeof line - 1) : -1;
     const char *argument = line;
-    for (int i = 0; n > 0 && i < 3; i++)
+    for (int i = 0; n > 0 && i < 2; i++)
         argument += strlen(argument) + 1;
     return answers_parse_secret(argument, secret);
 }
