@@ -93,7 +93,8 @@ void answers_secret_text(const unsigned char secret[ANSWERS_SECRET], char *text)
 
 int answers_parse_secret(const char *text, unsigned char secret[ANSWERS_SECRET])
 {
-    if (strlen(text) != 2 * ANSWERS_SECRET || strspn(text, "0123456789abcdef") != 2 * ANSWERS_SECRET)
+    size_t digits = 2 * ANSWERS_SECRET;
+    if (strlen(text) != digits || strspn(text, "0123456789abcdef") != digits)
         return -1;
     for (int i = 0; i < ANSWERS_SECRET; i++) {
         unsigned value;

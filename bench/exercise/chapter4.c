@@ -42,7 +42,8 @@ static void grade_polarised(Grading *g)
             double n_i = pairs[k][0], n_t = pairs[k][1], cos_i = cos(a * PI / 180.0);
             double s, p, swapped_s, swapped_p;
             right_fresnel(a, n_i, n_t, &s, &p);
-            double got_s = ASK(g, fresnel_s(cos_i, n_i, n_t)), got_p = ASK(g, fresnel_p(cos_i, n_i, n_t));
+            double got_s = ASK(g, fresnel_s(cos_i, n_i, n_t));
+            double got_p = ASK(g, fresnel_p(cos_i, n_i, n_t));
             if (grading_not_finite(g, got_s, "R_s") || grading_not_finite(g, got_p, "R_p"))
                 break;
             if (fabs(got_s - s) <= 1e-9 && fabs(got_p - p) <= 1e-9)

@@ -30,7 +30,6 @@ esac
 case $student in -*) student=./$student ;; esac # no command takes it for an option
 out=$student/check
 mkdir -p -- "$out" "$references" || exit 2
-rm -f -- "$out/verdicts.txt"
 
 # Every line of the verdicts, kept here (beyond the student's code's reach) until the
 # file is written whole; each is printed as it comes, a failed print ignored.
@@ -58,6 +57,7 @@ if [ $# -gt 0 ]; then
     list=$wanted
 fi
 entries=$(printf '%s\n' "$list" | awk 'NF == 2 { print $1 ":" $2 }')
+rm -f -- "$out/verdicts.txt" # until this check's is whole
 
 say "chapter $chapter: checking $student"
 if ! make --no-print-directory -s -C "$student" -f "$repo/bench/exercise/student.mk" REPO="$repo" \

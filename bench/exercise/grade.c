@@ -80,7 +80,8 @@ static void quote_output(Grading *g, const ProbeRun *run)
     if (atomic_open(&log, path) == 0) {
         fwrite(run->output, 1, run->output_size, log.file);
         if (run->output_total > run->output_size)
-            fprintf(log.file, "\n[... %zu more bytes not kept]\n", run->output_total - run->output_size);
+            fprintf(log.file, "\n[... %zu more bytes not kept]\n",
+                    run->output_total - run->output_size);
         atomic_close(&log, 0);
     }
     char bytes[32];

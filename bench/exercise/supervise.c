@@ -194,7 +194,8 @@ static int over(const Watch *w, const ProbeRun *run)
 
 static void poll_once(Watch *w, ProbeRun *run, double seconds)
 {
-    struct pollfd fds[3] = {{w->channel, POLLIN, 0}, {w->output, POLLIN, 0}, {w->status, POLLIN, 0}};
+    struct pollfd fds[3] = {{w->channel, POLLIN, 0}, {w->output, POLLIN, 0},
+                            {w->status, POLLIN, 0}};
     if (poll(fds, 3, (int)(seconds * 1000.0) + 1) <= 0)
         return;
     if (fds[0].revents)
@@ -346,8 +347,8 @@ static void describe_end(const Watch *w, ProbeRun *run, int seconds)
                  plural(count));
     else if (run->answers.garbled[0])
         snprintf(run->ended, sizeof run->ended, "your program's answers arrived garbled after %ld "
-                 "(%s): does your code write to file descriptor 3, fork, or write to memory not its own?",
-                 count, run->answers.garbled);
+                 "(%s): does your code write to file descriptor 3, fork, or write to memory not "
+                 "its own?", count, run->answers.garbled);
     else if (w->timed_out)
         snprintf(run->ended, sizeof run->ended, "no answer within %d second%s: an endless loop (a "
                  "path that never ends, a loop whose condition never changes)?", seconds,

@@ -28,6 +28,8 @@
 #define LIMIT 1      /* TIME_LIMIT, seconds */
 #define SLACK 5.0    /* seconds a verdict may take beyond it */
 
+#define GARBLED "FAIL: your program's answers arrived garbled after 0 (frame 0 "
+
 typedef struct {
     const char *behaviour; /* GRADER_BEHAVIOUR (student_behaviours.c) */
     const char *tree;      /* "blank", "solution", or "scratch" (a copy of the blank one) */
@@ -56,11 +58,11 @@ static const Case cases[] = {
     {"close-channel", "blank", "FAIL: your program ended with exit status 3"},
     {"close-all", "blank", "FAIL: your program ended with exit status 3"},
     {"dup-channel", "blank", "FAIL: your program ended with exit status 0 before answering"},
-    {"garbage-channel", "blank", "FAIL: your program's answers arrived garbled after 0 (frame 0 is not"},
-    {"forge-everywhere", "blank", "FAIL: your program's answers arrived garbled after 0 (frame 0 does not carry this run's secret)"},
+    {"garbage-channel", "blank", GARBLED "is not a frame of the grader's)"},
+    {"forge-everywhere", "blank", GARBLED "does not carry this run's secret)"},
     {"end-with-the-secret", "blank", "FAIL: your program gave 0 answers"},
-    {"other-exercise", "blank", "FAIL: your program's answers arrived garbled after 0 (frame 0 answers another exercise)"},
-    {"damaged-frame", "blank", "FAIL: your program's answers arrived garbled after 0 (frame 0 is damaged: its checksum does not match)"},
+    {"other-exercise", "blank", GARBLED "answers another exercise)"},
+    {"damaged-frame", "blank", GARBLED "is damaged: its checksum does not match)"},
     {"partial-frame", "blank", "FAIL: your program ended with exit status 0 before answering"},
     {"raise-kill", "blank", "FAIL: killed by SIGKILL"},
     {"abort", "blank", "FAIL: crashed: aborted"},
@@ -220,17 +222,18 @@ static int graded_as_expected(const char *label, const char *student, const char
     printf("%-4s %-28s %5.1f s  %s  %s\n", ok ? "ok" : "BAD", label, seconds,
            left ? "PROCESSES LEFT" : "none left", line);
     if (!ok)
-        printf("    expected \"%s\" (status %d; file's verdict \"%s\"); the output:\n%s\n", expected,
-               status, file_line, out);
+        printf("    expected \"%s\" (status %d; file's verdict \"%s\"); the output:\n%s\n",
+               expected, status, file_line, out);
     free(out);
     return ok;
 }
 
 static void make_tree(const char *tree, const char *source)
 {
-    shell("rm -rf '%s' && cp -R '%s' '%s' && cp bench/tests/student_behaviours.c '%s/lib/zz_behaviours.c'",
-          tree, source, tree, tree);
-    shell("sed -i 's/^double sphere_intersect(/double original_sphere_intersect(/' '%s/lib/sphere.c' && "
+    shell("rm -rf '%s' && cp -R '%s' '%s' && "
+          "cp bench/tests/student_behaviours.c '%s/lib/zz_behaviours.c'", tree, source, tree, tree);
+    shell("sed -i 's/^double sphere_intersect(/double original_sphere_intersect(/' "
+          "'%s/lib/sphere.c' && "
           "printf '%%s\\n' 'double student_behaviour(double answer);' "
           "'double sphere_intersect(const Sphere *sphere, Ray ray, double tmin, double tmax)' '{' "
           "'    return student_behaviour(original_sphere_intersect(sphere, ray, tmin, tmax));' '}' "
@@ -269,7 +272,8 @@ static void test_behaviours(void **state)
         const Case *c = &cases[i];
         char tree[1300], label[100];
         snprintf(tree, sizeof tree, "%s/%s", root, c->tree);
-        snprintf(label, sizeof label, "%s %s", c->tree, c->behaviour[0] ? c->behaviour : "(as it is)");
+        snprintf(label, sizeof label, "%s %s", c->tree,
+                 c->behaviour[0] ? c->behaviour : "(as it is)");
         good += graded_as_expected(label, tree, tree, c->behaviour, c->verdict);
     }
     printf("%d of %d behaviours graded as their answers deserve, in time, nothing left\n", good,
