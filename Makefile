@@ -290,24 +290,15 @@ check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 
 # Each test program is run from the top directory (some read scenes/ and run the chapter
 # programs): every chapter's own tests in its own snapshot, and all of them in the final
-# one, as many at a time as there are cores (each writes where no other does). Their
-# output is then printed in that order, and the last line counts the programs that
-# passed and failed.
+# one, as many at a time as there are cores (each writes where no other does), each
+# under a time limit of TEST_TIMEOUT seconds, past which it is stopped with every process
+# it started and fails (bench/run_tests.sh). Their output is then printed in that order,
+# and the last line counts the programs that passed and failed.
 TEST_LOGS := $(BUILD)/test-logs
+TEST_TIMEOUT ?= 300
 test: all check-sources
-	@rm -rf $(TEST_LOGS) && mkdir -p $(TEST_LOGS); \
-	printf '%s\n' $(CHAPTER_TESTS) $(FINAL_TESTS) | xargs -P $$(nproc) -I TEST sh -c \
-	    'log=$(TEST_LOGS)/$$(echo TEST | tr / _); \
-	     if CHAPTER_DIR=$(BUILD) CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" TEST > $$log 2>&1; then echo passed; else echo failed; fi > $$log.result'; \
-	passed=0; failed=0; \
-	for t in $(CHAPTER_TESTS) $(FINAL_TESTS); do \
-	    log=$(TEST_LOGS)/$$(echo $$t | tr / _); \
-	    echo "== $$t"; cat $$log; \
-	    if [ "$$(cat $$log.result)" = passed ]; then passed=$$((passed+1)); \
-	    else failed=$$((failed+1)); echo "FAILED: $$t"; fi; \
-	done; \
-	echo "programs: $$passed passed, $$failed failed"; \
-	[ $$failed -eq 0 ]
+	@CHAPTER_DIR=$(BUILD) CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" \
+	    sh bench/run_tests.sh $(TEST_LOGS) $(TEST_TIMEOUT) $(CHAPTER_TESTS) $(FINAL_TESTS)
 
 # The gallery (bench/gallery_main.c): $(FIGURES)/index.html, one page with every chapter's
 # figures, tables, plots and diff. `make figures` records its run in $(FIGURES)/run.txt

@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -90,25 +91,48 @@ static void print_usage(const ProgramInfo *info)
     printf("  %-15s         this help\n", "--help");
 }
 
-/* A whole number or a real in [min, max], the whole text and nothing else. */
+/* The range a flag takes, in words: "a whole number from 8 to 16384", "a number in
+ * (0, 1]". */
+static void describe_range(const FlagSpec *spec, char *text, size_t size)
+{
+    if (spec->kind == VALUE_INT)
+        snprintf(text, size, "a whole number from %.0f to %.0f", spec->min, spec->max);
+    else
+        snprintf(text, size, "a number in %s%g, %g]", spec->bit == FLAG_RR ? "(" : "[",
+                 spec->min, spec->max);
+}
+
+/* A whole number or a real in the flag's range, the whole text and nothing else, in
+ * decimal; else exit naming what is wrong with it: empty, a space, not a decimal number
+ * (hexadecimal, nan, inf, a lone sign), beyond a double's range either way (too large,
+ * or below its smallest normal magnitude, where a subnormal keeps few digits), not
+ * whole, or out of the range. */
 static double parse_number(const FlagSpec *spec, const char *text)
 {
+    char range[96];
+    describe_range(spec, range, sizeof range);
     char *end;
     errno = 0;
     double value = strtod(text, &end);
-    int whole = spec->kind == VALUE_INT;
-    int ok = *text != '\0' && *end == '\0' && errno == 0 && isfinite(value) &&
-             value >= spec->min && value <= spec->max && (!whole || value == floor(value)) &&
-             strspn(text, "+-0123456789.eE") == strlen(text);
-    if (spec->bit == FLAG_RR)
-        ok = ok && value > 0.0;
-    if (!ok) {
-        if (whole)
-            cli_fail(2, "%s: expected a whole number from %.0f to %.0f, got '%s'", spec->name,
-                     spec->min, spec->max, text);
-        cli_fail(2, "%s: expected a number in (%g, %g], got '%s'", spec->name, spec->min,
-                 spec->max, text);
-    }
+    int underflow = (errno == ERANGE && fabs(value) <= 1.0) ||
+                    (value != 0.0 && fabs(value) < DBL_MIN);
+    if (*text == '\0')
+        cli_fail(2, "%s: expected %s, got an empty word", spec->name, range);
+    if (strpbrk(text, " \t\n\v\f\r"))
+        cli_fail(2, "%s: '%s' has white space in it; expected %s alone", spec->name, text, range);
+    if (*end != '\0' || strspn(text, "+-0123456789.eE") != strlen(text))
+        cli_fail(2, "%s: '%s' is not a decimal number (such as 16, 0.25 or 1e-3); expected %s",
+                 spec->name, text, range);
+    if (underflow)
+        cli_fail(2, "%s: '%s' is too small to compute with (below %g, the smallest double "
+                    "with all its digits); expected %s", spec->name, text, DBL_MIN, range);
+    if (errno == ERANGE)
+        cli_fail(2, "%s: '%s' is too large for a double (above %g); expected %s", spec->name,
+                 text, DBL_MAX, range);
+    if (spec->kind == VALUE_INT && value != floor(value))
+        cli_fail(2, "%s: '%s' is not a whole number; expected %s", spec->name, text, range);
+    if (!(value >= spec->min && value <= spec->max) || (spec->bit == FLAG_RR && !(value > 0.0)))
+        cli_fail(2, "%s: expected %s, got '%s'", spec->name, range, text);
     return value;
 }
 

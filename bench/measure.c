@@ -4,12 +4,17 @@
 #include "measure.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <float.h>
 #include <math.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stddef.h>
 #include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "atomic_file.h"
 
@@ -197,12 +202,191 @@ int measure_roulette_variance_infinite(double alpha, double max_reflectance)
 }
 #endif
 
-static void reference_paths(const char *directory, uint64_t key, char *mean, char *error,
-                            char *info, size_t size)
+void measure_reference_settings(ReferenceIdentity *identity, long width, long spp, long depth,
+                                const char *fresnel, unsigned long long seed, const char *sigma)
 {
-    snprintf(mean, size, "%s/%016llx.pfm", directory, (unsigned long long)key);
-    snprintf(error, size, "%s/%016llx-stderr.pfm", directory, (unsigned long long)key);
-    snprintf(info, size, "%s/%016llx.txt", directory, (unsigned long long)key);
+    snprintf(identity->settings, sizeof identity->settings,
+             "--size %ld --reference-spp %ld --depth %ld --fresnel %s --seed %llu --sigma %s",
+             width, spp, depth, fresnel, seed, sigma);
+}
+
+/* The paths of entry KEY's image, standard errors and description. */
+typedef struct {
+    char image[4200], std_error[4200], description[4200];
+} EntryPaths;
+
+static void entry_paths(const char *directory, uint64_t key, EntryPaths *paths)
+{
+    unsigned long long k = (unsigned long long)key;
+    snprintf(paths->image, sizeof paths->image, "%s/%016llx.pfm", directory, k);
+    snprintf(paths->std_error, sizeof paths->std_error, "%s/%016llx-stderr.pfm", directory, k);
+    snprintf(paths->description, sizeof paths->description, "%s/%016llx.txt", directory, k);
+}
+
+/* The bytes of a regular file, at most `limit` of them, in a buffer to free (with a NUL
+ * after them). Opened without waiting, so that a FIFO put in a file's place cannot stop
+ * the program. Returns 0, or -1 with errno set (EINVAL: not a regular file; EFBIG:
+ * longer than limit). */
+static int read_whole_file(const char *path, size_t limit, char **bytes, size_t *length)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK);
+    if (fd < 0)
+        return -1;
+    struct stat status;
+    int reason = fstat(fd, &status) != 0 ? errno
+                 : !S_ISREG(status.st_mode) ? EINVAL
+                 : (uintmax_t)status.st_size > limit ? EFBIG : 0;
+    size_t size = reason ? 0 : (size_t)status.st_size;
+    char *buffer = reason ? NULL : malloc(size + 1);
+    if (!reason && !buffer)
+        reason = ENOMEM;
+    size_t done = 0;
+    while (!reason && done < size) {
+        ssize_t n = read(fd, buffer + done, size - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            reason = n < 0 ? errno : EIO; /* shorter than it said: cut meanwhile */
+        else
+            done += (size_t)n;
+    }
+    close(fd);
+    if (reason) {
+        free(buffer);
+        errno = reason;
+        return -1;
+    }
+    buffer[size] = '\0';
+    *bytes = buffer;
+    *length = size;
+    return 0;
+}
+
+/* The largest image file the cache reads: 16384 x 16384 pixels of three floats. */
+#define ENTRY_IMAGE_MAX ((size_t)12 << 28 | 4096)
+
+/* A file's length and FNV-1a checksum, if it is at most `limit` bytes long (not read
+ * when it is longer); 0, or -1 with errno set. */
+static int file_fingerprint(const char *path, size_t limit, size_t *length, uint64_t *checksum)
+{
+    char *bytes;
+    if (read_whole_file(path, limit, &bytes, length) != 0)
+        return -1;
+    *checksum = measure_hash(MEASURE_HASH_START, bytes, *length);
+    free(bytes);
+    return 0;
+}
+
+/* What a description holds, besides the identity. */
+typedef struct {
+    ReferenceIdentity identity;
+    int width, height;
+    double spp, seconds, mean, mean_std_error;
+    size_t image_length, std_error_length;
+    unsigned long long image_checksum, std_error_checksum;
+} Description;
+
+#define DESCRIPTION_HEADER "reference cache entry, version 2\n"
+#define CHECKSUM_LINE_LENGTH 26 /* "checksum " + 16 hex digits + "\n" */
+
+/* The description's text without its checksum line; returns its length, or -1 if it
+ * does not fit in text[size]. */
+static int description_text(const Description *d, char *text, size_t size)
+{
+    int n = snprintf(text, size,
+                     DESCRIPTION_HEADER
+                     "key %016llx\nscene %016llx\nsettings %s\nwidth %d height %d\n"
+                     "spp %.17g\nseconds %.17g\nmean %.17g\nmean_std_error %.17g\n"
+                     "image %zu bytes, fnv-1a %016llx\nstderr %zu bytes, fnv-1a %016llx\n",
+                     (unsigned long long)d->identity.key,
+                     (unsigned long long)d->identity.scene_hash, d->identity.settings,
+                     d->width, d->height, d->spp, d->seconds, d->mean, d->mean_std_error,
+                     d->image_length, d->image_checksum, d->std_error_length,
+                     d->std_error_checksum);
+    return n >= 0 && (size_t)n < size ? n : -1;
+}
+
+static void checksum_line(const char *text, size_t length, char line[CHECKSUM_LINE_LENGTH + 1])
+{
+    snprintf(line, CHECKSUM_LINE_LENGTH + 1, "checksum %016llx\n",
+             (unsigned long long)measure_hash(MEASURE_HASH_START, text, length));
+}
+
+/* Read a description whose last line checks its bytes. Returns 0, or -1 with why. */
+static int read_description(const char *text, size_t length, Description *d, char *why,
+                            size_t why_size)
+{
+    char line[CHECKSUM_LINE_LENGTH + 1];
+    if (length < CHECKSUM_LINE_LENGTH ||
+        (checksum_line(text, length - CHECKSUM_LINE_LENGTH, line),
+         memcmp(line, text + length - CHECKSUM_LINE_LENGTH, CHECKSUM_LINE_LENGTH) != 0)) {
+        snprintf(why, why_size, "its description does not match its checksum: damaged, cut "
+                                "short, or of an older version");
+        return -1;
+    }
+    unsigned long long key, scene;
+    int used = 0;
+    *d = (Description){0};
+    int fields = sscanf(text,
+                        DESCRIPTION_HEADER
+                        "key %16llx scene %16llx settings %319[^\n] width %d height %d "
+                        "spp %lf seconds %lf mean %lf mean_std_error %lf "
+                        "image %zu bytes, fnv-1a %16llx stderr %zu bytes, fnv-1a %16llx %n",
+                        &key, &scene, d->identity.settings, &d->width, &d->height, &d->spp,
+                        &d->seconds, &d->mean, &d->mean_std_error, &d->image_length,
+                        &d->image_checksum, &d->std_error_length, &d->std_error_checksum,
+                        &used);
+    if (fields != 13 || (size_t)used != length - CHECKSUM_LINE_LENGTH) {
+        snprintf(why, why_size, "its description is not the one this program writes");
+        return -1;
+    }
+    d->identity.key = key;
+    d->identity.scene_hash = scene;
+    return 0;
+}
+
+/* Whether the description is of the reference `wanted`; if not, why. */
+static int is_wanted(const Description *d, const ReferenceIdentity *wanted, char *why,
+                     size_t why_size)
+{
+    if (d->identity.key != wanted->key)
+        snprintf(why, why_size, "it is the entry of key %016llx, copied under this one",
+                 (unsigned long long)d->identity.key);
+    else if (d->identity.scene_hash != wanted->scene_hash)
+        snprintf(why, why_size, "it was rendered from other scene bytes (hash %016llx, not "
+                 "%016llx)", (unsigned long long)d->identity.scene_hash,
+                 (unsigned long long)wanted->scene_hash);
+    else if (strcmp(d->identity.settings, wanted->settings) != 0)
+        snprintf(why, why_size, "it was rendered with other settings (%s)", d->identity.settings);
+    else
+        return 1;
+    return 0;
+}
+
+/* Whether the file at `path` is the one the description records; if not, why. A file
+ * longer than recorded is not read. */
+static int is_recorded_file(const char *path, size_t length, unsigned long long checksum,
+                            char *why, size_t why_size)
+{
+    size_t actual_length;
+    uint64_t actual;
+    const char *name = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
+    if (file_fingerprint(path, length, &actual_length, &actual) != 0) {
+        if (errno == EFBIG)
+            snprintf(why, why_size, "%s is longer than the %zu bytes it was written with", name,
+                     length);
+        else
+            snprintf(why, why_size, "%s cannot be read: %s", name,
+                     errno == EINVAL ? "not a regular file" : strerror(errno));
+    } else if (actual_length != length) {
+        snprintf(why, why_size, "%s has %zu bytes, not the %zu it was written with", name,
+                 actual_length, length);
+    } else if (actual != checksum) {
+        snprintf(why, why_size, "%s does not match its checksum: damaged", name);
+    } else {
+        return 1;
+    }
+    return 0;
 }
 
 /* Whether every value of the image is finite and >= 0: radiance, or its error. */
@@ -214,92 +398,162 @@ static int radiance_like(const Image *image)
     return 1;
 }
 
-/* Say why an entry is broken; returns -2. */
+/* Whether no standard error exceeds its pixel's value (with a little room for the two
+ * values' rounding to float): a mean of B batches x_b >= 0 has sum (x_b - mean)^2 <=
+ * max x_b * sum x_b - B mean^2 <= B mean^2 (B - 1), so its standard error,
+ * sqrt(sum (x_b - mean)^2 / (B - 1) / B), is at most the mean. */
+static int errors_within_values(const Reference *reference)
+{
+    const float *x = reference->image.pixels, *se = reference->std_error.pixels;
+    for (long i = 0; i < 3L * reference->image.width * reference->image.height; i++)
+        if (!((double)se[i] <= (double)x[i] * (1.0 + 1e-6) + FLT_MIN))
+            return 0;
+    return 1;
+}
+
+/* Say why an entry cannot be used; returns -2. */
 static int broken(Reference *reference, char *why, size_t why_size, const char *reason)
 {
     measure_reference_free(reference);
-    snprintf(why, why_size, "%s", reason);
+    if (reason)
+        snprintf(why, why_size, "%s", reason);
     return -2;
 }
 
-int measure_load_reference(const char *directory, uint64_t key, int width, int height,
-                           Reference *reference, char *why, size_t why_size)
+/* The numbers of a description that no render gives, or NULL. */
+static const char *implausible_numbers(const Description *d, int width, int height)
 {
-    char mean[4200], error[4200], info[4200], message[256];
-    reference_paths(directory, key, mean, error, info, sizeof mean);
+    if (d->width != width || d->height != height)
+        return "it is of another size";
+    if (!(d->spp > 0.0 && isfinite(d->spp) && d->seconds >= 0.0 && isfinite(d->seconds) &&
+          d->mean >= 0.0 && isfinite(d->mean) && d->mean_std_error >= 0.0 &&
+          isfinite(d->mean_std_error)))
+        return "its spp, seconds or mean are not finite numbers >= 0";
+    return NULL;
+}
+
+/* The images' values that no render gives, or NULL. */
+static const char *implausible_images(const Reference *reference, const Description *d)
+{
+    const Image *image = &reference->image, *std_error = &reference->std_error;
+    if (image->width != d->width || image->height != d->height ||
+        std_error->width != d->width || std_error->height != d->height)
+        return "its images are of another size";
+    if (!radiance_like(image))
+        return "a pixel is negative or not finite";
+    if (!radiance_like(std_error))
+        return "a standard error is negative or not finite";
+    if (!errors_within_values(reference))
+        return "a standard error exceeds its pixel's value, which no render gives";
+    double mean = image_mean_of(image);
+    if (!(fabs(mean - d->mean) <= 1e-9 * fabs(d->mean) + 1e-300))
+        return "its stored mean is not its image's";
+    return NULL;
+}
+
+int measure_load_reference(const char *directory, const ReferenceIdentity *wanted, int width,
+                           int height, Reference *reference, char *why, size_t why_size)
+{
+    EntryPaths paths;
+    entry_paths(directory, wanted->key, &paths);
     *reference = (Reference){0};
-    FILE *file = fopen(info, "r");
-    if (!file)
-        return -1;
-    int fields = fscanf(file, "spp %lf seconds %lf mean %lf mean_std_error %lf",
-                        &reference->spp, &reference->seconds, &reference->mean,
-                        &reference->mean_std_error);
-    fclose(file);
-    if (fields != 4 || !(reference->spp > 0.0 && isfinite(reference->spp)) ||
-        !(reference->seconds >= 0.0 && isfinite(reference->seconds)) ||
-        !isfinite(reference->mean) ||
-        !(reference->mean_std_error >= 0.0 && isfinite(reference->mean_std_error)))
-        return broken(reference, why, why_size, "its description is not four finite numbers");
-    if (image_read_pfm(mean, &reference->image, message, sizeof message) != 0 ||
-        image_read_pfm(error, &reference->std_error, message, sizeof message) != 0)
+    char *text, message[512];
+    size_t length;
+    if (read_whole_file(paths.description, 1 << 16, &text, &length) != 0) {
+        if (errno == ENOENT)
+            return -1;
+        snprintf(message, sizeof message, "its description cannot be read: %s",
+                 errno == EINVAL ? "not a regular file" : strerror(errno));
         return broken(reference, why, why_size, message);
-    if (reference->image.width != width || reference->image.height != height ||
-        reference->std_error.width != width || reference->std_error.height != height)
-        return broken(reference, why, why_size, "its images are of another size");
-    if (!radiance_like(&reference->image))
-        return broken(reference, why, why_size, "a pixel is negative or not finite");
-    if (!radiance_like(&reference->std_error))
-        return broken(reference, why, why_size, "a standard error is negative or not finite");
-    double image_mean = image_mean_of(&reference->image);
-    if (!(fabs(image_mean - reference->mean) <= 1e-9 * fabs(reference->mean) + 1e-300))
-        return broken(reference, why, why_size, "its stored mean is not its image's");
+    }
+    Description d;
+    int status = read_description(text, length, &d, why, why_size);
+    free(text);
+    if (status != 0)
+        return broken(reference, why, why_size, NULL);
+    if (!is_wanted(&d, wanted, why, why_size))
+        return broken(reference, why, why_size, NULL);
+    const char *wrong = implausible_numbers(&d, width, height);
+    if (wrong)
+        return broken(reference, why, why_size, wrong);
+    if (!is_recorded_file(paths.image, d.image_length, d.image_checksum, why, why_size) ||
+        !is_recorded_file(paths.std_error, d.std_error_length, d.std_error_checksum, why,
+                          why_size))
+        return broken(reference, why, why_size, NULL);
+    if (image_read_pfm(paths.image, &reference->image, message, sizeof message) != 0 ||
+        image_read_pfm(paths.std_error, &reference->std_error, message, sizeof message) != 0)
+        return broken(reference, why, why_size, message);
+    wrong = implausible_images(reference, &d);
+    if (wrong)
+        return broken(reference, why, why_size, wrong);
+    reference->spp = d.spp;
+    reference->seconds = d.seconds;
+    reference->mean = d.mean;
+    reference->mean_std_error = d.mean_std_error;
     reference->noise = measure_rms(&reference->std_error);
     reference->cached = 1;
     return 0;
 }
 
-/* Remove the files of a failed save, keeping errno. */
-static int undo_save(const char *first, const char *second)
+/* Remove the files of a failed save (never a folder in their place), keeping errno;
+ * returns -1. */
+static int undo_save(const EntryPaths *paths)
 {
     int saved = errno;
-    remove(first);
-    if (second)
-        remove(second);
+    unlink(paths->image);
+    unlink(paths->std_error);
     errno = saved;
     return -1;
 }
 
-/* The entry's three files; the description file last: an entry without it is not there
- * (measure_load_reference). */
-static int save_files(const char *mean, const char *error, const char *info,
+/* The entry's three files; the description last: an entry without it is not there,
+ * and it vouches for the images' bytes as they are on disk. */
+static int save_files(const EntryPaths *paths, const ReferenceIdentity *identity,
                       const Reference *reference)
 {
-    remove(info);
-    if (image_write_pfm(&reference->image, mean) != 0)
+    if (remove(paths->description) != 0 && errno != ENOENT)
         return -1;
-    if (image_write_pfm(&reference->std_error, error) != 0)
-        return undo_save(mean, NULL);
+    Description d = {*identity, reference->image.width, reference->image.height,
+                     reference->spp, reference->seconds, reference->mean,
+                     reference->mean_std_error, 0, 0, 0, 0};
+    uint64_t image_checksum, std_error_checksum;
+    if (image_write_pfm(&reference->image, paths->image) != 0 ||
+        image_write_pfm(&reference->std_error, paths->std_error) != 0 ||
+        file_fingerprint(paths->image, ENTRY_IMAGE_MAX, &d.image_length, &image_checksum) != 0 ||
+        file_fingerprint(paths->std_error, ENTRY_IMAGE_MAX, &d.std_error_length,
+                         &std_error_checksum) != 0)
+        return undo_save(paths);
+    d.image_checksum = image_checksum;
+    d.std_error_checksum = std_error_checksum;
+    char text[2048], line[CHECKSUM_LINE_LENGTH + 1];
+    int length = description_text(&d, text, sizeof text);
+    if (length < 0) {
+        errno = ENAMETOOLONG;
+        return undo_save(paths);
+    }
+    checksum_line(text, (size_t)length, line);
     AtomicFile file;
-    if (atomic_open(&file, info) != 0)
-        return undo_save(mean, error);
-    fprintf(file.file, "spp %.17g seconds %.17g mean %.17g mean_std_error %.17g\n",
-            reference->spp, reference->seconds, reference->mean, reference->mean_std_error);
+    if (atomic_open(&file, paths->description) != 0)
+        return undo_save(paths);
+    fputs(text, file.file);
+    fputs(line, file.file);
     if (atomic_close(&file, 0) != 0)
-        return undo_save(mean, error);
+        return undo_save(paths);
     return 0;
 }
 
-int measure_save_reference(const char *directory, uint64_t key, const Reference *reference)
+int measure_save_reference(const char *directory, const ReferenceIdentity *identity,
+                           const Reference *reference)
 {
-    char mean[4200], error[4200], info[4200];
-    reference_paths(directory, key, mean, error, info, sizeof mean);
+    EntryPaths paths;
+    entry_paths(directory, identity->key, &paths);
     sigset_t ending, previous;
     sigemptyset(&ending);
     sigaddset(&ending, SIGINT);
     sigaddset(&ending, SIGTERM);
     sigaddset(&ending, SIGHUP);
     pthread_sigmask(SIG_BLOCK, &ending, &previous);
-    int status = save_files(mean, error, info, reference);
+    int status = save_files(&paths, identity, reference);
     int saved = errno;
     pthread_sigmask(SIG_SETMASK, &previous, NULL);
     errno = saved;

@@ -7,7 +7,8 @@
  * one without: both estimate the same integral, path.h). A reference is rendered once
  * and cached in build/references/, named by a 64-bit FNV-1a hash of the scene file's
  * bytes and of a text describing everything that changes its pixels (estimator
- * settings, size, samples, seed).
+ * settings, size, samples, seed); an entry is used only if it proves it is whole and
+ * the one asked for (the cache, below).
  *
  * Its own noise is printed beside it: the RMS over pixels and channels of its per-pixel
  * standard errors.
@@ -153,19 +154,44 @@ int measure_combine_runs(const TableRow *runs, int count, TableRow *combined);
 int measure_roulette_variance_infinite(double alpha, double max_reflectance);
 #endif
 
-/* Load a cached reference "DIR/HASH.pfm" with its "DIR/HASH-stderr.pfm" and "DIR/HASH.txt"
- * (spp, seconds, mean and its standard error), both images width x height. Returns 0; -1
- * when there is no entry; -2 when the entry is broken, with why in why[why_size]: a file
- * missing or unreadable, of another size, or not a measurement of radiance (a pixel or
- * a standard error negative or not finite, metadata not finite, a stored mean that is
- * not its image's). A broken entry is to be rendered again, never believed. */
-int measure_load_reference(const char *directory, uint64_t key, int width, int height,
-                           Reference *reference, char *why, size_t why_size);
+/* The reference cache. An entry is three files in the cache folder: KEY.pfm (the
+ * image), KEY-stderr.pfm (its per-pixel standard errors) and KEY.txt, its description,
+ * written last: what it is (its key, the hash of the scene file's bytes it was rendered
+ * from, its settings as text), its numbers (spp, seconds, mean and its standard error),
+ * each image's length and FNV-1a checksum, and a last line with the checksum of the
+ * description itself. An entry is used only if it proves that it is whole and is the one
+ * asked for: a flipped bit anywhere, a file cut short or missing, another scene's or
+ * another key's entry copied under this key, values that no render gives (a standard
+ * error above its pixel's value: a pixel is the mean of batches that are >= 0, so its
+ * standard error is at most that mean) each make it broken, to be rendered again.
+ * FNV-1a tells any change of one byte for certain (each step is a bijection of the
+ * running hash), and other damage with probability 1 - 2^-64; it guards against
+ * accidents, not against someone who means to forge an entry. */
+typedef struct {
+    uint64_t key;        /* names the entry's files */
+    uint64_t scene_hash; /* of the scene file's bytes (scene_file.h) */
+    char settings[320];  /* measure_reference_settings */
+} ReferenceIdentity;
 
-/* Store one: the two images, then the .txt that completes the entry, with the signals
- * that end the program held back meanwhile, so that the entry appears whole or not at
- * all. Returns 0, or -1 with errno set and nothing of the entry left behind. */
-int measure_save_reference(const char *directory, uint64_t key, const Reference *reference);
+/* A reference's settings as text: its width, samples per pixel asked for, depth,
+ * Fresnel mode ("schlick" or "exact"), seed and the roughness a chapter set
+ * ("NAME=SIGMA", or "=0" for none), in the words the reference program is given. */
+void measure_reference_settings(ReferenceIdentity *identity, long width, long spp, long depth,
+                                const char *fresnel, unsigned long long seed, const char *sigma);
+
+/* Load the cached reference `wanted` from `directory`, both images width x height.
+ * Returns 0; -1 when there is no entry (no description); -2 when the entry cannot be
+ * used, with why in why[why_size] (one line). A file that is not a regular file (a FIFO,
+ * a folder) is not opened for reading, so it cannot stop the program. */
+int measure_load_reference(const char *directory, const ReferenceIdentity *wanted, int width,
+                           int height, Reference *reference, char *why, size_t why_size);
+
+/* Store one: the two images, then the description that completes the entry (any old
+ * description removed first), with the signals that end the program held back
+ * meanwhile, so that a signal leaves the whole entry or none of it. Returns 0, or -1 with
+ * errno set and nothing of the entry left behind. */
+int measure_save_reference(const char *directory, const ReferenceIdentity *identity,
+                           const Reference *reference);
 
 void measure_reference_free(Reference *reference);
 

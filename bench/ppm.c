@@ -157,9 +157,7 @@ static int render_pass(const Scene *scene, const RenderSettings *whole,
     return status;
 }
 
-/* Another pass, if one is left and the budget allows it: the total time with it (judged
- * by the mean pass so far) ends nearer the budget than without it. */
-static int budget_allows(const PpmSettings *s, int done, double cpu_used)
+int ppm_budget_allows(const PpmSettings *s, int done, double cpu_used)
 {
     if (done >= s->passes)
         return 0;
@@ -182,7 +180,7 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
     int show = render->progress && isatty(STDERR_FILENO);
     double start = stats_now(), cpu_start = stats_cpu_now();
     long stored = 0;
-    while (status == 0 && budget_allows(settings, r.passes, stats_cpu_now() - cpu_start)) {
+    while (status == 0 && ppm_budget_allows(settings, r.passes, stats_cpu_now() - cpu_start)) {
         RenderResult pass;
         int pass_stored;
         if (render_pass(scene, render, settings, r.passes + 1, &pass, &r.render.rays, &pass_stored) != 0) {

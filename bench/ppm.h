@@ -51,4 +51,9 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
 
 void ppm_result_free(PpmResult *result);
 
+/* Whether to render another pass after `done` passes that took `cpu_used` seconds: one
+ * is left and, with a budget, the total with it (judged by the mean pass so far) ends
+ * nearer the budget than without it; the first pass always. */
+int ppm_budget_allows(const PpmSettings *settings, int done, double cpu_used);
+
 #endif

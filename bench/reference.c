@@ -18,10 +18,13 @@
  * sub-pixels, in REFERENCE_BATCHES independent batches (render_batches.h): sub-pixels
  * reach the same noise as random positions with about half the samples at 800 x 800,
  * and the batches still give the per-pixel errors without bias, which the chapters
- * subtract from their MSE. It stores the reference as --out/KEY.pfm, KEY-stderr.pfm
- * and KEY.txt. An interrupted render stores nothing and exits with status 130. With
+ * subtract from their MSE. It stores the reference as a cache entry in --out
+ * (KEY.pfm, KEY-stderr.pfm and KEY.txt, measure.h), which records the key, the scene's
+ * bytes' hash and the settings it was rendered with; when --out cannot take it (a full
+ * disk), it says why and stores it in --fallback, a temporary folder the chapter program
+ * reads it from. An interrupted render stores nothing and exits with status 130. With
  * --parent PID it ends when that program does (Linux: the parent-death signal), so a
- * chapter program stopped by SIGTERM does not leave it rendering on its own.
+ * chapter program killed outright does not leave it rendering on its own.
  */
 #include <ctype.h>
 #include <errno.h>
@@ -55,7 +58,7 @@ static void fail(int status, const char *format, const char *detail)
 }
 
 typedef struct {
-    const char *scene, *name, *fresnel, *sigma, *out;
+    const char *scene, *name, *fresnel, *sigma, *out, *fallback;
     long size, spp, depth, parent;
     unsigned long long seed, key;
     int has_key;
@@ -65,8 +68,9 @@ typedef struct {
 static const char USAGE[] =
     "usage: reference --scene FILE --size N --reference-spp N --depth N --out DIR --key HEX\n"
     "                 [--name NAME] [--fresnel schlick|exact] [--sigma MATERIAL=S] [--seed N]\n"
-    "                 [--parent PID] [--quiet]\n"
-    "Renders the reference image of a scene into DIR/HEX.pfm, HEX-stderr.pfm and HEX.txt.\n"
+    "                 [--fallback DIR] [--parent PID] [--quiet]\n"
+    "Renders the reference image of a scene into DIR/HEX.pfm, HEX-stderr.pfm and HEX.txt\n"
+    "(into the --fallback folder when DIR cannot take them).\n"
     "The chapter programs run it when their cache has no reference yet.\n";
 
 static long whole_number(const char *flag, const char *text, long min, long max)
@@ -111,6 +115,7 @@ static Request parse(int argc, char **argv)
         else if (strcmp(flag, "--fresnel") == 0) r.fresnel = value;
         else if (strcmp(flag, "--sigma") == 0) r.sigma = value;
         else if (strcmp(flag, "--out") == 0) r.out = value;
+        else if (strcmp(flag, "--fallback") == 0) r.fallback = value;
         else if (strcmp(flag, "--key") == 0) {
             r.key = unsigned_word(flag, value, 16);
             r.has_key = 1;
@@ -146,6 +151,26 @@ static void apply_sigma(Scene *scene, const char *sigma)
     scene->materials[material].sigma = strtod(equals + 1, NULL);
 }
 
+/* Into --out, or else into --fallback (saying why), or fail naming both reasons. */
+static void save(const Request *request, const ReferenceIdentity *identity,
+                 const Reference *reference)
+{
+    if (measure_save_reference(request->out, identity, reference) == 0)
+        return;
+    char reason[4400];
+    snprintf(reason, sizeof reason, "%s: %s", request->out, strerror(errno));
+    if (!request->fallback)
+        fail(1, "cannot write the reference into %s", reason);
+    if (measure_save_reference(request->fallback, identity, reference) != 0) {
+        char both[8900];
+        snprintf(both, sizeof both, "%s, nor into %s: %s", reason, request->fallback,
+                 strerror(errno));
+        fail(1, "cannot write the reference into %s", both);
+    }
+    fprintf(stderr, "%s: cannot write the reference into %s: kept in %s for this run only\n",
+            program, reason, request->fallback);
+}
+
 int main(int argc, char **argv)
 {
     Request request = parse(argc, argv);
@@ -157,9 +182,13 @@ int main(int argc, char **argv)
     }
 #endif
     Scene scene;
-    char error[4400];
-    if (scene_load(request.scene, &scene, error, sizeof error) != 0)
+    SceneFileInfo file;
+    char error[4400], *text;
+    size_t length;
+    if (scene_file_read(request.scene, &text, &length, error, sizeof error) != 0 ||
+        scene_parse(text, length, request.scene, &scene, &file, error, sizeof error) != 0)
         fail(2, "%s", error);
+    free(text);
     apply_sigma(&scene, request.sigma);
     MirrorPlanes mirrors;
     if (mirror_light_find_planes(&scene, &mirrors) != 0)
@@ -189,8 +218,10 @@ int main(int argc, char **argv)
     measure_image_mean(&result.image, &result.average_std_error, &reference.mean,
                        &reference.mean_std_error);
     image_free(&result.average_std_error);
-    if (measure_save_reference(request.out, request.key, &reference) != 0)
-        fail(1, "cannot write the reference into %s", request.out);
+    ReferenceIdentity identity = {request.key, file.hash, ""};
+    measure_reference_settings(&identity, request.size, request.spp, request.depth,
+                               request.fresnel, request.seed, request.sigma);
+    save(&request, &identity, &reference);
     render_result_free(&result);
     mirror_planes_free(&mirrors);
     scene_free(&scene);

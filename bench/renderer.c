@@ -2,11 +2,13 @@
  * interruption. See renderer.h. */
 #include "renderer.h"
 
+#include <errno.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "atomic_file.h"
@@ -32,24 +34,46 @@ typedef struct {
 
 static volatile sig_atomic_t interrupt_requested = 0;
 
-/* The one signal path. The first SIGINT asks a running render to stop early (it saves
- * what it has). SIGTERM, SIGHUP and a second SIGINT end the program: first the
- * temporary files being written are removed (atomic_file.h), then the signal is raised
- * again with its default action, so the program dies of it as it would have. */
-static void on_signal(int signal_number)
+/* A program started to render for this one (render_forward_signals), while it runs; and
+ * whether signals that end this program wait for render_end_deferred, and which came. */
+static volatile sig_atomic_t child_pid = 0;
+static volatile sig_atomic_t deferring = 0;
+static volatile sig_atomic_t deferred_signal = 0;
+
+/* End the program as the signal would: first remove the temporary files being written
+ * (atomic_file.h), then raise it again with its default action, so the program dies of
+ * it as it would have. */
+static void end_program(int signal_number)
 {
-    if (signal_number == SIGINT && !interrupt_requested) {
-        interrupt_requested = 1;
-        return;
-    }
     atomic_remove_temporaries();
     signal(signal_number, SIG_DFL);
-    raise(signal_number); /* delivered when this handler returns */
+    raise(signal_number); /* delivered when the handler returns, or at once */
 }
+
+/* The one signal path. The first SIGINT asks a running render to stop early (it saves
+ * what it has). SIGTERM, SIGHUP and a second SIGINT end the program. While a child
+ * renders for it, each is passed on to the child (a second ending one as SIGKILL: the
+ * child did not end), and an ending one waits until the child has ended and what both
+ * wrote is cleaned up. */
+static void on_signal(int signal_number)
+{
+    int first_interrupt = signal_number == SIGINT && !interrupt_requested;
+    if (first_interrupt)
+        interrupt_requested = 1;
+    if (child_pid > 0)
+        kill(child_pid, deferred_signal && !first_interrupt ? SIGKILL : signal_number);
+    if (first_interrupt)
+        return;
+    if (deferring)
+        deferred_signal = signal_number;
+    else
+        end_program(signal_number);
+}
+
+static const int handled[] = {SIGINT, SIGTERM, SIGHUP};
 
 void render_install_interrupt(void)
 {
-    static const int handled[] = {SIGINT, SIGTERM, SIGHUP};
     struct sigaction action = {0};
     action.sa_handler = on_signal;
     sigemptyset(&action.sa_mask);
@@ -57,6 +81,47 @@ void render_install_interrupt(void)
         sigaddset(&action.sa_mask, handled[i]); /* one at a time */
     for (int i = 0; i < 3; i++)
         sigaction(handled[i], &action, NULL);
+}
+
+void render_hold_signals(int hold)
+{
+    sigset_t set;
+    sigemptyset(&set);
+    for (int i = 0; i < 3; i++)
+        sigaddset(&set, handled[i]);
+    pthread_sigmask(hold ? SIG_BLOCK : SIG_UNBLOCK, &set, NULL);
+}
+
+void render_forward_signals(pid_t child)
+{
+    deferring = 1;
+    child_pid = child;
+    if (child > 0 && interrupt_requested)
+        kill(child, SIGINT);
+}
+
+int render_wait_for_child(void)
+{
+    pid_t child = child_pid;
+    siginfo_t info;
+    /* Wait without reaping, so that the id still names the child whenever the handler
+     * passes a signal on; then stop passing them on, and reap it. */
+    while (waitid(P_PID, (id_t)child, &info, WEXITED | WNOWAIT) != 0)
+        if (errno != EINTR)
+            return -1;
+    child_pid = 0;
+    int status;
+    while (waitpid(child, &status, 0) < 0)
+        if (errno != EINTR)
+            return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+void render_end_deferred(void)
+{
+    deferring = 0;
+    if (deferred_signal)
+        end_program(deferred_signal);
 }
 
 int render_interrupted(void)

@@ -12,6 +12,8 @@
 #ifndef RENDERER_H
 #define RENDERER_H
 
+#include <sys/types.h>
+
 #include "image.h"
 #include "render.h"
 #include "stats.h"
@@ -71,6 +73,25 @@ double render_samples_per_pixel(const RenderResult *result);
  * program. SIGTERM, SIGHUP and a second SIGINT still end it, as their default action
  * does, but only after removing the temporary files being written (atomic_file.h). */
 void render_install_interrupt(void);
+
+/* Hold back (hold = 1) or let through (0) SIGINT, SIGTERM and SIGHUP in this thread:
+ * held while a child is started, so that none comes before it is known. */
+void render_hold_signals(int hold);
+
+/* A child process renders for this program (the reference renderer): from now on
+ * SIGINT, SIGTERM and SIGHUP are passed on to it (a second ending one as SIGKILL), and
+ * one that ends this program does so only at render_end_deferred, once the child has
+ * ended and the caller has cleaned up. A SIGINT that came before is passed on now.
+ * child 0: no child yet, only the deferral (while a temporary folder exists). */
+void render_forward_signals(pid_t child);
+
+/* Wait for that child: its exit status, 128 + the signal that ended it, or -1 if it
+ * cannot be waited for. Signals are no longer passed on to it. */
+int render_wait_for_child(void);
+
+/* If a signal that ends the program came while the child ran, end the program now (as
+ * that signal does); else go on, ending signals again ending it at once. */
+void render_end_deferred(void);
 
 /* Whether SIGINT has asked to stop. */
 int render_interrupted(void);

@@ -12,6 +12,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <float.h>
 #include <limits.h>
 #include <stdint.h>
 #include <stdarg.h>
@@ -129,7 +130,7 @@ static double distance(Vec3 a, Vec3 b)
     return vec3_length(vec3_sub(b, a));
 }
 
-/* The largest distance between any two of `count` points: the shape's size. */
+/* The largest distance between any two of `count` points. */
 static double size_of(const Vec3 *p, int count)
 {
     double size = 0.0;
@@ -137,6 +138,27 @@ static double size_of(const Vec3 *p, int count)
         for (int j = i + 1; j < count; j++)
             size = fmax(size, distance(p[i], p[j]));
     return size;
+}
+
+/* A shape's size (the largest distance between two of its `count` corners), with its
+ * corners in its own units in unit[]: each corner minus the first, divided by the
+ * shape's extent (the largest difference of two corners' coordinates). Lengths, areas
+ * and volumes are then near 1, so the flatness tests below are the same at every scale:
+ * computed as they stand, a square of a length below about 1e-154 underflows to 0 (a
+ * shape of any area would seem flat) and a fourth power above 1e77 overflows. An extent
+ * too small to divide by (0, or a subnormal number) is returned as the size: such a shape
+ * is a point, or far below SIZE_MIN. */
+static double shape_size(const Vec3 *p, int count, Vec3 *unit)
+{
+    double extent = 0.0;
+    for (int i = 0; i < count; i++)
+        for (int j = i + 1; j < count; j++)
+            extent = fmax(extent, vec3_max_abs(vec3_sub(p[i], p[j])));
+    if (!(extent >= DBL_MIN))
+        return extent;
+    for (int i = 0; i < count; i++)
+        unit[i] = vec3_scale(vec3_sub(p[i], p[0]), 1.0 / extent);
+    return extent * size_of(unit, count);
 }
 
 /* Whether a shape of this size (not 0: that is a degenerate shape) is below SIZE_MIN. */
@@ -154,12 +176,16 @@ static int fail_too_small(Reader *r, const char *what, double size)
 /* Add triangle (a, b, c), front side (b - a) x (c - a), unless it has no area. */
 static int add_triangle(Reader *r, const Statement *s, Vec3 a, Vec3 b, Vec3 c)
 {
-    Vec3 corners[3] = {a, b, c};
-    double size = size_of(corners, 3);
-    double twice_area = vec3_length(vec3_cross(vec3_sub(b, a), vec3_sub(c, a)));
+    Vec3 corners[3] = {a, b, c}, unit[3];
+    double size = shape_size(corners, 3, unit);
     if (size_too_small(size))
         return fail_too_small(r, s->form->keyword, size);
-    if (!(twice_area > FLAT * size * size))
+    if (size == 0.0)
+        return fail(r, "degenerate %s (zero area: its corners are one point)",
+                    s->form->keyword);
+    double unit_size = size_of(unit, 3);
+    double twice_area = vec3_length(vec3_cross(unit[1], unit[2]));
+    if (!(twice_area > FLAT * unit_size * unit_size))
         return fail(r, "degenerate %s (zero area)", s->form->keyword);
     if (scene_add_triangle(r->scene, triangle_make(a, b, c, s->material)) < 0)
         return fail(r, "out of memory");
@@ -179,15 +205,19 @@ static int read_camera(Reader *r, const Statement *s)
     if (r->camera_line > 0)
         return fail(r, "a second camera (the first is on line %d)", r->camera_line);
     Vec3 eye = point(s->n), bl = point(s->n + 3), br = point(s->n + 6), tl = point(s->n + 9);
-    Vec3 right = vec3_sub(br, bl), up = vec3_sub(tl, bl);
-    Vec3 normal = vec3_cross(right, up);
-    double size = fmax(vec3_length(right), vec3_length(up));
+    Vec3 corners[3] = {bl, br, tl}, unit[3];
+    double size = shape_size(corners, 3, unit);
     if (size_too_small(size))
         return fail_too_small(r, "camera: the image plane", size);
-    if (!(vec3_length(normal) > FLAT * size * size))
+    if (size == 0.0)
+        return fail(r, "degenerate camera: the image plane's corners are one point");
+    Vec3 right = unit[1], up = unit[2], normal = vec3_cross(right, up);
+    double unit_size = size_of(unit, 3);
+    if (!(vec3_length(normal) > FLAT * unit_size * unit_size))
         return fail(r, "degenerate camera: the image plane's corners are collinear");
-    double eye_height = fabs(vec3_dot(vec3_sub(eye, bl), vec3_normalize(normal)));
-    if (!(eye_height > FLAT * fmax(size, distance(bl, eye))))
+    Vec3 eye_unit = vec3_scale(vec3_sub(eye, bl), unit_size / size);
+    double eye_height = fabs(vec3_dot(eye_unit, vec3_normalize(normal)));
+    if (!(eye_height > FLAT * fmax(unit_size, vec3_length(eye_unit))))
         return fail(r, "degenerate camera: the eye is on the image plane");
     r->camera_line = r->line;
     r->scene->camera = camera_make(eye, bl, br, tl);
@@ -255,20 +285,21 @@ static int read_triangle(Reader *r, const Statement *s)
 /* A quad must be flat and convex: then its two triangles cover it and face one way. */
 static int read_quad(Reader *r, const Statement *s)
 {
-    Vec3 p[4] = {point(s->n), point(s->n + 3), point(s->n + 6), point(s->n + 9)};
-    double size = size_of(p, 4);
-    Vec3 normal = vec3_cross(vec3_sub(p[1], p[0]), vec3_sub(p[2], p[0]));
+    Vec3 p[4] = {point(s->n), point(s->n + 3), point(s->n + 6), point(s->n + 9)}, unit[4];
+    double size = shape_size(p, 4, unit);
     if (size_too_small(size))
         return fail_too_small(r, "quad", size);
-    if (!(vec3_length(normal) > FLAT * size * size))
+    double unit_size = size_of(unit, 4);
+    Vec3 normal = vec3_cross(unit[1], unit[2]);
+    if (size == 0.0 || !(vec3_length(normal) > FLAT * unit_size * unit_size))
         return fail(r, "degenerate quad (zero area)");
     normal = vec3_normalize(normal);
-    if (!(fabs(vec3_dot(vec3_sub(p[3], p[0]), normal)) <= FLAT * size))
+    if (!(fabs(vec3_dot(unit[3], normal)) <= FLAT * unit_size))
         return fail(r, "non-planar quad: P3 is off the plane of P0, P1, P2");
     /* Convex: at every corner the boundary turns the same way, about the normal. */
     for (int i = 0; i < 4; i++) {
-        Vec3 in = vec3_sub(p[i], p[(i + 3) % 4]), out = vec3_sub(p[(i + 1) % 4], p[i]);
-        if (!(vec3_dot(vec3_cross(in, out), normal) > FLAT * size * size))
+        Vec3 in = vec3_sub(unit[i], unit[(i + 3) % 4]), out = vec3_sub(unit[(i + 1) % 4], unit[i]);
+        if (!(vec3_dot(vec3_cross(in, out), normal) > FLAT * unit_size * unit_size))
             return fail(r, "non-convex quad: P%d is not a convex corner "
                            "(the corners must go round the quad in order)", i);
     }
@@ -321,19 +352,20 @@ static int read_box(Reader *r, const Statement *s)
 /* Four faces, each turned away from the vertex it does not contain. */
 static int read_tetrahedron(Reader *r, const Statement *s)
 {
-    Vec3 p[4] = {point(s->n), point(s->n + 3), point(s->n + 6), point(s->n + 9)};
-    double size = size_of(p, 4);
-    double six_volume = vec3_dot(vec3_sub(p[1], p[0]),
-                                 vec3_cross(vec3_sub(p[2], p[0]), vec3_sub(p[3], p[0])));
+    Vec3 p[4] = {point(s->n), point(s->n + 3), point(s->n + 6), point(s->n + 9)}, unit[4];
+    double size = shape_size(p, 4, unit);
     if (size_too_small(size))
         return fail_too_small(r, "tetrahedron", size);
-    if (!(fabs(six_volume) > FLAT * size * size * size))
+    double unit_size = size_of(unit, 4);
+    double six_volume = vec3_dot(unit[1], vec3_cross(unit[2], unit[3]));
+    if (size == 0.0 || !(fabs(six_volume) > FLAT * unit_size * unit_size * unit_size))
         return fail(r, "flat tetrahedron (zero volume)");
     for (int opposite = 0; opposite < 4; opposite++) {
-        Vec3 a = p[(opposite + 1) % 4], b = p[(opposite + 2) % 4], c = p[(opposite + 3) % 4];
+        Vec3 a = unit[(opposite + 1) % 4], b = unit[(opposite + 2) % 4], c = unit[(opposite + 3) % 4];
         Vec3 normal = vec3_cross(vec3_sub(b, a), vec3_sub(c, a));
-        int faces_opposite = vec3_dot(normal, vec3_sub(p[opposite], a)) > 0.0;
-        if (add_triangle(r, s, a, faces_opposite ? c : b, faces_opposite ? b : c) != 0)
+        int faces_opposite = vec3_dot(normal, vec3_sub(unit[opposite], a)) > 0.0;
+        Vec3 pa = p[(opposite + 1) % 4], pb = p[(opposite + 2) % 4], pc = p[(opposite + 3) % 4];
+        if (add_triangle(r, s, pa, faces_opposite ? pc : pb, faces_opposite ? pb : pc) != 0)
             return -1;
     }
     return 0;
@@ -434,7 +466,11 @@ static int read_number(Reader *r, const char *token, double *value)
 {
     if (!is_decimal(token))
         return fail(r, "'%.40s' is not a decimal number", token);
+    errno = 0;
     *value = strtod(token, NULL);
+    if ((errno == ERANGE && fabs(*value) < 1.0) || (*value != 0.0 && fabs(*value) < DBL_MIN))
+        return fail(r, "'%.40s' is too small to compute with: below %g, the smallest double "
+                       "with all its digits (write 0 for zero)", token, DBL_MIN);
     if (!(fabs(*value) <= NUMBER_MAX))
         return fail(r, "'%.40s' is out of range: numbers are finite and within +-%g "
                        "(the scales the reader takes)", token, NUMBER_MAX);

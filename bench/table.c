@@ -37,6 +37,17 @@ static void text_widths(const TableRow *rows, int count, int *panel, int *settin
     }
 }
 
+/* An error measured against a noisy reference: "<ref" when it
+ * is within the reference's own noise (the estimate with that noise taken out is not
+ * above 0, `within`), which 0 or a negative number would misstate. */
+static void print_error(FILE *out, const char *format, double value, int within)
+{
+    if (within && !isnan(value))
+        fprintf(out, " %10s", TABLE_WITHIN_REFERENCE_NOISE);
+    else
+        print_measure(out, format, value);
+}
+
 void table_print(FILE *out, const TableRow *rows, int count)
 {
     int panel_width, settings_width;
@@ -52,12 +63,12 @@ void table_print(FILE *out, const TableRow *rows, int count)
                 r->panel, settings_width, r->settings, r->spp, r->seconds, r->threads,
                 (unsigned long long)r->rays.camera, (unsigned long long)r->rays.bounce,
                 (unsigned long long)r->rays.shadow, table_mrays_per_second(r));
-        print_measure(out, " %10.5f", r->rmse);
+        print_error(out, " %10.5f", r->rmse, r->rmse == 0.0 && r->reference_share > 0.0);
         if (isnan(r->rmse_spread))
             fprintf(out, " %9s", "-");
         else
             fprintf(out, " +-%7.5f", r->rmse_spread);
-        print_measure(out, " %10.3e", r->rel_mse);
+        print_error(out, " %10.3e", r->rel_mse, !(r->rel_mse > 0.0));
         print_measure(out, " %10.3g", r->efficiency);
         if (isnan(r->reference_share))
             fprintf(out, " %5s", "-");

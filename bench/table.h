@@ -14,7 +14,10 @@
  *                      of an unbiased estimator halves rel_mse and doubles the time, so
  *                      efficiency compares estimators independently of sample count
  *   nonfinite          samples dropped for being NaN or infinite
- * An error column is "-" (empty in the CSV) when no reference was used.
+ * An error column is "-" (empty in the CSV) when no reference was used, and "<ref" when
+ * the error is within the reference's own noise: measure.h takes that noise out of the
+ * squared error, and what is left is then not above 0 (the CSV keeps the estimate, which
+ * may be negative, for means over many rows).
  */
 #ifndef TABLE_H
 #define TABLE_H
@@ -22,6 +25,9 @@
 #include <stdio.h>
 
 #include "stats.h"
+
+/* What the table prints for an error within the reference's own noise. */
+#define TABLE_WITHIN_REFERENCE_NOISE "<ref"
 
 typedef struct {
     char panel[48];

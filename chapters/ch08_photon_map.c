@@ -46,6 +46,7 @@
  * Photons per pass and the first radius scale with the image: per pass a fixed number of
  * photons per pixel, and the radius in proportion to a pixel's size.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -56,10 +57,11 @@
 #include "ppm.h"
 
 /* The photon version's settings, for an image 800 pixels wide (they scale: see above);
- * the first radius as a fraction of the view's width at the lights (ppm_first_radius:
- * 15.6 in the room, so about 0.05 there). docs/chapter8.md: how they were chosen. */
+ * the first radius as a fraction of the view's width at the depth the camera sees
+ * (ppm_first_radius: 14.8 in the room, so about 0.05 there). docs/chapter8.md: how they
+ * were chosen. */
 #define PHOTONS_PER_PIXEL 0.5
-#define FIRST_RADIUS_AT_800 0.0032
+#define FIRST_RADIUS_AT_800 0.0034
 #define PPM_SPP_PER_PASS 8
 #define MAX_PASSES 100000
 
@@ -89,7 +91,9 @@ static void reference_for(const Options *options, const Scene *scene, Reference 
 static PpmSettings photon_settings(const PathSettings *path, const Scene *scene, int width,
                                    int height, int spp, int passes)
 {
-    PpmSettings ppm = {*path, (int)(PHOTONS_PER_PIXEL * width * height + 0.5),
+    /* No more photons per pass than a grid takes: a pass then never stores too many. */
+    double photons = fmin(PHOTONS_PER_PIXEL * width * height + 0.5, POINT_GRID_MAX_POINTS);
+    PpmSettings ppm = {*path, (int)photons,
                        ppm_first_radius(scene, FIRST_RADIUS_AT_800) * 800.0 / width, PPM_ALPHA,
                        spp, passes, 0.0};
     ppm.path.mirror_light = PHOTON_MIRROR_LIGHT;
@@ -108,13 +112,16 @@ static void describe_ppm(const PpmSettings *ppm, const PpmResult *result, char *
              ppm->radius, result->radius);
 }
 
-/* Render the photon version, or exit as experiment_render does. */
-static void render_ppm(const Scene *scene, const RenderSettings *settings, const PpmSettings *ppm,
-                       PpmResult *result)
+/* Render the photon version, or exit as experiment_render does. Interrupted, the panel
+ * `name` (if not NULL) is saved with the passes completed, if there is one. */
+static void render_ppm(const Options *options, const char *name, const Scene *scene,
+                       const RenderSettings *settings, const PpmSettings *ppm, PpmResult *result)
 {
     render_install_interrupt();
     if (ppm_render(scene, settings, ppm, result) != 0)
         cli_fail(1, "out of memory rendering %d x %d with photons", settings->image.width, settings->image.height);
+    if (name && result->render.interrupted)
+        experiment_write_panel(options, name, &result->render);
     experiment_exit_if_interrupted(&result->render, NULL);
 }
 
@@ -251,7 +258,7 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
     settings.label = "photon map";
     settings.image.sampling = PIXEL_PROGRESSIVE; /* stratified over all passes */
     PpmResult photons;
-    render_ppm(scene, &settings, &ppm, &photons);
+    render_ppm(options, "ch08_photon_map", scene, &settings, &ppm, &photons);
     experiment_write_image(options, "ch08_photon_map", &photons.render.image, PANEL_EXPOSURE);
     describe_ppm(&ppm, &photons, text, sizeof text);
     rows[1] = experiment_row("ch08_photon_map", text, &photons.render);
@@ -429,7 +436,7 @@ static void measure_photons(const Options *small, const Scene *scene, const Refe
         RenderSettings settings = seeded_settings(small, scene, k, ppm->spp);
         settings.image.sampling = PIXEL_PROGRESSIVE;
         PpmResult result;
-        render_ppm(scene, &settings, ppm, &result);
+        render_ppm(small, NULL, scene, &settings, ppm, &result);
         seeds_add(&seeds, &result.render.image, result.render.seconds, result.cpu_seconds,
                   &references[0]);
         ppm_result_free(&result);

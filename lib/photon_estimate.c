@@ -3,6 +3,7 @@
 #include "photon_estimate.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "diffuse.h"
@@ -72,19 +73,52 @@ Vec3 photon_estimate_reachable(const Scene *scene, const PhotonMap *map, double 
     return vec3_scale(box, PI * radius * radius / reachable_area(scene, x, radius));
 }
 
-double ppm_first_radius(const Scene *scene, double fraction)
+static int compare_doubles(const void *a, const void *b)
 {
-    Vec3 lights = vec3(0, 0, 0); /* the lights' centroid, by area */
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* How deep the camera's view is: the median depth (along `axis`) of the first hits of
+ * VIEW_RAYS^2 rays through the image plane, at least 1e-9 of the image plane's depth
+ * and of the largest coordinate of the eye and the hits; if no ray hits, the distance to
+ * the farthest lamp corner. */
+static double view_depth(const Scene *scene, Vec3 axis, double plane_depth)
+{
+    const Camera *c = &scene->camera;
+    double depths[VIEW_RAYS * VIEW_RAYS], size = fmax(vec3_max_abs(c->eye), plane_depth);
+    double farthest = 0.0;
+    int n = 0;
+    for (int i = 0; i < VIEW_RAYS * VIEW_RAYS; i++) {
+        Hit hit;
+        Ray ray = camera_ray(c, VIEW_RAYS, VIEW_RAYS, i % VIEW_RAYS, i / VIEW_RAYS, 0.5, 0.5);
+        if (scene_intersect(scene, ray, INFINITY, &hit)) {
+            depths[n++] = vec3_dot(vec3_sub(hit.point, c->eye), axis);
+            size = fmax(size, vec3_max_abs(hit.point));
+        }
+    }
+    if (n > 0) {
+        qsort(depths, (size_t)n, sizeof *depths, compare_doubles);
+        return fmax(depths[n / 2], 1e-9 * size);
+    }
     for (int i = 0; i < scene->light_count; i++) {
         const Triangle *t = &scene->triangles[scene->light_triangles[i]];
-        Vec3 centroid = triangle_point(t, 1.0 / 3.0, 1.0 / 3.0);
-        lights = vec3_add_scaled(lights, centroid, t->area / scene->light_area);
+        for (int k = 0; k < 3; k++)
+            farthest = fmax(farthest, vec3_length(vec3_sub(triangle_point(t, k == 1, k == 2), c->eye)));
     }
+    return farthest;
+}
+
+double ppm_first_radius(const Scene *scene, double fraction)
+{
     const Camera *c = &scene->camera;
-    Vec3 plane = vec3_add_scaled(vec3_add_scaled(c->bottom_left, c->right, 0.5), c->up, 0.5);
-    double width = vec3_length(c->right) * vec3_length(vec3_sub(lights, c->eye)) /
-                   vec3_length(vec3_sub(plane, c->eye));
-    return fraction * width;
+    Vec3 axis = vec3_normalize(vec3_cross(c->right, c->up));
+    double plane_depth = vec3_dot(vec3_sub(c->bottom_left, c->eye), axis);
+    if (plane_depth < 0.0) { /* the axis from the eye towards the image plane */
+        axis = vec3_neg(axis);
+        plane_depth = -plane_depth;
+    }
+    return fraction * vec3_length(c->right) * view_depth(scene, axis, plane_depth) / plane_depth;
 }
 
 double ppm_radius(double first_radius, double alpha, int pass)

@@ -35,11 +35,13 @@ Vec3 photon_estimate_reachable(const Scene *scene, const PhotonMap *map, double 
 #define PPM_ALPHA (2.0 / 3.0)
 double ppm_radius(double first_radius, double alpha, int pass);
 
-/* A first radius that follows the view, not the scene's units (as stochastic
- * progressive photon mapping takes it from a pixel's footprint): `fraction` of the
- * width the image plane covers at the lights' distance from the eye. The same scene at
- * any scale is blurred alike, and an object far away changes nothing. The scene must
- * have a light. */
+/* A first radius that follows the view and the scene's size, not its units (as
+ * stochastic progressive photon mapping takes it from a pixel's footprint): `fraction`
+ * of the width the view covers at the depth of what the camera sees, the median depth
+ * of the first hits of VIEW_RAYS x VIEW_RAYS camera rays (docs/chapter8.md). Never ~0
+ * for a valid scene: the same scene at any scale is blurred alike, and neither an
+ * object out of view nor where the lamps are changes it. The scene must have a light. */
+#define VIEW_RAYS 16
 double ppm_first_radius(const Scene *scene, double fraction);
 
 #endif

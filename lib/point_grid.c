@@ -1,27 +1,26 @@
-/* point_grid.c (chapter 8): building and querying the hashed grid. See point_grid.h. */
+/* point_grid.c (chapter 8): building and querying the hashed grid. See point_grid.h;
+ * docs/chapter8.md, section 3, proves the bounds. */
 #include "point_grid.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 
-/* Cube coordinates below this in size are integers that convert to int64_t exactly. */
-#define LARGEST_CUBE 0x1p52
+/* R' = R + WIDENING (|p| + R) + UNDERFLOW, |p| the largest coordinate of the points: far
+ * more than the rounding of a distance at such coordinates (a few 1e-16 of them), and
+ * than the distances whose squares underflow to 0 (below 1e-161). */
+#define WIDENING 1e-12
+#define UNDERFLOW 1e-150
 
-/* The cube that holds p, its integer coordinates; NaN or infinite far out. */
-static Vec3 cube_of(Vec3 p, double radius)
+/* The cube that holds p: floor(p / (2 R')) on each axis, as the doubles round. */
+static Vec3 cube_of(Vec3 p, double reach)
 {
-    double inverse_side = 0.5 / radius;
+    double inverse_side = 0.5 / reach;
     return vec3(floor(p.x * inverse_side), floor(p.y * inverse_side), floor(p.z * inverse_side));
 }
 
-static int is_ordinary(Vec3 cube)
-{
-    return fabs(cube.x) < LARGEST_CUBE && fabs(cube.y) < LARGEST_CUBE && fabs(cube.z) < LARGEST_CUBE;
-}
-
-/* Teschner et al.'s spatial hash of an ordinary cube: each coordinate times a large
- * prime, XORed. */
+/* Teschner et al.'s spatial hash of a cube: each coordinate times a large prime, XORed. */
 static int bucket_of(Vec3 cube, int buckets)
 {
     uint64_t h = (uint64_t)(int64_t)cube.x * 73856093u ^ (uint64_t)(int64_t)cube.y * 19349663u ^
@@ -29,29 +28,24 @@ static int bucket_of(Vec3 cube, int buckets)
     return (int)(h & (uint64_t)(buckets - 1));
 }
 
-/* The cubes that the ball of radius R around p meets, low[axis] .. high[axis], its box
- * widened a little for the rounding of the distances a query computes. Returns 0 if
- * they are not all ordinary. */
-static int cubes_met(Vec3 p, double radius, Vec3 *low, Vec3 *high)
+/* The cubes that the ball of radius R' around p meets: low[axis] .. high[axis]. */
+static void cubes_met(Vec3 p, double reach, Vec3 *low, Vec3 *high)
 {
-    Vec3 widen = vec3_scale(vec3(fabs(p.x) + radius, fabs(p.y) + radius, fabs(p.z) + radius), 1e-9);
-    Vec3 reach = vec3_add(vec3(radius, radius, radius), widen);
-    *low = cube_of(vec3_sub(p, reach), radius);
-    *high = cube_of(vec3_add(p, reach), radius);
-    return is_ordinary(*low) && is_ordinary(*high);
+    Vec3 r = vec3(reach, reach, reach);
+    *low = cube_of(vec3_sub(p, r), reach);
+    *high = cube_of(vec3_add(p, r), reach);
 }
 
 /* File every point under the cubes its ball meets, counting the filings per bucket
- * (start[b + 1]) when `next` is NULL, else putting filing number next[b]++ in place. */
+ * (start[b + 1]) when `next` is NULL, else putting filing number next[b]++ in place.
+ * A point with an infinite or NaN coordinate is near no centre: it is not filed. */
 static void file_points(PointGrid *g, int *next)
 {
     for (int i = 0; i < g->count; i++) {
         Vec3 low, high;
-        if (!cubes_met(g->points[i], g->radius, &low, &high)) {
-            if (next)
-                g->unfiled[g->unfiled_count++] = i;
+        if (!vec3_is_finite(g->points[i]))
             continue;
-        }
+        cubes_met(g->points[i], g->reach, &low, &high);
         for (double z = low.z; z <= high.z; z++)
             for (double y = low.y; y <= high.y; y++)
                 for (double x = low.x; x <= high.x; x++) {
@@ -67,30 +61,55 @@ static void file_points(PointGrid *g, int *next)
     }
 }
 
+/* R' for the points; 0 when a cube's side or a point's reach would overflow. */
+static double widened_radius(const Vec3 *points, int count, double radius)
+{
+    double size = 0.0;
+    for (int i = 0; i < count; i++)
+        if (vec3_is_finite(points[i]))
+            size = fmax(size, vec3_max_abs(points[i]));
+    double reach = radius + WIDENING * size + WIDENING * radius + UNDERFLOW;
+    return size + 2.0 * reach <= DBL_MAX ? reach : 0.0;
+}
+
+/* The filings, counted in 64 bits: at most 27 per point (docs/chapter8.md). */
+static int64_t count_filings(const PointGrid *g)
+{
+    int64_t filings = 0;
+    for (int i = 0; g->reach > 0.0 && i < g->count; i++) {
+        Vec3 low, high;
+        if (!vec3_is_finite(g->points[i]))
+            continue;
+        cubes_met(g->points[i], g->reach, &low, &high);
+        filings += (int64_t)(high.x - low.x + 1) * (int64_t)(high.y - low.y + 1) *
+                   (int64_t)(high.z - low.z + 1);
+    }
+    return filings;
+}
+
 int point_grid_build(PointGrid *grid, const Vec3 *points, int count, double radius)
 {
-    /* The filings, counted: at most 3 cubes per axis for each point. */
     size_t n = count > 0 ? (size_t)count : 1;
-    PointGrid g = {malloc(n * sizeof *g.points), NULL, NULL, NULL, malloc(n * sizeof *g.unfiled),
-                   count, 1, 0, radius};
-    int ok = g.points && g.unfiled && count <= (1 << 24);
+    PointGrid g = {malloc(n * sizeof *g.points), NULL, NULL, NULL, count, 0, radius, 0.0};
+    int ok = g.points && count >= 0 && count <= POINT_GRID_MAX_POINTS && radius > 0.0 &&
+             radius < INFINITY;
     for (int i = 0; ok && i < count; i++)
         g.points[i] = points[i];
-    long filings = 0;
-    for (int i = 0; ok && i < count; i++) {
-        Vec3 low, high;
-        if (cubes_met(points[i], radius, &low, &high))
-            filings += (long)(high.x - low.x + 1) * (long)(high.y - low.y + 1) * (long)(high.z - low.z + 1);
+    if (ok)
+        g.reach = widened_radius(points, count, radius);
+    int64_t filings = ok ? count_filings(&g) : 0;
+    ok = ok && filings <= 27 * (int64_t)count;
+    if (ok && g.reach > 0.0) {
+        g.buckets = 1;
+        while (g.buckets / 2 < filings) /* a power of two, at least twice the filings */
+            g.buckets *= 2;
     }
-    while (g.buckets / 2 < filings) /* a power of two, at least twice the filings */
-        g.buckets *= 2;
-    size_t m = filings > 0 ? (size_t)filings : 1;
-    g.filed_cube = malloc(m * sizeof *g.filed_cube);
-    g.filed_point = malloc(m * sizeof *g.filed_point);
+    g.filed_cube = malloc((size_t)(filings > 0 ? filings : 1) * sizeof *g.filed_cube);
+    g.filed_point = malloc((size_t)(filings > 0 ? filings : 1) * sizeof *g.filed_point);
     g.start = calloc((size_t)g.buckets + 1, sizeof *g.start);
-    int *next = malloc((size_t)g.buckets * sizeof *next);
+    int *next = malloc(((size_t)g.buckets + 1) * sizeof *next);
     ok = ok && g.filed_cube && g.filed_point && g.start && next;
-    if (ok) {
+    if (ok && g.buckets > 0) {
         /* A counting sort: count per bucket, sum to where each bucket starts, place. */
         file_points(&g, NULL);
         for (int b = 0; b < g.buckets; b++) {
@@ -114,8 +133,12 @@ void point_grid_free(PointGrid *grid)
     free(grid->filed_cube);
     free(grid->filed_point);
     free(grid->start);
-    free(grid->unfiled);
-    *grid = (PointGrid){NULL, NULL, NULL, NULL, NULL, 0, 0, 0, 0.0};
+    *grid = (PointGrid){NULL, NULL, NULL, NULL, 0, 0, 0.0, 0.0};
+}
+
+int point_grid_filings(const PointGrid *grid)
+{
+    return grid->buckets > 0 ? grid->start[grid->buckets] : 0;
 }
 
 static void visit_if_near(const PointGrid *grid, int i, Vec3 center, double radius2,
@@ -131,18 +154,20 @@ void point_grid_query_radius(const PointGrid *grid, Vec3 center, double radius, 
                              void *context)
 {
     double radius2 = radius * radius;
-    Vec3 cube = cube_of(center, grid->radius);
-    if (!(radius <= grid->radius) || !is_ordinary(cube)) {
+    if (!(radius <= grid->radius) || radius2 == INFINITY || grid->buckets == 0) {
         for (int i = 0; i < grid->count; i++)
             visit_if_near(grid, i, center, radius2, visit, context);
         return;
     }
+    /* Every filed cube lies within 10^12 of the origin: a centre whose cube is farther,
+     * or not a number, has no point near it. */
+    Vec3 cube = cube_of(center, grid->reach);
+    if (!(fabs(cube.x) < 0x1p52 && fabs(cube.y) < 0x1p52 && fabs(cube.z) < 0x1p52))
+        return;
     int b = bucket_of(cube, grid->buckets);
     for (int f = grid->start[b]; f < grid->start[b + 1]; f++) {
         Vec3 c = grid->filed_cube[f]; /* a bucket holds other cubes too */
         if (c.x == cube.x && c.y == cube.y && c.z == cube.z)
             visit_if_near(grid, grid->filed_point[f], center, radius2, visit, context);
     }
-    for (int k = 0; k < grid->unfiled_count; k++)
-        visit_if_near(grid, grid->unfiled[k], center, radius2, visit, context);
 }

@@ -31,6 +31,7 @@
 
 #include "area_light.h"
 #include "configuration_factor.h"
+#include "path_caustics.h"
 #include "photon_estimate.h"
 #include "ppm.h"
 
@@ -181,38 +182,72 @@ static void test_oren_nayar_matches_shadow_rays(void **state)
     scene_free(&scene);
 }
 
-/* The first radius follows the view, not the units: the lamp over the floor, seen from
- * a camera whose 2-wide image plane is 1 from the eye, 2.5 from the lamp's centre: the
- * fraction of 2 x 2.5. The same set-up scaled by 1e-3 and 1e3 gets a radius scaled alike
- * (a radius in world units would give the three the same), and a sphere 1e12 away, or
- * a far bigger floor, changes nothing (a radius from the scene's extent would grow). */
+/* The first radius follows the view and the scene's size, never ~0. A camera at the
+ * origin looks along +z through a wide image plane (4 x 1, at depth 1) at a wall at depth
+ * 3 s: the view is 4 x 3 s wide there, so the radius is 0.01 x 12 s. Each case says what
+ * must not change it, or what it must be:
+ * - the scale s = 1e-3 or 1e3 scales it (a radius in world units would not);
+ * - a sphere 1e12 away and the wall 1e6 wide (out of view) change nothing (a radius from
+ *   the scene's extent would grow), nor does the scene moved 1e6 s away;
+ * - lamps: one above the eye and one below it (their centroid the eye, where a distance
+ *   from the eye to the lamps gave 1e-16), or out of view to the side, change nothing;
+ * - half the view empty (the wall only on its right): still the wall's depth;
+ * - nothing in view: the farthest lamp corner's distance takes the depth's place;
+ * - the eye 1e-12 from the wall: the depth is 1e-9 of the image plane's (1), not 1e-12,
+ *   so the radius stays far above the rounding of the plane's coordinates.
+ * The plane's height (1) in place of its width (4) would give a quarter. */
+typedef enum { VIEW_PLAIN, VIEW_FAR_OBJECTS, VIEW_MOVED, VIEW_LAMPS_ABOUT_THE_EYE,
+               VIEW_HALF_EMPTY, VIEW_EMPTY, VIEW_AT_THE_WALL, VIEW_CASES } ViewCase;
+
+static double view_case_radius(ViewCase view, double s)
+{
+    Scene scene;
+    scene_init(&scene);
+    Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(1, 1, 1)};
+    Material grey = {.name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    int l = scene_add_material(&scene, lamp), g = scene_add_material(&scene, grey);
+    Vec3 at = view == VIEW_MOVED ? vec3(1e6 * s, -2e6 * s, 3e6 * s) : vec3(0, 0, 0);
+    double depth = view == VIEW_AT_THE_WALL ? 1e-12 : 3 * s, wide = view == VIEW_FAR_OBJECTS ? 1e6 : 20 * s;
+    double left = view == VIEW_HALF_EMPTY ? 0.0 : -wide, z = view == VIEW_EMPTY ? -depth : depth;
+    add_quad(&scene, vec3_add(at, vec3(left, -wide, z)), vec3_add(at, vec3(left, wide, z)),
+             vec3_add(at, vec3(wide, wide, z)), vec3_add(at, vec3(wide, -wide, z)), g);
+    /* Lamps 5 s above and below the eye, or one out of view to the side (the only
+     * thing left to measure when the wall is behind the eye: its farthest corners
+     * sqrt(36 + 1) s away), each 2 s x 2 s. */
+    for (int k = 0; k < (view == VIEW_LAMPS_ABOUT_THE_EYE ? 2 : 1); k++) {
+        Vec3 c = vec3_add(at, view == VIEW_LAMPS_ABOUT_THE_EYE ? vec3(0, k ? -5 * s : 5 * s, 0)
+                                                               : vec3(5 * s, 0, 0));
+        add_quad(&scene, vec3_add(c, vec3(-s, 0, -s)), vec3_add(c, vec3(s, 0, -s)),
+                 vec3_add(c, vec3(s, 0, s)), vec3_add(c, vec3(-s, 0, s)), l);
+    }
+    if (view == VIEW_FAR_OBJECTS)
+        assert_true(scene_add_sphere(&scene, (Sphere){vec3(1e12, 0, 0), 1.0, g}) >= 0);
+    scene.camera = camera_make(at, vec3_add(at, vec3(-2 * s, -0.5 * s, s)),
+                               vec3_add(at, vec3(2 * s, -0.5 * s, s)),
+                               vec3_add(at, vec3(-2 * s, 0.5 * s, s)));
+    assert_int_equal(scene_prepare(&scene), 0);
+    double radius = ppm_first_radius(&scene, 0.01);
+    scene_free(&scene);
+    return radius;
+}
+
 static void test_first_radius_follows_the_view(void **state)
 {
+    const char *names[VIEW_CASES] = {"plain", "far objects", "moved 1e6 away",
+                                     "lamps above and below the eye", "half the view empty",
+                                     "nothing in view", "the eye 1e-12 from the wall"};
     const double scales[3] = {1.0, 1e-3, 1e3};
-    for (int k = 0; k < 4; k++) {
-        double s = scales[k % 3];
-        Scene scene;
-        scene_init(&scene);
-        Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(1, 1, 1)};
-        Material grey = {.name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
-        int l = scene_add_material(&scene, lamp), g = scene_add_material(&scene, grey);
-        /* The lamp's centre at (0, 0, 2.5 s), facing down; the eye at the origin. */
-        scene_add_triangle(&scene, triangle_make(vec3(-s, -s, 2.5 * s), vec3(s, s, 2.5 * s),
-                                                 vec3(s, -s, 2.5 * s), l));
-        scene_add_triangle(&scene, triangle_make(vec3(-s, -s, 2.5 * s), vec3(-s, s, 2.5 * s),
-                                                 vec3(s, s, 2.5 * s), l));
-        double floor = k == 3 ? 1e6 : 10.0 * s;
-        scene_add_triangle(&scene, triangle_make(vec3(-floor, -floor, -s), vec3(floor, -floor, -s),
-                                                 vec3(0, floor, -s), g));
-        if (k == 3)
-            assert_true(scene_add_sphere(&scene, (Sphere){vec3(1e12, 0, 0), 1.0, g}) >= 0);
-        scene.camera = camera_make(vec3(0, 0, 0), vec3(-s, -s, s), vec3(s, -s, s), vec3(-s, s, s));
-        assert_int_equal(scene_prepare(&scene), 0);
-        double radius = ppm_first_radius(&scene, 0.01);
-        print_message("    scale %g%s: first radius %.9g\n", s, k == 3 ? ", far objects" : "", radius);
-        assert_true(fabs(radius - 0.01 * 2.0 * 2.5 * s) <= 1e-12 * radius);
-        scene_free(&scene);
-    }
+    for (int k = 0; k < 3; k++)
+        for (ViewCase view = VIEW_PLAIN; view < VIEW_CASES; view++) {
+            double s = scales[k], radius = view_case_radius(view, s);
+            double expected = 0.01 * 4.0 * (view == VIEW_EMPTY ? sqrt(37.0) * s
+                                            : view == VIEW_AT_THE_WALL ? 1e-9 : 3 * s);
+            if (view == VIEW_AT_THE_WALL && k > 0)
+                continue; /* the wall's distance does not scale */
+            print_message("    scale %g, %s: first radius %.9g, expected %.9g\n", s, names[view],
+                          radius, expected);
+            assert_true(fabs(radius - expected) <= 1e-9 * expected);
+        }
 }
 
 /* Only photons on a surface facing the same way count: at a floor point next to a wall
@@ -247,17 +282,21 @@ static void test_photons_on_a_wall_do_not_count_on_the_floor(void **state)
 
 /* No dark edges. A floor (z = 0) lit evenly, irradiance E = 1, on x < 0: photons of
  * power 1/40000 on a jittered 100 x 200 grid over [-0.5, 0] x [-0.5, 0.5] (seed 9).
- * There it ends (1) at a wall x = 0 that rises from it, or (2) at an edge, a drop of 1
- * to another floor. Near either, the disk of radius 0.1 is partly behind the wall or
- * off the floor, and dividing by pi r^2 would darken the estimate towards half at the
- * edge. The closed form is rho E / pi at every point, up to the edge: the mean of the
- * estimate over 40 points along the edge at each of 5 distances d must be within 4% of
- * it (the pattern of reachable_area quantises the disk's clipped area, and its
- * rotation from point to point averages that out; the grid's noise is far below 1%).
- * With pi r^2 (planted), the estimate at d = 0.002 is 0.51 of it. */
+ * There it ends (1) at a wall x = 0 that rises from it, or (2) at an edge, a drop of h
+ * to another floor, unlit, that reaches far beyond: h = 0.002, 0.02, 0.2 and 1 (a ray
+ * past the edge lands there 1.2, 3, 21 and 101 times as far as the disc's point it
+ * aimed at: not a point photons on this floor can reach). Near either, the disk of
+ * radius r = 0.1 is partly behind the wall or off the floor, and dividing by pi r^2
+ * would darken the estimate towards half at the edge. The closed form is rho E / pi at
+ * every point, up to the edge: the mean of the estimate over 40 points along the edge
+ * at each of 5 distances d must be within 4% of it (the pattern of reachable_area
+ * quantises the disk's clipped area, and its rotation from point to point averages
+ * that out; the grid's noise is far below 1%); and so must chapter 8's path, whose
+ * camera ray meets the floor there (depth 2, no shadow rays: its first diffuse vertex's
+ * map estimate alone). With pi r^2 (planted), the estimate at d = 0.002 is 0.51 of it. */
 static void test_no_dark_edge_at_a_wall_or_a_drop(void **state)
 {
-    enum { NX = 100, NY = 200, ALONG = 40 };
+    enum { NX = 100, NY = 200, ALONG = 40, KINDS = 5 };
     static Photon photons[NX * NY];
     Rng rng = rng_for_sample(9, 0, 0);
     for (int i = 0; i < NX; i++)
@@ -270,28 +309,43 @@ static void test_no_dark_edge_at_a_wall_or_a_drop(void **state)
     assert_int_equal(photon_map_build(&map, photons, NX * NY, NX * NY, 0.1), 0);
     Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     const double distances[5] = {0.002, 0.02, 0.05, 0.08, 0.2}, expected = 0.5 / PI;
-    for (int scene_kind = 0; scene_kind < 2; scene_kind++) {
+    const double drops[KINDS] = {0.0, 0.002, 0.02, 0.2, 1.0}; /* 0: the wall */
+    CausticPathSettings path = {{.max_depth = 2}, &map, &map, 0.1};
+    for (int kind = 0; kind < KINDS; kind++) {
         Scene scene;
         scene_init(&scene);
         int m = scene_add_material(&scene, white);
-        if (scene_kind == 0) { /* the floor under the wall too, and the wall facing -x */
+        double h = drops[kind];
+        if (kind == 0) { /* the floor under the wall too, and the wall facing -x */
             add_quad(&scene, vec3(-30, -30, 0), vec3(30, -30, 0), vec3(30, 30, 0), vec3(-30, 30, 0), m);
             add_quad(&scene, vec3(0, -30, 0), vec3(0, -30, 30), vec3(0, 30, 30), vec3(0, 30, 0), m);
-        } else { /* the floor ends at x = 0, another lies 1 below */
+        } else { /* the floor ends at x = 0, another lies h below */
             add_quad(&scene, vec3(-30, -30, 0), vec3(0, -30, 0), vec3(0, 30, 0), vec3(-30, 30, 0), m);
-            add_quad(&scene, vec3(-30, -30, -1), vec3(30, -30, -1), vec3(30, 30, -1), vec3(-30, 30, -1), m);
+            add_quad(&scene, vec3(-30, -30, -h), vec3(30, -30, -h), vec3(30, 30, -h), vec3(-30, 30, -h), m);
         }
         assert_int_equal(scene_prepare(&scene), 0);
+        double ratios[2][5];
         for (int k = 0; k < 5; k++) {
-            double sum = 0.0;
+            double sum = 0.0, path_sum = 0.0;
+            RayCounts counts = {0, 0, 0};
             for (int j = 0; j < ALONG; j++) {
                 Vec3 p = vec3(-distances[k], -0.2 + 0.4 * (j + 0.5) / ALONG, 0);
                 sum += estimate_at(&scene, &map, 0.1, p, vec3(0, 0, 1), vec3(0, 0, 1), &white).x;
+                Rng path_rng = rng_for_sample(10, (uint64_t)k, (uint64_t)j);
+                Ray down = {vec3_add(p, vec3(0, 0, 1)), vec3(0, 0, -1)};
+                path_sum += path_caustics_radiance(&scene, down, &path_rng, &path, &counts).x;
             }
-            double ratio = sum / ALONG / expected;
-            print_message("    %s, d = %.3f: estimate / closed form %.4f\n",
-                          scene_kind == 0 ? "wall" : "drop", distances[k], ratio);
-            assert_true(fabs(ratio - 1.0) < 0.04);
+            ratios[0][k] = sum / ALONG / expected;
+            ratios[1][k] = path_sum / ALONG / expected;
+        }
+        for (int i = 0; i < 2; i++) {
+            print_message("    %-14s %s at d = 0.002 ... 0.2:", kind ? "a drop" : "the wall",
+                          i ? "the path's" : "estimate / closed form");
+            for (int k = 0; k < 5; k++)
+                print_message(" %.4f", ratios[i][k]);
+            print_message(kind ? " (h = %g)\n" : "\n", h);
+            for (int k = 0; k < 5; k++)
+                assert_true(fabs(ratios[i][k] - 1.0) < 0.04);
         }
         scene_free(&scene);
     }

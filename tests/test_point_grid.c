@@ -6,9 +6,10 @@
  * radius, since integer distances are exact in doubles, and many on the cubes' faces),
  * many copies of the same point, all points on one plane (as photons on a floor are), a
  * cluster with an empty hole queried inside the hole, queries far from every point, the
- * empty grid, and points around 0 and beyond 2^52 cubes from it. The grids are built
- * for one radius and queried with smaller and larger ones too. Random clouds with
- * random radii cover the rest.
+ * empty grid, and points around 0 and far from it. The grids are built for one radius
+ * and queried with smaller and larger ones too. Random clouds with random radii cover
+ * the rest. And every radius and point set builds in bounded time and memory, at the
+ * scales where rounding decides (test_extreme_scales_build_bounded).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -16,6 +17,8 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -174,8 +177,8 @@ static void test_empty_regions(void **state)
 }
 
 /* Points on both sides of 0 on every axis, -0 among them, with cube faces at 0; the
- * same of size 1e-30; a cloud 1e20 from the origin with cubes of 2e-3 (beyond 2^52
- * cubes from 0: every point unfiled); and one that straddles 2^52 cubes of side 1. */
+ * same of size 1e-30; a cloud 1e20 from the origin built for R = 1e-3 (2^52 cubes of
+ * side 2R would not reach it), and one 2^52 from it built for R = 0.5. */
 static void test_signs_and_scales(void **state)
 {
     static Vec3 points[MAX_POINTS];
@@ -249,9 +252,86 @@ static void test_random_clouds(void **state)
     }
 }
 
+/* Every radius > 0 and every point set builds in bounded time and memory, and answers
+ * as testing every point does: at most 27 filings per point (the build is linear in the
+ * count of points) and buckets at most four times the filings, at scales where rounding
+ * decides: |p| ~ 5 with R = 1e-11 (a ball of 1e-11 among coordinates whose rounding is
+ * 1e-15), R = 1e-300 among points 1e-299 apart (squared distances underflow to 0, so
+ * every pair is "within" R), subnormal coordinates and radius, R = 1e300, points at
+ * 1e300, all points equal, coordinates from 1e-300 to 1e300 in one set, points near the
+ * largest double, and infinite and NaN coordinates (never near anything). */
+typedef struct {
+    const char *name;
+    Vec3 base;
+    double spread; /* points at base + spread (u - 1/2), u uniform in [0, 1)^3 */
+    double radius;
+    int wild;      /* 1: coordinates +-10^e, e uniform in [-300, 300]; 2: some not finite */
+} Extreme;
+
+static Vec3 extreme_point(const Extreme *e, Rng *rng)
+{
+    double u[3];
+    for (int a = 0; a < 3; a++) {
+        double x = rng_uniform(rng);
+        u[a] = e->wild == 1 ? (x < 0.5 ? -1 : 1) * pow(10.0, 600 * rng_uniform(rng) - 300)
+                            : e->spread * (x - 0.5);
+    }
+    return vec3_add(e->base, vec3(u[0], u[1], u[2]));
+}
+
+static void test_extreme_scales_build_bounded(void **state)
+{
+    static Vec3 points[1000];
+    const Extreme cases[] = {
+        {"|p| ~ 5, R = 1e-11", {5, -3, 4}, 4e-11, 1e-11, 0},
+        {"R = 1e-300, points 1e-299 apart", {0, 0, 0}, 1e-299, 1e-300, 0},
+        {"subnormal coordinates and radius", {0, 0, 0}, 1e-310, 1e-320, 0},
+        {"R = 1e300", {1, 2, 3}, 10, 1e300, 0},
+        {"points at 1e300, R = 1", {1e300, -1e300, 5e299}, 1e299, 1.0, 0},
+        {"points at 1e300, R = 1e299", {1e300, -1e300, 5e299}, 1e299, 1e299, 0},
+        {"all points equal", {7, 7, 7}, 0.0, 0.5, 0},
+        {"1e-300 to 1e300 in one set, R = 1", {0, 0, 0}, 0.0, 1.0, 1},
+        {"1e-300 to 1e300 in one set, R = 1e-100", {0, 0, 0}, 0.0, 1e-100, 1},
+        {"near the largest double", {1.5e308, -1.5e308, 0}, 1e307, 1.0, 0},
+        {"R = 1e308: no cubes, every point tested", {1, 2, 3}, 10, 1e308, 0},
+        {"infinite and NaN coordinates among others", {1, 1, 1}, 1.0, 0.1, 2},
+    };
+    const int n = 1000;
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const Extreme *e = &cases[k];
+        Rng rng = rng_for_sample(12, (uint64_t)k, 0);
+        for (int i = 0; i < n; i++) {
+            points[i] = i % 7 == 3 ? points[i - 1] : extreme_point(e, &rng);
+            if (e->wild == 2 && i % 10 == 0)
+                points[i] = i % 20 ? vec3(INFINITY, 1, 1) : vec3(1, NAN, 1);
+        }
+        print_message("    %-44s", e->name);
+        fflush(stdout); /* a build that hangs shows where */
+        PointGrid grid;
+        build(&grid, points, n, e->radius);
+        int filings = point_grid_filings(&grid);
+        print_message(" %5.2f filings per point, %d buckets\n", (double)filings / n, grid.buckets);
+        assert_true(filings <= 27 * n);
+        assert_true(grid.buckets <= 4 * filings + 1);
+        int found = 0;
+        for (int q = 0; q < 300; q++) {
+            Vec3 c = extreme_point(e, &rng);
+            if (q % 3)
+                c = points[(int)(n * rng_uniform(&rng))];
+            if (!vec3_is_finite(c))
+                c = e->base;
+            const double radii[4] = {e->radius, 0.5 * e->radius, 0.0, 2.0 * e->radius};
+            found += check_query(&grid, points, n, c, radii[q % 4]);
+        }
+        assert_true(found > 0);
+        point_grid_free(&grid);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_extreme_scales_build_bounded), /* first: it names a hang */
         cmocka_unit_test(test_grid_ties_at_the_radius),
         cmocka_unit_test(test_duplicates),
         cmocka_unit_test(test_points_on_a_plane),

@@ -8,6 +8,7 @@
  *
  * The programs are found in $CHAPTER_DIR (the Makefile sets it to its build directory).
  */
+#define _GNU_SOURCE /* unshare */
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -17,6 +18,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sched.h>
+#include <sys/mount.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -71,17 +74,75 @@ static void test_bad_flags(void **state)
     expect_failure("--size 0", "--size: expected a whole number from 8 to 16384, got '0'");
     expect_failure("--size 7", "--size: expected a whole number from 8 to 16384, got '7'");
     expect_failure("--size -3", "--size: expected a whole number");
-    expect_failure("--size abc", "--size: expected a whole number");
-    expect_failure("--size 1.5", "--size: expected a whole number");
-    expect_failure("--size 99999999999", "--size: expected a whole number");
+    expect_failure("--size abc", "--size: 'abc' is not a decimal number");
+    expect_failure("--size 1.5", "--size: '1.5' is not a whole number; expected a whole number "
+                                 "from 8 to 16384");
+    expect_failure("--size 99999999999", "--size: expected a whole number from 8 to 16384, "
+                                         "got '99999999999'");
     expect_failure("--size", "--size: missing value");
     expect_failure("--threads -1", "--threads: expected a whole number");
-    expect_failure("--depth nan", "--depth: expected a whole number");
+    expect_failure("--depth nan", "--depth: 'nan' is not a decimal number");
     expect_failure("--seed -4", "--seed: expected a whole number");
     expect_failure("--spp 4", "unknown option '--spp'"); /* chapter 1 takes no --spp */
     expect_failure("--bogus", "unknown option '--bogus'");
     expect_failure("--quiet=1", "--quiet takes no value");
 }
+
+/* Each number a flag may be given is refused with what is wrong with it: nothing, white
+ * space around it, a form strtod reads but the flags do not (hexadecimal, nan, inf, a
+ * lone sign), beyond a double either way (1e400; 1e-310, a subnormal, and 1e-400, which
+ * reads as 0), a fraction for a whole number; and a number in range but for its sign. */
+static void test_number_extremes(void **state)
+{
+    const char *cases[][2] = {
+        {"''", "--size: expected a whole number from 8 to 16384, got an empty word"},
+        {"'  16'", "--size: '  16' has white space in it"},
+        {"'16 '", "--size: '16 ' has white space in it"},
+        {"0x10", "--size: '0x10' is not a decimal number"},
+        {"0x1p4", "--size: '0x1p4' is not a decimal number"},
+        {"inf", "--size: 'inf' is not a decimal number"},
+        {"+", "--size: '+' is not a decimal number"},
+        {"1e400", "--size: '1e400' is too large for a double"},
+        {"1e-310", "--size: '1e-310' is too small to compute with (below 2.22507e-308"},
+        {"1e-400", "--size: '1e-400' is too small to compute with"},
+        {"16.5", "--size: '16.5' is not a whole number"},
+        {"-0", "--size: expected a whole number from 8 to 16384, got '-0'"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char args[200];
+        snprintf(args, sizeof args, "--size %s", cases[i][0]);
+        expect_failure(args, cases[i][1]);
+    }
+    char output[4096];
+    assert_int_equal(run("--size 1.6e1 --help", output, sizeof output), 0);
+}
+
+#if CHAPTER >= 7
+/* --rr (chapter 7's) takes a real number in (0, 1]: 1e-310 is in it, but a subnormal, so it is refused
+ * as too small to compute with, not as outside the range; 1e-300 is taken. */
+static void test_roulette_extremes(void **state)
+{
+    const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
+    const char *cases[][2] = {
+        {"1e-310", "--rr: '1e-310' is too small to compute with (below 2.22507e-308, the "
+                   "smallest double with all its digits); expected a number in (0, 1]"},
+        {"0", "--rr: expected a number in (0, 1], got '0'"},
+        {"-0", "--rr: expected a number in (0, 1], got '-0'"},
+        {"1.0000001", "--rr: expected a number in (0, 1], got '1.0000001'"},
+        {"nan", "--rr: 'nan' is not a decimal number"},
+        {"1e-300", NULL},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char command[800], output[4096];
+        snprintf(command, sizeof command, "%s/ch07_final --rr %s --help 2>&1",
+                 directory, cases[i][0]);
+        int status = capture(command, output, sizeof output);
+        if (cases[i][1] ? status != 2 || !strstr(output, cases[i][1]) : status != 0)
+            fail_msg("--rr %s gave status %d and\n%s\nexpected %s", cases[i][0], status, output,
+                     cases[i][1] ? cases[i][1] : "the help");
+    }
+}
+#endif
 
 /* A flag's value may not be the next flag: "--out --help" would otherwise make a
  * directory called --help, and "--scene --quiet" start a full render. A value that does
@@ -276,6 +337,71 @@ static void test_unwritable_cache(void **state)
     assert_non_null(strstr(output, "spp, rendered in"));
 }
 
+/* A lamp of emission 0 0 0 is read (a light that emits nothing), but chapter 2, which
+ * needs an area light, names it as the cause: not "no area light" alone. */
+static void test_dark_lamp_named(void **state)
+{
+    char path[600], command[1400], output[16384];
+    snprintf(path, sizeof path, "%s/dark.scene", out_dir);
+    snprintf(command, sizeof command, "sed 's/^material lamp .*/material lamp light 0 0 0/' "
+             "scenes/room.scene > %s", path);
+    assert_int_equal(system(command), 0);
+    assert_int_equal(run_chapter2("", path, output, sizeof output), 2);
+    if (!strstr(output, "no area light: material 'lamp' is a light of emission 0 0 0, which "
+                        "emits nothing"))
+        fail_msg("%s", output);
+}
+
+/* A cache on a full disk (a tmpfs of 12 KiB, in a mount namespace of this test's own:
+ * skipped where that is not allowed): the reference program says why it cannot write
+ * there, keeps the reference in a temporary folder for this run, the program does its
+ * work, and the temporary folder is gone after it. */
+static void test_full_cache(void **state)
+{
+    const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
+    char folder[600], command[2400], log[700], temporary[700], output[16384];
+    snprintf(folder, sizeof folder, "%s/fullcache", out_dir);
+    snprintf(log, sizeof log, "%s/log", folder);
+    snprintf(temporary, sizeof temporary, "%s/tmp", folder);
+    snprintf(command, sizeof command, "mkdir -p %s/references %s && cp %s/ch02_monte_carlo "
+             "%s/reference %s/", folder, temporary, directory, directory, folder);
+    assert_int_equal(system(command), 0);
+    fflush(NULL);
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        char cache[700], program[700];
+        snprintf(cache, sizeof cache, "%s/references", folder);
+        snprintf(program, sizeof program, "%s/ch02_monte_carlo", folder);
+        if (unshare(CLONE_NEWNS) != 0 || mount("none", "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0 ||
+            mount("none", cache, "tmpfs", 0, "size=12k") != 0)
+            _exit(77);
+        setenv("TMPDIR", temporary, 1);
+        if (!freopen(log, "w", stdout) || dup2(STDOUT_FILENO, STDERR_FILENO) < 0)
+            _exit(78);
+        execl(program, program, "--quiet", "--size", "64", "--spp", "1", "--runs", "1",
+              "--reference-spp", "8", "--out", folder, (char *)NULL);
+        _exit(79);
+    }
+    int status;
+    assert_int_equal(waitpid(child, &status, 0), child);
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 77) {
+        print_message("    skipped: this test may not mount a tmpfs (it needs root)\n");
+        skip();
+    }
+    char left[4096];
+    snprintf(command, sizeof command, "ls -A %s", temporary);
+    capture(command, left, sizeof left);
+    snprintf(command, sizeof command, "grep -v '^wrote\\|^ch02_\\|^panel' %s", log);
+    capture(command, output, sizeof output);
+    print_message("    %s    temporary folders left: %s\n", output, left[0] ? left : "none\n");
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    assert_non_null(strstr(output, "cannot write the reference into"));
+    assert_non_null(strstr(output, "No space left on device: kept in"));
+    assert_non_null(strstr(output, "spp, rendered in"));
+    assert_string_equal(left, "");
+}
+
 /* A FIFO can be read only once: the program must not wait to read it again. */
 static void test_scene_from_a_fifo(void **state)
 {
@@ -331,6 +457,10 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bad_flags),
+        cmocka_unit_test(test_number_extremes),
+#if CHAPTER >= 7
+        cmocka_unit_test(test_roulette_extremes),
+#endif
         cmocka_unit_test(test_flag_value_is_not_a_flag),
         cmocka_unit_test(test_out_checked_first),
         cmocka_unit_test(test_standard_output_full),
@@ -342,6 +472,8 @@ int main(void)
         cmocka_unit_test(test_piped_scenes_have_their_own_references),
         cmocka_unit_test(test_scene_from_a_fifo),
         cmocka_unit_test(test_unwritable_cache),
+        cmocka_unit_test(test_full_cache),
+        cmocka_unit_test(test_dark_lamp_named),
 #endif
     };
     int failed = cmocka_run_group_tests(tests, NULL, NULL);

@@ -4,10 +4,12 @@
  * then exit with status 130 (or 0, had it finished), leave no temporary file, and every
  * image it wrote must be a finished one: the very bytes an uninterrupted run writes,
  * or the one panel it says it saved, with every pixel sampled at least once.
- * A supervisor's SIGTERM to the program alone (not to its process group, as a terminal
- * sends it) must not leave the reference renderer running on its own. And two programs that need the same reference render it
- * once: the second waits for the first and reads it from the cache. The programs are
- * found in $CHAPTER_DIR (default build).
+ * SIGINT, SIGTERM or SIGHUP sent to the program alone (not to its process group, as a
+ * terminal sends them) while its reference renders must stop the reference renderer too,
+ * promptly, and leave no temporary folder. Chapter 8 interrupted while it renders its
+ * photon passes saves the image of the passes completed. And two programs that need the
+ * same reference render it once: the second waits for the first and reads it from the
+ * cache. The programs are found in $CHAPTER_DIR (default build).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -235,33 +237,148 @@ static int children_of(pid_t parent)
     return found;
 }
 
-/* SIGTERM to a program alone while its reference renders: the program dies of it, and
- * so does the reference renderer, within a moment. */
-static void test_sigterm_stops_the_reference_too(void **state)
+/* Wait up to `seconds` for the child to end: its status as wait_for gives it, or -1
+ * (after killing it and what it started) if it did not end. */
+static int wait_at_most(pid_t child, double seconds)
 {
-    char folder[600], log[700], arguments[800];
-    snprintf(folder, sizeof folder, "%s/sigterm", out_dir);
+    for (double waited = 0.0; waited < seconds; waited += 0.05) {
+        int status;
+        pid_t ended = waitpid(child, &status, WNOHANG);
+        assert_true(ended >= 0);
+        if (ended == child)
+            return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        sleep_seconds(0.05);
+    }
+    kill(child, SIGKILL);
+    wait_for(child);
+    return -1;
+}
+
+/* Whether the reference renderer started by `parent` is still there after a moment. */
+static int reference_outlives(pid_t parent)
+{
+    int left = 1;
+    for (int tries = 0; tries < 40 && left; tries++) {
+        sleep_seconds(0.05);
+        left = children_of(parent);
+    }
+    return left;
+}
+
+/* The names in `folder`, as one text ("" when it is empty). */
+static void names_in(const char *folder, char *names, size_t size)
+{
+    names[0] = '\0';
+    DIR *directory = opendir(folder);
+    assert_non_null(directory);
+    struct dirent *entry;
+    while ((entry = readdir(directory)) != NULL)
+        if (strcmp(entry->d_name, ".") != 0 && strcmp(entry->d_name, "..") != 0)
+            snprintf(names + strlen(names), size - strlen(names), "%s ", entry->d_name);
+    closedir(directory);
+}
+
+/* `signal_number` to `program` alone while its reference renders, the programs found in
+ * `programs_dir`, with its temporary folders in a fresh $TMPDIR: the program ends (of
+ * the signal, or with status 130 for SIGINT) within 30 seconds, and so does the
+ * reference renderer, and no temporary folder is left. */
+static void signal_while_the_reference_renders(const char *programs_dir, int signal_number,
+                                               const char *what)
+{
+    char folder[600], log[700], arguments[800], temporary[700], names[2000];
+    snprintf(folder, sizeof folder, "%s/alone-%d", out_dir, signal_number);
     snprintf(log, sizeof log, "%s.log", folder);
+    snprintf(temporary, sizeof temporary, "%s/tmp-%d", out_dir, signal_number);
     empty_folder(folder);
+    empty_folder(temporary);
     snprintf(arguments, sizeof arguments,
              "--quiet --size 64 --spp 4 --reference-spp 1000000 --seed 91 --out %s", folder);
+    setenv("TMPDIR", temporary, 1);
+    setenv("CHAPTER_DIR", programs_dir, 1);
     pid_t child = start("ch02_monte_carlo", arguments, log);
+    unsetenv("TMPDIR");
     int started = 0;
-    for (int tries = 0; tries < 100 && !started; tries++) {
+    for (int tries = 0; tries < 200 && !started; tries++) {
         sleep_seconds(0.05);
         started = children_of(child);
     }
     assert_true(started);
-    kill(child, SIGTERM);
-    assert_int_equal(wait_for(child), 128 + SIGTERM);
-    int left = 1;
-    for (int tries = 0; tries < 40 && left; tries++) {
-        sleep_seconds(0.05);
-        left = children_of(child);
-    }
-    print_message("    the reference renderer %s its parent\n", left ? "outlived" : "ended with");
+    kill(child, signal_number);
+    int status = wait_at_most(child, 30.0);
+    int left = reference_outlives(child);
+    names_in(temporary, names, sizeof names);
+    print_message("    %s: %s to the program alone while its reference renders: status %d, "
+                  "the reference renderer %s, temporary folders left: %s\n", what,
+                  strsignal(signal_number), status, left ? "outlived it" : "ended with it",
+                  names[0] ? names : "none");
+    assert_int_equal(status, signal_number == SIGINT ? 130 : 128 + signal_number);
     assert_false(left);
-    check_folder(folder, NULL, log, "after SIGTERM");
+    assert_string_equal(names, "");
+    check_folder(folder, NULL, log, what);
+}
+
+/* SIGINT, SIGTERM and SIGHUP, each to the program alone, while its reference renders:
+ * with the cache in build/ (the reference renderer falls back to a temporary folder),
+ * and with a cache that cannot be written (a file stands where its folder would be: the
+ * reference renders into a temporary folder). */
+static void test_signals_to_the_program_alone_stop_the_reference(void **state)
+{
+    const char *programs_dir = strdup(programs());
+    assert_non_null(programs_dir);
+    char unwritable[700], command[2400];
+    snprintf(unwritable, sizeof unwritable, "%s/unwritable", out_dir);
+    snprintf(command, sizeof command, "mkdir -p '%s' && cp '%s/ch02_monte_carlo' '%s/reference' "
+             "'%s/' && touch '%s/references'", unwritable, programs_dir, programs_dir,
+             unwritable, unwritable);
+    assert_int_equal(system(command), 0);
+    const int signals[3] = {SIGINT, SIGTERM, SIGHUP};
+    for (int i = 0; i < 3; i++) {
+        signal_while_the_reference_renders(programs_dir, signals[i], "cache in build/");
+        signal_while_the_reference_renders(unwritable, signals[i], "cache not writable");
+    }
+    setenv("CHAPTER_DIR", programs_dir, 1);
+    free((void *)programs_dir);
+}
+/* A program waiting for another to render the reference both need (the lock on its
+ * cache entry) is stopped by SIGINT sent to it alone: status 130 within 30 seconds, and
+ * it says what it was waiting for, rather than waiting on until the other is done. */
+static void test_sigint_while_waiting_for_another_programs_reference(void **state)
+{
+    char arguments[2][800], log[2][700];
+    unsigned seed = (unsigned)time(NULL) ^ (unsigned)getpid();
+    pid_t children[2];
+    for (int i = 0; i < 2; i++) {
+        snprintf(log[i], sizeof log[i], "%s/waiting-%d.log", out_dir, i);
+        snprintf(arguments[i], sizeof arguments[i],
+                 "--quiet --size 64 --spp 1 --runs 1 --reference-spp 1000000 --seed %u "
+                 "--out %s/waiting-%d", seed, out_dir, i);
+    }
+    children[0] = start("ch02_monte_carlo", arguments[0], log[0]);
+    int started = 0;
+    for (int tries = 0; tries < 200 && !started; tries++) {
+        sleep_seconds(0.05);
+        started = children_of(children[0]);
+    }
+    assert_true(started);
+    children[1] = start("ch02_monte_carlo", arguments[1], log[1]);
+    sleep_seconds(1.0);
+    int waiting = !children_of(children[1]);
+    kill(children[1], SIGINT);
+    int status = wait_at_most(children[1], 30.0);
+    kill(children[0], SIGTERM);
+    wait_for(children[0]);
+    FILE *file = fopen(log[1], "r");
+    assert_non_null(file);
+    char said[4096] = "";
+    size_t n = fread(said, 1, sizeof said - 1, file);
+    said[n] = '\0';
+    fclose(file);
+    print_message("    SIGINT to the program waiting for the other's reference: status %d: %s",
+                  status, said);
+    assert_true(waiting);
+    assert_int_equal(status, 130);
+    assert_non_null(strstr(said, "interrupted while waiting for another program to render the "
+                                 "reference"));
 }
 
 /* Two programs needing the same new reference at once: one renders it, the other reads
@@ -297,6 +414,50 @@ static void test_one_reference_for_two_programs(void **state)
 }
 #endif
 
+#if CHAPTER >= 8
+/* Chapter 8's photon panel renders passes for the processor time its path-traced panel
+ * took. SIGINT well into them, before their end, saves the image of the passes
+ * completed: at least one pass of 8 samples per pixel. "Well into" is a moment on a
+ * clock that other programs share: 0.7 times as long after the path-traced panel is
+ * written as that took from the start, and where that came before the first pass had
+ * ended (nothing saved, as it must), again later: 0.85, then 0.95 times. */
+static void test_sigint_saves_the_photon_passes(void **state)
+{
+    char folder[600], log[700], arguments[800], path_panel[700], saved[300];
+    snprintf(folder, sizeof folder, "%s/photons", out_dir);
+    snprintf(log, sizeof log, "%s.log", folder);
+    snprintf(path_panel, sizeof path_panel, "%s/ch08_path.pfm", folder);
+    snprintf(arguments, sizeof arguments,
+             "--quiet --size 32 --spp 64 --reference-spp 8 --seed 5 --out %s", folder);
+    const double moments[] = {0.7, 0.85, 0.95};
+    int status = 0, said = 0;
+    double spp = 0.0;
+    for (int attempt = 0; attempt < 3 && !said; attempt++) {
+        empty_folder(folder);
+        double began = seconds_now();
+        pid_t child = start("ch08_photon_map", arguments, log);
+        while (access(path_panel, F_OK) != 0 && seconds_now() - began < 120.0)
+            sleep_seconds(0.01);
+        double path_seconds = seconds_now() - began;
+        sleep_seconds(moments[attempt] * path_seconds);
+        kill(child, SIGINT);
+        status = wait_for(child);
+        said = saved_when_interrupted(log, saved, sizeof saved, &spp);
+        print_message("    path-traced panel after %.2f s, SIGINT %.2f s into the photon passes: "
+                      "status %d, saved %s after %.2f samples per pixel\n", path_seconds,
+                      moments[attempt] * path_seconds, status, said ? saved : "nothing", spp);
+        assert_int_equal(status, 130);
+    }
+    assert_true(said);
+    assert_string_equal(saved, "ch08_photon_map.pfm");
+    assert_true(spp >= 8.0);
+    check_folder(folder, NULL, log, "photon passes");
+    char panel[700];
+    snprintf(panel, sizeof panel, "%s/ch08_photon_map.pfm", folder);
+    assert_int_equal(access(panel, R_OK), 0);
+}
+#endif
+
 static int make_out_dir(void **state)
 {
     return mkdtemp(out_dir) ? 0 : -1;
@@ -314,8 +475,12 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sigint_at_random_moments),
 #if CHAPTER >= 2
-        cmocka_unit_test(test_sigterm_stops_the_reference_too),
+        cmocka_unit_test(test_signals_to_the_program_alone_stop_the_reference),
         cmocka_unit_test(test_one_reference_for_two_programs),
+        cmocka_unit_test(test_sigint_while_waiting_for_another_programs_reference),
+#endif
+#if CHAPTER >= 8
+        cmocka_unit_test(test_sigint_saves_the_photon_passes),
 #endif
     };
     return cmocka_run_group_tests(tests, make_out_dir, remove_out_dir);

@@ -1,15 +1,12 @@
-/* test_measure.c (bench, chapter 2): error metrics, the hash that names a reference, and
- * the reference cache (measure.h).
+/* test_measure.c (bench, chapter 2): error metrics, and the hash that names a reference
+ * (measure.h).
  *
  * The metrics are checked against sums done by hand on images of a few pixels, and
  * statistically: the image mean's standard error against images of known variance and
  * by the z-scores of many independent renders (standard normal: Kolmogorov-Smirnov);
  * the error corrected for the reference's noise against synthetic images whose noise is
  * known; the summaries of several runs and the infinite-variance mark by hand. The hash
- * against the published FNV-1a 64 test vectors; the cache by a round trip through a
- * scratch directory, and by breaking one of an entry's three files at a time: each must
- * make the load fail cleanly, leaving an empty Reference (LeakSanitizer checks nothing
- * half-loaded is kept).
+ * against the published FNV-1a 64 test vectors (the cache itself: test_reference_cache.c).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -21,8 +18,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "assert_close.h"
 #include "measure.h"
@@ -509,221 +504,6 @@ static void test_hash_chains(void **state)
     assert_true(measure_hash(foo, "bar", 3) != measure_hash(MEASURE_HASH_START, "barfoo", 6));
 }
 
-/* A scratch directory per test; the files a test leaves are removed by name. */
-static char scratch_dir[64], scratch_path[4300];
-
-static int make_scratch(void **state)
-{
-    strcpy(scratch_dir, "/tmp/test_measure_XXXXXX");
-    return mkdtemp(scratch_dir) ? 0 : -1;
-}
-
-static const char *in_scratch(const char *name)
-{
-    snprintf(scratch_path, sizeof scratch_path, "%s/%s", scratch_dir, name);
-    return scratch_path;
-}
-
-/* The cache entry every test here uses, and its three files' names. */
-#define KEY 0x0123456789abcdefULL
-static const char *MEAN_FILE = "0123456789abcdef.pfm";
-static const char *STD_ERROR_FILE = "0123456789abcdef-stderr.pfm";
-static const char *INFO_FILE = "0123456789abcdef.txt";
-
-static int remove_scratch(void **state)
-{
-    const char *names[] = {MEAN_FILE, STD_ERROR_FILE, INFO_FILE, "bytes"};
-    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
-        remove(in_scratch(names[i]));
-    return rmdir(scratch_dir);
-}
-
-/* A reference with distinct values everywhere, as a render would leave it. */
-static Reference sample_reference(void)
-{
-    Reference reference = {.image = image_new(3, 2), .std_error = image_new(3, 2),
-                           .spp = 4096, .seconds = 12.345678901234567,
-                           .mean_std_error = 1.25e-3};
-    assert_non_null(reference.image.pixels);
-    assert_non_null(reference.std_error.pixels);
-    for (int i = 0; i < 18; i++) {
-        reference.image.pixels[i] = 0.1f * (float)i + 1e-7f;
-        reference.std_error.pixels[i] = 1e-3f / (float)(i + 1);
-    }
-    double unused;
-    measure_image_mean(&reference.image, &reference.std_error, &reference.mean, &unused);
-    return reference;
-}
-
-static void assert_empty(const Reference *reference)
-{
-    assert_null(reference->image.pixels);
-    assert_null(reference->std_error.pixels);
-}
-
-/* Saved then loaded, a reference comes back bit for bit (image and standard errors),
- * with its spp and seconds, marked as cached, and with its noise computed as the RMS of
- * its standard errors. The files are named by the key in 16 hex digits. */
-static void test_reference_round_trip(void **state)
-{
-    Reference saved = sample_reference();
-    assert_int_equal(measure_save_reference(scratch_dir, KEY, &saved), 0);
-    assert_int_equal(access(in_scratch(MEAN_FILE), R_OK), 0);
-    assert_int_equal(access(in_scratch(STD_ERROR_FILE), R_OK), 0);
-    assert_int_equal(access(in_scratch(INFO_FILE), R_OK), 0);
-
-    Reference loaded;
-    char why[256];
-    assert_int_equal(measure_load_reference(scratch_dir, KEY, 3, 2, &loaded, why, sizeof why), 0);
-    assert_int_equal(loaded.image.width, 3);
-    assert_int_equal(loaded.image.height, 2);
-    assert_int_equal(loaded.std_error.width, 3);
-    assert_int_equal(loaded.std_error.height, 2);
-    assert_memory_equal(loaded.image.pixels, saved.image.pixels, 18 * sizeof(float));
-    assert_memory_equal(loaded.std_error.pixels, saved.std_error.pixels, 18 * sizeof(float));
-    assert_true(loaded.spp == saved.spp);
-    assert_true(loaded.seconds == saved.seconds);
-    assert_true(loaded.mean == saved.mean);
-    assert_true(loaded.mean_std_error == saved.mean_std_error);
-    assert_int_equal(loaded.cached, 1);
-    assert_true(loaded.noise == measure_rms(&saved.std_error));
-    assert_true(loaded.noise > 0.0);
-    measure_reference_free(&loaded);
-    measure_reference_free(&saved);
-}
-
-/* A key that was never saved is not there: -1 and an empty Reference, even if the
- * Reference held garbage before. */
-static void test_missing_reference(void **state)
-{
-    Reference loaded;
-    char why[256];
-    memset(&loaded, 0x5a, sizeof loaded);
-    assert_int_equal(measure_load_reference(scratch_dir, KEY, 3, 2, &loaded, why, sizeof why), -1);
-    assert_empty(&loaded);
-    assert_int_equal(loaded.cached, 0);
-}
-
-/* Save the sample reference under KEY, then damage one of its files with `damage`. */
-static void save_and_damage(void (*damage)(void))
-{
-    Reference saved = sample_reference();
-    assert_int_equal(measure_save_reference(scratch_dir, KEY, &saved), 0);
-    measure_reference_free(&saved);
-    damage();
-}
-
-static void remove_info(void) { assert_int_equal(remove(in_scratch(INFO_FILE)), 0); }
-
-static void truncate_mean(void)
-{
-    assert_int_equal(truncate(in_scratch(MEAN_FILE), 40), 0);
-}
-
-static void truncate_std_error(void)
-{
-    assert_int_equal(truncate(in_scratch(STD_ERROR_FILE), 40), 0);
-}
-
-static void mismatch_std_error(void)
-{
-    Image small = image_new(2, 2);
-    assert_non_null(small.pixels);
-    assert_int_equal(image_write_pfm(&small, in_scratch(STD_ERROR_FILE)), 0);
-    image_free(&small);
-}
-
-static void replace_by_one_pixel(void)
-{
-    Image tiny = image_new(1, 1);
-    assert_non_null(tiny.pixels);
-    assert_int_equal(image_write_pfm(&tiny, in_scratch(MEAN_FILE)), 0);
-    assert_int_equal(image_write_pfm(&tiny, in_scratch(STD_ERROR_FILE)), 0);
-    image_free(&tiny);
-}
-
-static void garble_info(void)
-{
-    FILE *file = fopen(in_scratch(INFO_FILE), "w");
-    assert_non_null(file);
-    fputs("samples many\n", file);
-    assert_int_equal(fclose(file), 0);
-}
-
-/* The description with these numbers instead of the saved ones. */
-static void write_info(const char *text)
-{
-    FILE *file = fopen(in_scratch(INFO_FILE), "w");
-    assert_non_null(file);
-    fputs(text, file);
-    assert_int_equal(fclose(file), 0);
-}
-
-static void nan_seconds(void) { write_info("spp 4096 seconds nan mean nan mean_std_error 0.001\n"); }
-static void wrong_mean(void) { write_info("spp 4096 seconds 12 mean 0.5 mean_std_error 0.001\n"); }
-
-/* One value of an image replaced (finite, but not radiance, or not finite). */
-static void damage_value(const char *file, int index, float value)
-{
-    Image image;
-    char error[256];
-    assert_int_equal(image_read_pfm(in_scratch(file), &image, error, sizeof error), 0);
-    image.pixels[index] = value;
-    assert_int_equal(image_write_pfm(&image, in_scratch(file)), 0);
-    image_free(&image);
-}
-
-static void negative_pixel(void) { damage_value(MEAN_FILE, 4, -1e30f); }
-static void infinite_pixel(void) { damage_value(MEAN_FILE, 7, INFINITY); }
-static void negative_std_error(void) { damage_value(STD_ERROR_FILE, 2, -1e-3f); }
-
-/* An entry without its description is not there: -1. Each way an entry can be broken
- * (a .txt that does not parse or holds NaN, a truncated image, a truncated
- * standard-error image read after a good image, a standard-error image of another size,
- * both images replaced by a consistent 1 x 1 pair, a pixel of -1e30 or of infinity, a
- * negative standard error, a stored mean that is not the image's) fails the load with
- * -2, a reason, and an empty Reference; under LeakSanitizer, an image read before the
- * failure must have been freed. */
-static void test_broken_reference(void **state)
-{
-    void (*damages[])(void) = {remove_info, garble_info, nan_seconds, truncate_mean,
-                               truncate_std_error, mismatch_std_error, replace_by_one_pixel,
-                               negative_pixel, infinite_pixel, negative_std_error, wrong_mean};
-    for (size_t i = 0; i < sizeof damages / sizeof damages[0]; i++) {
-        save_and_damage(damages[i]);
-        Reference loaded;
-        char why[256] = "";
-        int status = measure_load_reference(scratch_dir, KEY, 3, 2, &loaded, why, sizeof why);
-        print_message("    damage %d: %d (%s)\n", (int)i, status, why);
-        assert_int_equal(status, i == 0 ? -1 : -2);
-        assert_true(i == 0 || why[0] != '\0');
-        assert_empty(&loaded);
-        assert_int_equal(loaded.cached, 0);
-    }
-}
-
-/* Saving into a directory that does not exist fails with -1 rather than crashing. */
-static void test_save_into_missing_directory(void **state)
-{
-    Reference saved = sample_reference();
-    assert_int_equal(measure_save_reference(in_scratch("no_such_dir"), KEY, &saved), -1);
-    measure_reference_free(&saved);
-}
-
-/* A save that fails part-way (here the standard-error image cannot be written: a
- * directory stands where it should go, as a full disk would stop it) leaves no part of
- * the entry behind: not the mean image, not the .txt. */
-static void test_failed_save_leaves_nothing(void **state)
-{
-    assert_int_equal(mkdir(in_scratch(STD_ERROR_FILE), 0700), 0);
-    Reference saved = sample_reference();
-    assert_int_equal(measure_save_reference(scratch_dir, KEY, &saved), -1);
-    assert_int_equal(access(in_scratch(MEAN_FILE), F_OK), -1);
-    assert_int_equal(access(in_scratch(INFO_FILE), F_OK), -1);
-    assert_int_equal(rmdir(in_scratch(STD_ERROR_FILE)), 0);
-    measure_reference_free(&saved);
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -749,13 +529,6 @@ int main(void)
 #endif
         cmocka_unit_test(test_hash_vectors),
         cmocka_unit_test(test_hash_chains),
-        cmocka_unit_test_setup_teardown(test_reference_round_trip, make_scratch, remove_scratch),
-        cmocka_unit_test_setup_teardown(test_missing_reference, make_scratch, remove_scratch),
-        cmocka_unit_test_setup_teardown(test_broken_reference, make_scratch, remove_scratch),
-        cmocka_unit_test_setup_teardown(test_save_into_missing_directory, make_scratch,
-                                        remove_scratch),
-        cmocka_unit_test_setup_teardown(test_failed_save_leaves_nothing, make_scratch,
-                                        remove_scratch),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -157,8 +157,9 @@ static void test_material_kinds(void **state)
     scene_free(&scene);
 }
 
-/* The boundary values are accepted: reflectance 0 and 1, emission 0, and a material
- * name of MATERIAL_NAME_MAX - 1 bytes, found under that name. */
+/* The boundary values are accepted: reflectance 0 and 1, emission 0 (a light that emits
+ * nothing: a program that needs a light says so, naming it), and a material name of
+ * MATERIAL_NAME_MAX - 1 bytes, found under that name. */
 static void test_boundary_values_accepted(void **state)
 {
     char text[512], name[MATERIAL_NAME_MAX];
@@ -435,6 +436,86 @@ static void test_too_small(void **state)
     }
     expect_error("camera -1e-51 0 0  0 1e-51 -1e-51  0 -1e-51 -1e-51  0 1e-51 1e-51\n", 1,
                  "camera: the image plane");
+}
+
+/* Below 1e-50 a shape is refused as too small, whatever the scale, and never as flat: a
+ * squared length below about 1e-154 underflows (to 0 below about 1e-162), so a reader
+ * that squares lengths calls a tiny shape "zero area" or its image plane "collinear".
+ * Each kind, and the camera, at 1e-60 down to 1e-300. */
+static void test_too_small_at_every_scale(void **state)
+{
+    const char *shapes[] = {"triangle m 0 0 0  1%s 0 0  0 1%s 0\n",
+                            "quad m 0 0 0  1%s 0 0  1%s 1%s 0  0 1%s 0\n",
+                            "box m 0 0 0  1%s 1%s 1%s\n",
+                            "tetrahedron m 0 0 0  1%s 0 0  0 1%s 0  0 0 1%s\n",
+                            "camera 0 0 1%s  -1%s -1%s 0  1%s -1%s 0  -1%s 1%s 0\n"};
+    const char *exponents[] = {"e-60", "e-155", "e-160", "e-170", "e-200", "e-300", "e-307"};
+    for (int i = 0; i < 5; i++)
+        for (int k = 0; k < 7; k++) {
+            const char *e = exponents[k];
+            char line[512], text[1024];
+            snprintf(line, sizeof line, shapes[i], e, e, e, e, e, e, e);
+            snprintf(text, sizeof text, "%smaterial m lambert .5 .5 .5\n%s", i < 4 ? CAMERA : "",
+                     line);
+            expect_error(text, i < 4 ? 3 : 2,
+                         "is too small: the reader takes sizes from 1e-50 to 1e+50");
+        }
+}
+
+/* The flatness tests are relative: at 1e-45 and at 1e45 a flat shape is still found
+ * flat (a sliver 1e-12 as thin as long, a quad's corner 1e-6 off its plane, a flat
+ * tetrahedron, an image plane's collinear corners, an eye on the image plane), and the
+ * same shapes made whole are read. */
+static void test_flat_at_extreme_scales(void **state)
+{
+    const char *flat[][2] = {
+        {"triangle m 0 0 0  1%s 0 0  0.5%s 0.000000000001%s 0\n", "degenerate triangle (zero area)"},
+        {"quad m 0 0 0  1%s 0 0  1%s 1%s 0  0 1%s 0.000001%s\n", "non-planar quad"},
+        {"tetrahedron m 0 0 0  1%s 0 0  0 1%s 0  1%s 1%s 0\n", "flat tetrahedron"},
+        {"camera 0 0 1%s  -1%s 0 0  1%s 0 0  3%s 0 0\n", "the image plane's corners are collinear"},
+        {"camera 0 -1%s 0  -1%s -1%s 0  1%s -1%s 0  -1%s 1%s 0\n", "the eye is on the image plane"},
+    };
+    const char *whole[] = {"triangle m 0 0 0  1%s 0 0  0.5%s 0.001%s 0\n",
+                           "quad m 0 0 0  1%s 0 0  1%s 1%s 0  0 1%s 0%s\n",
+                           "tetrahedron m 0 0 0  1%s 0 0  0 1%s 0  0 0 1%s\n"};
+    const char *exponents[] = {"e-45", "e45"};
+    for (int k = 0; k < 2; k++) {
+        const char *e = exponents[k];
+        for (int i = 0; i < 5; i++) {
+            char line[512], text[1024];
+            snprintf(line, sizeof line, flat[i][0], e, e, e, e, e, e, e);
+            snprintf(text, sizeof text, "%smaterial m lambert .5 .5 .5\n%s", i < 3 ? CAMERA : "",
+                     line);
+            expect_error(text, i < 3 ? 3 : 2, flat[i][1]);
+        }
+        for (int i = 0; i < 3; i++) {
+            char line[512], text[1024];
+            snprintf(line, sizeof line, whole[i], e, e, e, e, e);
+            snprintf(text, sizeof text, CAMERA "material m lambert .5 .5 .5\n%s", line);
+            Scene scene;
+            parse_ok(text, &scene);
+            scene_free(&scene);
+        }
+    }
+}
+
+/* A number too small for a double to hold with all its digits (a subnormal, or one
+ * that reads as 0) is refused as that, not read as a number near 0 that makes a shape
+ * "flat" or "collinear" further on; 0 written any way, and the smallest normal double,
+ * are read. */
+static void test_number_too_small_to_compute(void **state)
+{
+    const char *refused[] = {"1e-310", "-1e-400", "4.9e-324", "2.2e-308", "0.0001e-305"};
+    for (int i = 0; i < 5; i++) {
+        char text[256], message[128];
+        snprintf(text, sizeof text, "point_light 0 0 %s 1 1 1\n", refused[i]);
+        snprintf(message, sizeof message, "'%s' is too small to compute with: below 2.22507e-308",
+                 refused[i]);
+        expect_error(text, 1, message);
+    }
+    Scene scene;
+    parse_ok(CAMERA "point_light 0 0e-400 -0.000 2.2250738585072014e-308 1 1\n", &scene);
+    scene_free(&scene);
 }
 
 /* Emission (and point lights' intensity) above 1e20 is refused, so that the image's
@@ -952,6 +1033,9 @@ int main(void)
         cmocka_unit_test(test_not_a_number),
         cmocka_unit_test(test_number_out_of_range),
         cmocka_unit_test(test_too_small),
+        cmocka_unit_test(test_too_small_at_every_scale),
+        cmocka_unit_test(test_flat_at_extreme_scales),
+        cmocka_unit_test(test_number_too_small_to_compute),
         cmocka_unit_test(test_emission_bound),
         cmocka_unit_test(test_unknown_material),
         cmocka_unit_test(test_duplicate_material),

@@ -291,6 +291,32 @@ static void test_print_rows(void **state)
     free(printed.text);
 }
 
+/* An error within the reference's noise (the corrected MSE not above 0: the RMSE is
+ * then 0 and the relative MSE may be negative) is printed as "<ref" in both columns,
+ * never as a negative number; an image as good as a noiseless reference says (RMSE 0,
+ * no reference noise) is printed as 0. */
+static void test_print_within_reference_noise(void **state)
+{
+    TableRow rows[2];
+    sample_rows(rows);
+    rows[0].rmse = 0.0;
+    rows[0].rel_mse = -2.5e-5;
+    rows[0].efficiency = NAN;
+    rows[0].reference_share = 1.3;
+    rows[1] = rows[0];
+    rows[1].rel_mse = 0.0;
+    rows[1].reference_share = 0.0;
+    Printed printed = print_rows(rows, 2);
+    char word[32];
+    assert_string_equal(word_from_end(printed.lines[1], 7, word), "<ref");
+    assert_string_equal(word_from_end(printed.lines[1], 5, word), "<ref");
+    assert_null(strstr(printed.lines[1], "-2.5"));
+    assert_string_equal(word_from_end(printed.lines[2], 7, word), "0.00000");
+    assert_string_equal(word_from_end(printed.lines[2], 5, word), "<ref");
+    assert_int_equal(strlen(printed.lines[1]), strlen(printed.lines[0]));
+    free(printed.text);
+}
+
 /* Names as long as a row can hold (47 characters of panel, 95 of settings) do not push
  * the columns after them out of line: every line is exactly as long as the header, so
  * each number sits under its heading. */
@@ -322,6 +348,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_csv_quotes_text, make_scratch, remove_scratch),
         cmocka_unit_test_setup_teardown(test_csv_edge_cases, make_scratch, remove_scratch),
         cmocka_unit_test(test_print_rows),
+        cmocka_unit_test(test_print_within_reference_noise),
         cmocka_unit_test(test_print_long_names_keep_columns),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
