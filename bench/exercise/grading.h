@@ -2,21 +2,11 @@
  * yourself").
  *
  * An exercise is one marked function of the lesson ("Exercise N.k" in the comment that
- * documents it). `make exercise-chapterN` replaces chapter N's marked bodies by a
- * neutral one under the task; `make check-exercise-chapterN` builds the student's tree
- * with bench/exercise/grade.c and that chapter's table (bench/exercise/chapterN.c).
- * A grader knows the right answer (a closed form, a property every right answer has, or
- * the solution's render) and says what is wrong in a student's words, computed from the
- * test that caught it, with the numbers behind it. A sampler is graded by the warp
- * test: Pearson's chi-square (chi_square.h) of its samples' histogram against the exact
- * density integrated over each cell, and a picture of both.
- *
- * Each grader runs twice, in two processes. In the student's program (the probe) every
- * value the student's code computes passes through ASK, which sends it to the grader
- * built from the solution (the judge); there the same grader runs again, ASK returning
- * the values that came back instead of computing them, and decides. So no student code
- * runs where the verdict is made (supervise.h). A grader computes any value of its own
- * from a lesson function (an oracle) only in the judge: if (!grading_probing(g)).
+ * documents it), graded by bench/exercise/chapterN.c. A grader knows the right answer (a
+ * closed form, a property every right answer has, or the solution's render) and says what
+ * is wrong in a student's words, with the numbers behind it. A sampler is graded by the
+ * warp test: Pearson's chi-square (chi_square.h) of its samples' histogram against the
+ * exact density integrated over each cell, and a picture of both.
  */
 #ifndef GRADING_H
 #define GRADING_H
@@ -58,6 +48,14 @@ extern const int exercise_count;
 
 /* The exercise of that id, or NULL. */
 const Exercise *exercise_find(const char *id);
+
+/* Each grader runs twice, in two processes. In the student's program (the probe, probe.c)
+ * every value the student's code computes passes through ASK, which sends it to the
+ * grader built from the solution (the judge, grade.c); there the same grader runs again,
+ * ASK returning the values that came back instead of computing them, and decides. So no
+ * student code runs where the verdict is made (supervise.h). A grader computes any value
+ * of its own from a lesson function (an oracle) only in the judge:
+ * if (!grading_probing(g)). */
 
 /* Whether this is the student's program (the probe), not the grader (the judge). */
 int grading_probing(const Grading *g);

@@ -1,13 +1,12 @@
 /* supervise.h (bench, chapter 1): running a student's program under watch, for the grader.
  *
- * The grader (built from the solution: no student code runs in it) starts the student's
- * program, PROGRAM ID SECRET (probe.c), in a process group of its own, with stdin from
- * /dev/null, stdout and stderr into a pipe the grader keeps the start of, and the answers'
- * pipe (answers.h) as file descriptor 3. It reads both until the end frame, the end of
- * the program, or the time limit; then SIGTERM, a second's grace and SIGKILL to the group,
- * and, being a child subreaper, SIGKILL to every process the program left behind, however
- * it escaped its group, until none is left. A small guard process between the two takes
- * the program's signals to its parent and reports how the program ended.
+ * The grader (built from the solution: no student code runs in it) starts PROGRAM ID SECRET
+ * (probe.c) in a process group of its own, stdin from /dev/null, stdout and stderr into a
+ * pipe of which it keeps the start, the answers' pipe (answers.h) as descriptor 3. It
+ * reads until the end frame, the program's end or the time limit; then SIGTERM, a second's
+ * grace and SIGKILL to the group and, as a child subreaper, to every process left behind,
+ * however it escaped. A guard process between them takes the program's signals to its
+ * parent and reports how the program ended.
  */
 #ifndef SUPERVISE_H
 #define SUPERVISE_H
