@@ -1,10 +1,8 @@
 /* check.h (chapter 1): small helpers shared by the geometry tests (include after cmocka.h).
  *
  * assert_close compares doubles and, unlike cmocka's float-only assert_float_equal,
- * prints both values at full precision when it fails. The tests' random numbers are
- * their own (test_random.h). The random directions are
- * uniform over the unit sphere: z = cos(theta) uniform in [-1, 1] (Archimedes' hat-box
- * theorem) and phi uniform in [0, 2 pi).
+ * prints both values at full precision when it fails. The tests' random numbers and
+ * directions are their own (test_random.h).
  */
 #ifndef CHECK_H
 #define CHECK_H
@@ -18,21 +16,6 @@
         if (!(fabs(a_ - b_) <= (tol))) \
             fail_msg("%s = %.17g, expected %.17g within %.3g", #a, a_, b_, (double)(tol)); \
     } while (0)
-
-/* The direction with z = 2 u1 - 1 and phi = 2 pi u2: uniform over the sphere for
- * uniform u1, u2. */
-static inline Vec3 unit_vector_from(double u1, double u2)
-{
-    double z = 2.0 * u1 - 1.0, phi = 2.0 * PI * u2;
-    double s = sqrt(fmax(0.0, 1.0 - z * z));
-    return vec3(s * cos(phi), s * sin(phi), z);
-}
-
-static inline Vec3 random_unit_vector(TestRandom *random)
-{
-    double u1 = test_uniform(random), u2 = test_uniform(random);
-    return unit_vector_from(u1, u2);
-}
 
 /* Two unit vectors t, b that with the unit vector n make a right-handed orthonormal
  * frame (t from the axis least along n): the tests' own, apart from the lesson's

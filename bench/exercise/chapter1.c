@@ -29,11 +29,11 @@ static void grade_sphere(Grading *g)
     double r = sphere.radius;
     int hits = 0, misses = 0, inside = 0, behind = 0;
     for (int i = 0; i < TRIES && !g->failed; i++) {
-        Rng rng = rng_for_sample(11, 1, (uint64_t)i);
+        TestRandom rng = test_random(11, 1, (uint64_t)i);
         int kind = i % 4; /* 0, 1: from outside; 2: from inside; 3: sphere behind */
-        double distance = kind == 2 ? 0.6 * r * rng_uniform(&rng) : 1.5 + 3.0 * rng_uniform(&rng);
-        Vec3 origin = vec3_add_scaled(sphere.center, grading_direction(&rng), distance);
-        Vec3 target = vec3_add_scaled(sphere.center, grading_direction(&rng), 1.3 * r * rng_uniform(&rng));
+        double distance = kind == 2 ? 0.6 * r * test_uniform(&rng) : 1.5 + 3.0 * test_uniform(&rng);
+        Vec3 origin = vec3_add_scaled(sphere.center, random_unit_vector(&rng), distance);
+        Vec3 target = vec3_add_scaled(sphere.center, random_unit_vector(&rng), 1.3 * r * test_uniform(&rng));
         Vec3 d = vec3_normalize(vec3_sub(target, origin));
         if (kind == 3)
             d = vec3_neg(d);
@@ -92,20 +92,20 @@ static void grade_triangle(Grading *g)
 {
     int hits = 0, misses = 0;
     for (int i = 0; i < TRIES && !g->failed; i++) {
-        Rng rng = rng_for_sample(12, 1, (uint64_t)i);
+        TestRandom rng = test_random(12, 1, (uint64_t)i);
         Vec3 v[3];
         for (int k = 0; k < 3; k++)
-            v[k] = vec3_scale(grading_direction(&rng), 2.0 * rng_uniform(&rng) + 0.5);
+            v[k] = vec3_scale(random_unit_vector(&rng), 2.0 * test_uniform(&rng) + 0.5);
         Triangle tri = triangle_make(v[0], v[1], v[2], 0);
         if (tri.area < 0.1)
             continue;
-        double a = 2.0 * rng_uniform(&rng) - 0.5, b = 2.0 * rng_uniform(&rng) - 0.5;
+        double a = 2.0 * test_uniform(&rng) - 0.5, b = 2.0 * test_uniform(&rng) - 0.5;
         double margin = fmin(fabs(a), fmin(fabs(b), fabs(1.0 - a - b)));
         if (margin < 1e-3)
             continue;
         int inside = a > 0.0 && b > 0.0 && a + b < 1.0;
         Vec3 target = triangle_point(&tri, a, b);
-        Vec3 origin = vec3_add_scaled(target, grading_direction(&rng), 1.0 + 3.0 * rng_uniform(&rng));
+        Vec3 origin = vec3_add_scaled(target, random_unit_vector(&rng), 1.0 + 3.0 * test_uniform(&rng));
         Vec3 to_target = vec3_sub(target, origin);
         double distance = vec3_length(to_target);
         Vec3 d = vec3_scale(to_target, 1.0 / distance);
@@ -149,9 +149,9 @@ static void grade_camera(Grading *g)
     const int width = 40, height = 30;
     int tried = 0;
     for (int i = 0; i < TRIES && !g->failed; i++, tried++) {
-        Rng rng = rng_for_sample(13, 1, (uint64_t)i);
-        int col = (int)(rng_uniform(&rng) * width), row = (int)(rng_uniform(&rng) * height);
-        double u = rng_uniform(&rng), v = rng_uniform(&rng);
+        TestRandom rng = test_random(13, 1, (uint64_t)i);
+        int col = (int)(test_uniform(&rng) * width), row = (int)(test_uniform(&rng) * height);
+        double u = test_uniform(&rng), v = test_uniform(&rng);
         Ray ray = {vec3(0, 0, 0), vec3(0, 0, 0)};
         if (grading_probing(g))
             ray = camera_ray(&camera, width, height, col, row, u, v);
@@ -199,8 +199,8 @@ static void grade_mirror(Grading *g)
 {
     int i;
     for (i = 0; i < TRIES && !g->failed; i++) {
-        Rng rng = rng_for_sample(14, 1, (uint64_t)i);
-        Vec3 n = grading_direction(&rng), d = grading_direction(&rng);
+        TestRandom rng = test_random(14, 1, (uint64_t)i);
+        Vec3 n = random_unit_vector(&rng), d = random_unit_vector(&rng);
         Vec3 r = ASK_VEC3(g, mirror_reflect(d, n));
         double length = vec3_length(r);
         if (grading_not_finite(g, length, "the reflected direction's length"))
@@ -227,9 +227,9 @@ static void grade_snell(Grading *g)
     const double indices[4][2] = {{1.0, 1.5}, {1.5, 1.0}, {1.0, 1.33}, {1.6, 1.2}};
     int refracted = 0, reflected = 0;
     for (int i = 0; i < TRIES && !g->failed; i++) {
-        Rng rng = rng_for_sample(15, 1, (uint64_t)i);
+        TestRandom rng = test_random(15, 1, (uint64_t)i);
         double n_i = indices[i % 4][0], n_t = indices[i % 4][1];
-        Vec3 n = grading_direction(&rng), d = grading_direction(&rng);
+        Vec3 n = random_unit_vector(&rng), d = random_unit_vector(&rng);
         if (vec3_dot(d, n) > 0.0)
             d = vec3_neg(d);
         double cos_i = -vec3_dot(d, n), sin_i = sqrt(fmax(0.0, 1.0 - cos_i * cos_i));

@@ -59,8 +59,8 @@ static void grade_cosine_pdf(Grading *g)
 {
     int checked = 0;
     for (int i = 0; i < 2000 && !g->failed; i++, checked++) {
-        Rng rng = rng_for_sample(22, 1, (uint64_t)i);
-        Vec3 w = grading_direction(&rng);
+        TestRandom rng = test_random(22, 1, (uint64_t)i);
+        Vec3 w = random_unit_vector(&rng);
         double pdf = ASK(g, hemisphere_pdf_cosine(w)), right = w.z > 0.0 ? w.z / PI : 0.0;
         if (grading_not_finite(g, pdf, "the pdf"))
             break;

@@ -130,13 +130,6 @@ int grading_scene(Grading *g, const char *text, Scene *scene)
     return -1;
 }
 
-Vec3 grading_direction(Rng *rng)
-{
-    double z = 2.0 * rng_uniform(rng) - 1.0, phi = 2.0 * PI * rng_uniform(rng);
-    double s = sqrt(fmax(0.0, 1.0 - z * z));
-    return vec3(s * cos(phi), s * sin(phi), z);
-}
-
 int warp_new(Grading *g, Warp *warp, int rows, int cols, int shown, WarpLabels labels)
 {
     memset(warp, 0, sizeof *warp);

@@ -15,6 +15,7 @@
 
 #include "answers.h"
 #include "render.h"
+#include "test_random.h"
 
 typedef struct {
     const char *id;         /* "2.1" */
@@ -92,9 +93,6 @@ char *grading_p(double p, char *text, size_t size);
 /* Parse the scene `text` (docs/scene-format.md) into *scene. Returns 0, or fails the
  * exercise and returns -1. */
 int grading_scene(Grading *g, const char *text, Scene *scene);
-
-/* A direction uniformly distributed over the unit sphere. */
-Vec3 grading_direction(Rng *rng);
 
 /* What a warp test's cells are called: row 0 and the last row named where they are,
  * and the impossible cell, where the density is 0 (expected count 0). */
