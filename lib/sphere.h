@@ -1,8 +1,8 @@
-/* sphere.h (chapter 1): the sphere |x - c|^2 = r^2 and a ray's first hit on it (report
+/* sphere.h (chapter 1): the sphere |x - C|^2 = r^2 and a ray's first hit on it (report
  * §3.6.2, eqs. 19-20).
  *
- * With x = o + t d, |d| = 1: t^2 - 2 t b + c = 0, b = d.(c - o), c = |o - c|^2 - r^2.
- * The discriminant is computed as r^2 - |(o - c) + b d|^2, the squared half-chord,
+ * With x = o + t d, |d| = 1: t^2 - 2 t b + k = 0, b = d.(C - o), k = |o - C|^2 - r^2.
+ * The discriminant is computed as r^2 - |(o - C) + b d|^2, the squared half-chord,
  * which does not cancel for a small sphere far away (docs/chapter1.md).
  */
 #ifndef SPHERE_H
