@@ -158,7 +158,7 @@ void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed 
 
 void experiment_image_size(const Options *options, const Scene *scene, int *width, int *height)
 {
-    double aspect = camera_aspect(&scene->camera);
+    double aspect = scene_file_aspect(&scene->camera);
     double exact_height = options->size / aspect;
     *width = options->size;
     *height = (int)lround(exact_height);

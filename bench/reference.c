@@ -201,7 +201,7 @@ int main(int argc, char **argv)
                          .mirrors = &mirrors, .sphere_guide = SPHERE_GUIDE_STRENGTH};
     RenderSettings settings = {0};
     settings.image.width = (int)request.size;
-    settings.image.height = (int)lround(request.size / camera_aspect(&scene.camera));
+    settings.image.height = (int)lround(request.size / scene_file_aspect(&scene.camera));
     settings.image.spp = (int)((request.spp + REFERENCE_BATCHES - 1) / REFERENCE_BATCHES * REFERENCE_BATCHES);
     settings.image.sampling = PIXEL_SUBPIXELS;
     settings.image.seed = request.seed;

@@ -737,3 +737,8 @@ int scene_load(const char *path, Scene *scene, char *error, size_t error_size)
     free(text);
     return status;
 }
+
+double scene_file_aspect(const Camera *camera)
+{
+    return vec3_length(camera->right) / vec3_length(camera->up);
+}

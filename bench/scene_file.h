@@ -50,4 +50,8 @@ int scene_file_material(const Scene *scene, const char *name);
 #define SCENE_HASH_START 0xcbf29ce484222325ULL
 uint64_t scene_hash(uint64_t hash, const void *data, size_t size);
 
+/* The image plane's width over its height: a W x H image follows it, H = W / aspect
+ * rounded (docs/scene-format.md). */
+double scene_file_aspect(const Camera *camera);
+
 #endif

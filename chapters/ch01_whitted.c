@@ -1,12 +1,9 @@
 /* ch01_whitted.c (chapter 1): Whitted ray tracing (report §2.1, Figure 1).
  *
- * New concepts (lib/): vec, ray, rng, camera, sphere, triangle, bvh, material, scene,
- * mirror, snell, schlick, whitted, render. What reads the scene file and writes the
- * images, the figure and the table is the bench (bench/experiment.h).
- *
- * The experiment: the room lit by a point light, one ray through each pixel centre:
- * hard shadows, no colour bleeding, and the ray tree in the mirrors and the glass.
- * Prints the render's cost; Whitted is deterministic, so it has no noise to measure.
+ * New concepts (lib/): vec, ray, camera, sphere, triangle, bvh, material, scene, mirror,
+ * snell, schlick, whitted, render. The experiment: the room lit by a point light, one
+ * ray through each pixel centre: hard shadows, no colour bleeding, the ray tree in the
+ * mirrors and the glass. Whitted is deterministic: no noise to measure, only its cost.
  */
 #include <stdio.h>
 

@@ -122,10 +122,9 @@ static int build(Bvh *bvh, const Box *boxes, Item *items, int count, int first, 
     int index = bvh->node_count++;
     Box box = EMPTY, centres = EMPTY;
     for (int i = 0; i < count; i++) {
-        Box b = boxes[items[i].primitive];
-        box = box_union(box, b);
-        centres = box_add(centres, vec3(b.corner[0][0] + b.corner[1][0], b.corner[0][1] + b.corner[1][1],
-                                        b.corner[0][2] + b.corner[1][2]));
+        const double(*c)[3] = boxes[items[i].primitive].corner;
+        box = box_union(box, boxes[items[i].primitive]);
+        centres = box_add(centres, vec3(c[0][0] + c[1][0], c[0][1] + c[1][1], c[0][2] + c[1][2]));
     }
     bvh->nodes[index] = (BvhNode){widened(box), -1, first, count};
     int axis = 0;
@@ -182,29 +181,19 @@ void bvh_free(Bvh *bvh)
     *bvh = (Bvh){NULL, 0, NULL};
 }
 
-/* What every box test of one ray needs, worked out once: per axis 1/d, and which
- * corner's plane it meets first (the upper one where d < 0). */
+/* The ray as every box test needs it: its origin and 1/d per axis, worked out once. */
 typedef struct {
     double origin[3], inverse[3];
-    int near[3];
 } BoxRay;
 
-static BoxRay box_ray(Ray ray)
-{
-    BoxRay r = {{ray.origin.x, ray.origin.y, ray.origin.z},
-                {1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z}, {0, 0, 0}};
-    for (int k = 0; k < 3; k++)
-        r.near[k] = signbit(r.inverse[k]) ? 1 : 0;
-    return r;
-}
-
-/* Narrow [*near, *far] to where the ray is between the two planes of one axis. A slab
- * the ray runs along (d = 0) gives t = +-inf, or NaN on a plane, which the comparisons
- * skip: the slab counts as met. */
+/* Narrow [*near, *far] to where the ray is between the two planes of axis k, the one
+ * it meets first being the upper where d < 0. A slab the ray runs along (d = 0) gives
+ * t = +-inf, or NaN on a plane, which the comparisons skip: the slab counts as met. */
 static inline void clip_to_slab(const Box *box, const BoxRay *r, int k, double *near, double *far)
 {
-    double t_in = (box->corner[r->near[k]][k] - r->origin[k]) * r->inverse[k];
-    double t_out = (box->corner[1 - r->near[k]][k] - r->origin[k]) * r->inverse[k];
+    int first = r->inverse[k] < 0.0;
+    double t_in = (box->corner[first][k] - r->origin[k]) * r->inverse[k];
+    double t_out = (box->corner[1 - first][k] - r->origin[k]) * r->inverse[k];
     *near = t_in > *near ? t_in : *near;
     *far = t_out < *far ? t_out : *far;
 }
@@ -235,7 +224,8 @@ typedef struct {
 /* Both queries: any_hit stops at the first hit found. A non-finite ray hits nothing. */
 static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int any_hit)
 {
-    BoxRay r = box_ray(ray);
+    BoxRay r = {{ray.origin.x, ray.origin.y, ray.origin.z},
+                {1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z}};
     StackEntry stack[BVH_MAX_DEPTH + 1];
     int depth = 0, nearest = -1;
     if (bvh->node_count > 0 && vec3_is_finite(ray.origin) && vec3_is_finite(ray.dir))
@@ -265,7 +255,7 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
         }
         if (far.entry < INFINITY)
             stack[depth++] = far;
-        if (near.entry < INFINITY)
+        if (near.entry < INFINITY) /* pushed last: popped next */
             stack[depth++] = near;
     }
     return nearest;

@@ -12,8 +12,8 @@
 #include "sphere.h"
 #include "triangle.h"
 
-/* Below this depth the heuristic chooses the split; deeper, the median does, so that no
- * tree is deeper than BVH_MAX_DEPTH, which bounds the traversal's stack. */
+/* Below this depth the heuristic splits, deeper the median: no tree is deeper than
+ * BVH_MAX_DEPTH, the traversal stack's size. */
 #define BVH_SAH_LEVELS 32
 #define BVH_MAX_DEPTH 64
 

@@ -8,11 +8,6 @@ Camera camera_make(Vec3 eye, Vec3 bottom_left, Vec3 bottom_right, Vec3 top_left)
     return camera;
 }
 
-double camera_aspect(const Camera *camera)
-{
-    return vec3_length(camera->right) / vec3_length(camera->up);
-}
-
 Ray camera_ray(const Camera *camera, int width, int height, int col, int row, double u, double v)
 {
     double x = (col + u) / width;

@@ -1,8 +1,5 @@
-/* material.h (chapter 1): what a surface does with light, as the scene file declares it.
- *
- * Plain data, so the scene is a flat array of materials; each kind's physics is in a
- * file of its own (mirror.h, snell.h, schlick.h, ...).
- */
+/* material.h (chapter 1): what a surface does with light, as the scene file declares it:
+ * plain data; each kind's physics is in a file of its own (mirror.h, snell.h, ...). */
 #ifndef MATERIAL_H
 #define MATERIAL_H
 

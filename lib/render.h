@@ -1,10 +1,9 @@
 /* render.h (chapter 1): the image as a Monte Carlo estimate (report §3.3).
  *
  * A pixel's value is the mean of spp samples. Sample s of pixel p traces one camera ray
- * and asks an estimator for the radiance arriving along it, counting the rays it
- * traces; from chapter 2 on, the estimator draws from the sample's own generator,
- * rng_for_sample(seed, p, s). The estimator is a function, so one loop serves every
- * estimator; Whitted's (whitted.h) is the first.
+ * and asks an estimator, a function, for the radiance arriving along it, counting the
+ * rays it traces; from chapter 2 on it draws from the sample's own generator,
+ * rng_for_sample(seed, p, s). Whitted's (whitted.h) is the first estimator.
  */
 #ifndef RENDER_H
 #define RENDER_H

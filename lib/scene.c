@@ -1,83 +1,22 @@
-/* scene.c (chapter 1): the scene's arrays and the ray queries against them. See
- * scene.h. */
+/* scene.c (chapter 1): the scene's arrays and the ray queries. See scene.h. */
 #include "scene.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-static BvhPrimitives primitives_of(const Scene *scene)
-{
-    BvhPrimitives p = {scene->triangles, scene->triangle_count, scene->spheres, scene->sphere_count};
-    return p;
-}
-
 #if CHAPTER >= 9
-static int prepare_queries(Scene *scene)
-{
-    scene->query = QUERY_WIDE_TREE;
-    if (bvh_build(&scene->bvh, primitives_of(scene)) != 0)
-        return -1;
-    return wide_bvh_build(&scene->wide, &scene->bvh, primitives_of(scene));
-}
-
-static void free_queries(Scene *scene)
-{
-    wide_bvh_free(&scene->wide);
-    bvh_free(&scene->bvh);
-}
-
-/* Every primitive tested, the nearest kept: what the trees must answer. */
-static int every_primitive(const Scene *scene, Ray ray, double *tmax, int any_hit)
-{
-    int nearest = -1;
-    for (int i = 0; i < scene->triangle_count + scene->sphere_count && !(any_hit && nearest >= 0); i++) {
-        double t = i < scene->triangle_count
-                       ? triangle_intersect(&scene->triangles[i], ray, 0.0, *tmax)
-                       : sphere_intersect(&scene->spheres[i - scene->triangle_count], ray, 0.0, *tmax);
-        if (t < *tmax) {
-            *tmax = t;
-            nearest = i;
-        }
-    }
-    return nearest;
-}
-
-static int nearest_primitive(const Scene *scene, Ray ray, double *tmax)
-{
-    if (scene->query == QUERY_EVERY_PRIMITIVE)
-        return every_primitive(scene, ray, tmax, 0);
-    if (scene->query == QUERY_BINARY_TREE)
-        return bvh_intersect(&scene->bvh, primitives_of(scene), ray, tmax);
-    return wide_bvh_intersect(&scene->wide, primitives_of(scene), ray, tmax);
-}
-
-static int any_primitive(const Scene *scene, Ray ray, double tmax)
-{
-    if (scene->query == QUERY_EVERY_PRIMITIVE)
-        return every_primitive(scene, ray, &tmax, 1) >= 0;
-    if (scene->query == QUERY_BINARY_TREE)
-        return bvh_occluded(&scene->bvh, primitives_of(scene), ray, tmax);
-    return wide_bvh_occluded(&scene->wide, primitives_of(scene), ray, tmax);
-}
+#include "query_method.h" /* the queries as scene->query says */
 #else
-static int prepare_queries(Scene *scene)
+/* The queries go through the tree (bvh.h). */
+static int queries_prepare(Scene *scene) { return bvh_build(&scene->bvh, scene_primitives(scene)); }
+static void queries_free(Scene *scene) { bvh_free(&scene->bvh); }
+static int queries_nearest(const Scene *scene, Ray ray, double *tmax)
 {
-    return bvh_build(&scene->bvh, primitives_of(scene));
+    return bvh_intersect(&scene->bvh, scene_primitives(scene), ray, tmax);
 }
-
-static void free_queries(Scene *scene)
+static int queries_any(const Scene *scene, Ray ray, double tmax)
 {
-    bvh_free(&scene->bvh);
-}
-
-static int nearest_primitive(const Scene *scene, Ray ray, double *tmax)
-{
-    return bvh_intersect(&scene->bvh, primitives_of(scene), ray, tmax);
-}
-
-static int any_primitive(const Scene *scene, Ray ray, double tmax)
-{
-    return bvh_occluded(&scene->bvh, primitives_of(scene), ray, tmax);
+    return bvh_occluded(&scene->bvh, scene_primitives(scene), ray, tmax);
 }
 #endif
 
@@ -95,7 +34,7 @@ void scene_free(Scene *scene)
 #if CHAPTER >= 3
     area_lights_free(scene);
 #endif
-    free_queries(scene);
+    queries_free(scene);
     scene_init(scene);
 }
 
@@ -138,19 +77,17 @@ int scene_add_point_light(Scene *scene, PointLight light)
 
 int scene_prepare(Scene *scene)
 {
-    free_queries(scene);
-    if (prepare_queries(scene) != 0)
-        return -1;
+    queries_free(scene);
 #if CHAPTER >= 3
-    return area_lights_list(scene);
-#else
-    return 0;
+    if (area_lights_list(scene) != 0)
+        return -1;
 #endif
+    return queries_prepare(scene);
 }
 
 int scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit)
 {
-    int primitive = nearest_primitive(scene, ray, &tmax);
+    int primitive = queries_nearest(scene, ray, &tmax);
     if (primitive < 0)
         return 0;
     hit->t = tmax;
@@ -183,5 +120,5 @@ int scene_occluded(const Scene *scene, Vec3 from, Vec3 from_normal, Vec3 to, Vec
     Vec3 span = vec3_sub(end, start);
     double distance = vec3_length(span);
     Ray ray = {start, vec3_scale(span, 1.0 / distance)};
-    return any_primitive(scene, ray, distance);
+    return queries_any(scene, ray, distance);
 }

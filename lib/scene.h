@@ -61,6 +61,13 @@ typedef struct {
                      own coordinates: the surface's numbers (ray.h) */
 } Hit;
 
+/* The primitives the hierarchy is built over (bvh.h). */
+static inline BvhPrimitives scene_primitives(const Scene *scene)
+{
+    BvhPrimitives p = {scene->triangles, scene->triangle_count, scene->spheres, scene->sphere_count};
+    return p;
+}
+
 void scene_init(Scene *scene);
 void scene_free(Scene *scene);
 

@@ -17,8 +17,7 @@ typedef struct {
     int max_depth;
 } WhittedSettings;
 
-/* An Estimator (render.h); settings points to a WhittedSettings. Whitted ray tracing is
- * deterministic: it draws no random numbers. */
+/* An Estimator (render.h); settings points to a WhittedSettings. */
 Vec3 whitted_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                       RayCounts *counts);
 

@@ -25,12 +25,6 @@
 #include "check.h"
 #include "scene_file.h"
 
-static BvhPrimitives primitives_of(const Scene *scene)
-{
-    BvhPrimitives p = {scene->triangles, scene->triangle_count, scene->spheres, scene->sphere_count};
-    return p;
-}
-
 static double primitive_t(BvhPrimitives p, int i, Ray ray)
 {
     return i < p.triangle_count ? triangle_intersect(&p.triangles[i], ray, 0.0, INFINITY)
@@ -60,23 +54,23 @@ typedef struct {
 
 static int binary_intersect(const Scene *scene, Ray ray, double *tmax)
 {
-    return bvh_intersect(&scene->bvh, primitives_of(scene), ray, tmax);
+    return bvh_intersect(&scene->bvh, scene_primitives(scene), ray, tmax);
 }
 
 static int binary_occluded(const Scene *scene, Ray ray, double tmax)
 {
-    return bvh_occluded(&scene->bvh, primitives_of(scene), ray, tmax);
+    return bvh_occluded(&scene->bvh, scene_primitives(scene), ray, tmax);
 }
 
 #if CHAPTER >= 9
 static int wide_intersect(const Scene *scene, Ray ray, double *tmax)
 {
-    return wide_bvh_intersect(&scene->wide, primitives_of(scene), ray, tmax);
+    return wide_bvh_intersect(&scene->wide, scene_primitives(scene), ray, tmax);
 }
 
 static int wide_occluded(const Scene *scene, Ray ray, double tmax)
 {
-    return wide_bvh_occluded(&scene->wide, primitives_of(scene), ray, tmax);
+    return wide_bvh_occluded(&scene->wide, scene_primitives(scene), ray, tmax);
 }
 #endif
 
@@ -93,7 +87,7 @@ static const Tree trees[] = {
 static int check_ray_within(const Scene *scene, Ray ray, double tmax, double tolerance,
                             const char *what, int i)
 {
-    BvhPrimitives p = primitives_of(scene);
+    BvhPrimitives p = scene_primitives(scene);
     double t_all = tmax;
     int all = brute_force(p, ray, &t_all);
     for (size_t k = 0; k < sizeof trees / sizeof trees[0]; k++) {
@@ -513,7 +507,7 @@ static void test_rays_that_are_not_rays(void **state)
         Hit hit;
         assert_int_equal(scene_intersect(&room, rays[i], INFINITY, &hit), 0);
         assert_int_equal(scene_intersect(&one, rays[i], INFINITY, &hit), 0);
-        assert_false(bvh_occluded(&room.bvh, primitives_of(&room), rays[i], 1.0));
+        assert_false(bvh_occluded(&room.bvh, scene_primitives(&room), rays[i], 1.0));
     }
     scene_free(&one);
     scene_free(&room);

@@ -92,21 +92,12 @@ static void test_unit_directions(void **state)
         }
 }
 
-/* camera_aspect is |BR - BL| / |TL - BL|: 1 for the room, 2 for the tilted plane. */
-static void test_aspect(void **state)
-{
-    Camera r = make(&room), t = make(&tilted);
-    assert_close(camera_aspect(&r), 1, 1e-15);
-    assert_close(camera_aspect(&t), 2, 1e-14);
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_corners_and_centre),
         cmocka_unit_test(test_mapping),
         cmocka_unit_test(test_unit_directions),
-        cmocka_unit_test(test_aspect),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -35,7 +35,7 @@ static int load_scene(const RenderCheck *check, Scene *scene, char *error, size_
 static int render_at(const RenderCheck *check, const Scene *scene, int spp, uint64_t seed,
                      RenderResult *result)
 {
-    int height = (int)lround(check->width / camera_aspect(&scene->camera));
+    int height = (int)lround(check->width / scene_file_aspect(&scene->camera));
     RenderSettings settings = {{check->width, height, spp, PIXEL_RANDOM, seed}, 0, 0, "exercise"};
     return render(scene, &settings, check->estimate, check->settings, result);
 }
@@ -188,7 +188,7 @@ static int ask_render(Grading *g, const RenderCheck *check, RenderResult *yours)
         return -1;
     }
     int status = grading_probing(g) ? render_at(check, &scene, check->spp, 1, yours) : 0;
-    int width = check->width, height = (int)lround(width / camera_aspect(&scene.camera));
+    int width = check->width, height = (int)lround(width / scene_file_aspect(&scene.camera));
     scene_free(&scene);
     if (grading_ask(g, status) != 0.0) {
         grading_fail(g, "out of memory while rendering");

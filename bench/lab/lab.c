@@ -352,7 +352,7 @@ static int check_scene(Lab *lab, const LabSettings *s)
         if (scene->materials[i].kind == MATERIAL_OREN_NAYAR)
             return fail(lab, "%s: material '%s' is oren_nayar, which chapter 5 introduces",
                         lab->scene_name, scene->materials[i].name);
-    double aspect = camera_aspect(&scene->camera), exact_height = s->size / aspect;
+    double aspect = scene_file_aspect(&scene->camera), exact_height = s->size / aspect;
     long height = lround(exact_height);
     if (height < 1 || height > LAB_SIZE_MAX || fabs(height - exact_height) > 0.01 * height)
         return fail(lab, "size: %d gives no image whose aspect ratio matches the image plane's "
@@ -410,7 +410,7 @@ int lab_configure(Lab *lab, const char *text)
     lab->settings = s;
     apply_sigma(lab, &s);
     lab->width = s.size;
-    lab->height = (int)lround(s.size / camera_aspect(&lab->scene.camera));
+    lab->height = (int)lround(s.size / scene_file_aspect(&lab->scene.camera));
     if (s.chapter == 8) {
         LabSettings *t = &lab->settings;
         if (t->photons == 0)

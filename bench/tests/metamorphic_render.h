@@ -30,7 +30,7 @@ static inline int rendering_of(const RenderResult *result, int samples, int inde
 static inline int render_path(const Scene *scene, uint64_t seed, Estimator estimate,
                               const void *settings, int spp, Rendering *out)
 {
-    int height = (int)lround(MONTE_CARLO_SIDE / camera_aspect(&scene->camera));
+    int height = (int)lround(MONTE_CARLO_SIDE / scene_file_aspect(&scene->camera));
     RenderSettings render_settings = {{MONTE_CARLO_SIDE, height, spp, PIXEL_RANDOM, seed}, 0, 0, "test"};
     RenderResult result;
     if (render(scene, &render_settings, estimate, settings, &result) != 0)

@@ -21,7 +21,7 @@ enum { SIDE = 64 };
 static int render_whitted(const char *text, const Scene *scene, uint64_t seed, Rendering *out)
 {
     WhittedSettings whitted = {10};
-    int height = (int)lround(SIDE / camera_aspect(&scene->camera));
+    int height = (int)lround(SIDE / scene_file_aspect(&scene->camera));
     ImageSettings image = {.width = SIDE, .height = height, .spp = 1, .seed = seed};
     *out = (Rendering){SIDE, height, 1, 1, malloc(3 * sizeof(double) * SIDE * height), NULL};
     if (!out->value)

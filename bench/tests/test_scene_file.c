@@ -121,6 +121,17 @@ static void test_room_loads(void **state)
     scene_free(&scene);
 }
 
+/* The aspect is |BR - BL| / |TL - BL|: 1 for the room, 2 for a plane twice as wide as
+ * high and tilted. */
+static void test_aspect(void **state)
+{
+    Camera room = camera_make(vec3(-1, 0, 0), vec3(0, 1, -1), vec3(0, -1, -1), vec3(0, 1, 1));
+    Camera tilted = camera_make(vec3(0, 0, 0), vec3(1, 1, 1), vec3(3, 3, 1), vec3(2, 0, 1));
+    assert_close(scene_file_aspect(&room), 1, 1e-15);
+    assert_close(vec3_dot(tilted.right, tilted.up), 0, 1e-15);
+    assert_close(scene_file_aspect(&tilted), 2, 1e-14);
+}
+
 /* The Whitted room has a point light with its intensity and no area light. */
 static void test_whitted_room_loads(void **state)
 {
@@ -1017,6 +1028,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_room_loads),
+        cmocka_unit_test(test_aspect),
         cmocka_unit_test(test_whitted_room_loads),
         cmocka_unit_test(test_material_kinds),
         cmocka_unit_test(test_boundary_values_accepted),
