@@ -114,8 +114,8 @@ static int best_split(const Box *boxes, Item *items, int count, double *right_ar
 }
 
 /* The node over items[0 .. count-1], whose primitives are entries first ... of the leaf
- * order, and its subtree; returns its number. Primitives whose box centres all coincide
- * cannot be split by them: a leaf. */
+ * order, and its subtree; returns its number. A leaf: one primitive; primitives whose
+ * box centres all coincide (no split by them tells them apart); or the deepest level. */
 static int build(Bvh *bvh, const Box *boxes, Item *items, int count, int first, int level,
                  double *scratch)
 {
@@ -127,20 +127,13 @@ static int build(Bvh *bvh, const Box *boxes, Item *items, int count, int first, 
         centres = box_add(centres, vec3(c[0][0] + c[1][0], c[0][1] + c[1][1], c[0][2] + c[1][2]));
     }
     bvh->nodes[index] = (BvhNode){widened(box), -1, first, count};
-    int axis = 0;
-    for (int k = 1; k < 3; k++)
-        if (box_extent(centres, k) > box_extent(centres, axis))
-            axis = k;
-    if (count == 1 || !(box_extent(centres, axis) > 0.0)) {
+    double spread = box_extent(centres, 0) + box_extent(centres, 1) + box_extent(centres, 2);
+    if (count == 1 || !(spread > 0.0) || level == BVH_MAX_DEPTH - 1) {
         for (int i = 0; i < count; i++)
             bvh->primitives[first + i] = items[i].primitive;
         return index;
     }
-    int split = count / 2;
-    if (level < BVH_SAH_LEVELS)
-        split = best_split(boxes, items, count, scratch);
-    else
-        sort_along(boxes, items, count, axis);
+    int split = best_split(boxes, items, count, scratch);
     build(bvh, boxes, items, split, first, level + 1, scratch);
     int right = build(bvh, boxes, items + split, count - split, first + split, level + 1, scratch);
     bvh->nodes[index].right = right;

@@ -12,9 +12,8 @@
 #include "sphere.h"
 #include "triangle.h"
 
-/* Below this depth the heuristic splits, deeper the median: no tree is deeper than
- * BVH_MAX_DEPTH, the traversal stack's size. */
-#define BVH_SAH_LEVELS 32
+/* No tree is deeper: a node at that depth is a leaf, whatever it holds. It bounds the
+ * traversal's stack. */
 #define BVH_MAX_DEPTH 64
 
 /* An axis-aligned box: corner[0] the lower corner, corner[1] the upper. */
