@@ -105,9 +105,10 @@ $(DEPS_OK):
 	@mkdir -p $(@D) && touch $@
 
 # ---- one library, its program and its tests per chapter ---------------------------------
-# The order diff-chapterN shows the lesson's files in: chapter 1's as it reads (vectors,
-# rays, the camera, the shapes, the tree, the scene, the optics, Whitted, one sample),
-# then the rest by name; a header before its source.
+# The order diff-chapterN shows the lesson's files in: the chapter's new files first, then
+# the lines it changes in earlier ones; each group as chapter 1 reads (vectors, rays, the
+# camera, the shapes, the tree, the scene, the optics, Whitted, one sample), then by name,
+# a header before its source.
 READING_ORDER := vec ray camera sphere triangle bvh material scene mirror snell schlick whitted render
 
 # $(1): the chapter. Tests of chapter K are built in chapter K and in the final chapter.
@@ -150,10 +151,14 @@ source-chapter$(1): | $(DEPS_OK)
 
 diff-chapter$(1): source-chapter$(1) $(if $(filter-out 1,$(1)),source-chapter$(shell echo $$(($(1) - 1))))
 	@cd $(BUILD)/source && { \
-	    for name in $(READING_ORDER) $$$$(ls chapter$(1)/lib | sed 's/[.][ch]$$$$//' | sort -u); do \
-	        printf 'lib/%s.h\nlib/%s.c\n' $$$$name $$$$name; \
-	    done | awk '!seen[$$$$0]++' | while read -r f; do \
-	        [ -e chapter$(1)/$$$$f ] && diff -uN chapter$(shell echo $$(($(1) - 1)))/$$$$f chapter$(1)/$$$$f; \
+	    for new in 1 0; do \
+	        for name in $(READING_ORDER) $$$$(ls chapter$(1)/lib | sed 's/[.][ch]$$$$//' | sort -u); do \
+	            printf 'lib/%s.h\nlib/%s.c\n' $$$$name $$$$name; \
+	        done | awk '!seen[$$$$0]++' | while read -r f; do \
+	            [ -e chapter$(1)/$$$$f ] || continue; \
+	            [ -e chapter$(shell echo $$(($(1) - 1)))/$$$$f ] && is_new=0 || is_new=1; \
+	            [ $$$$is_new = $$$$new ] && diff -uN chapter$(shell echo $$(($(1) - 1)))/$$$$f chapter$(1)/$$$$f; \
+	        done; \
 	    done; \
 	    diff -ruN chapter$(shell echo $$(($(1) - 1)))/chapters chapter$(1)/chapters; \
 	    if [ "$$(TESTS)" != no ]; then diff -ruN chapter$(shell echo $$(($(1) - 1)))/tests chapter$(1)/tests; fi; \
