@@ -93,6 +93,16 @@ static double image_mean_of(const Image *image)
     return sum / pixels;
 }
 
+void measure_channel_means(const Image *image, double means[3])
+{
+    double sum[3] = {0, 0, 0};
+    long pixels = (long)image->width * image->height;
+    for (long i = 0; i < 3 * pixels; i++)
+        sum[i % 3] += image->pixels[i];
+    for (int c = 0; c < 3; c++)
+        means[c] = sum[c] / pixels;
+}
+
 void measure_image_mean(const Image *image, const Image *average_std_error, double *mean,
                         double *mean_std_error)
 {

@@ -93,6 +93,9 @@ int measure_error_estimate(const Image *image, const Image *reference,
 /* Root mean square over all pixels and channels. */
 double measure_rms(const Image *image);
 
+/* The mean of each channel over the image's pixels. */
+void measure_channel_means(const Image *image, double means[3]);
+
 /* The image's mean: over pixels of each pixel's channel mean m_i = (R + G + B) / 3,
  * which is the mean over all pixels and channels; and its standard error. Pixels are
  * independent, so with s_i the standard error of m_i,
