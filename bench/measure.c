@@ -93,6 +93,24 @@ static double image_mean_of(const Image *image)
     return sum / pixels;
 }
 
+void measure_window_mean(const Image *image, const Image *std_error, int col, int row, int half,
+                         double *mean, double *mean_std_error)
+{
+    double sum = 0.0, variance = 0.0;
+    int n = 0;
+    for (int r = row - half; r <= row + half; r++)
+        for (int c = col - half; c <= col + half; c++) {
+            int cc = c < 0 ? 0 : c >= image->width ? image->width - 1 : c;
+            int rc = r < 0 ? 0 : r >= image->height ? image->height - 1 : r;
+            double se = vec3_average(image_get(std_error, cc, rc));
+            sum += vec3_average(image_get(image, cc, rc));
+            variance += se * se;
+            n++;
+        }
+    *mean = sum / n;
+    *mean_std_error = sqrt(variance) / n;
+}
+
 void measure_channel_means(const Image *image, double means[3])
 {
     double sum[3] = {0, 0, 0};

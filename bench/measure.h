@@ -93,6 +93,13 @@ int measure_error_estimate(const Image *image, const Image *reference,
 /* Root mean square over all pixels and channels. */
 double measure_rms(const Image *image);
 
+/* The mean brightness (the mean of the three channels) of the pixels within `half` pixels
+ * of (col, row) across and down, a window moved inside the image where it pokes out
+ * (edge pixels repeated), and its standard error from the pixels' own, per channel in
+ * std_error (their channel mean taken as the pixel's: see measure_image_mean). */
+void measure_window_mean(const Image *image, const Image *std_error, int col, int row, int half,
+                         double *mean, double *mean_std_error);
+
 /* The mean of each channel over the image's pixels. */
 void measure_channel_means(const Image *image, double means[3]);
 

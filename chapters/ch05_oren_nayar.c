@@ -23,6 +23,7 @@
 #include "oren_nayar.h"
 #include "path_direct.h"
 #include "scene_file.h"
+#include "view.h"
 
 static const double SIGMAS[] = {0.0, 0.25, 0.5, 1.0};
 enum { SIGMA_COUNT = sizeof SIGMAS / sizeof SIGMAS[0] };
@@ -49,49 +50,17 @@ static TableRow render_panel(const Options *options, const Scene *scene,
                                settings_text, reference, image);
 }
 
-/* Where world point p appears in a width x height image, as a continuous pixel position
- * (pixel (c, r) covers [c, c+1) x [r, r+1)). The ray from the eye to p meets the image
- * plane at BL + a (BR - BL) + b (TL - BL); camera.h maps that to col = a W,
- * row = (1 - b) H. a and b solve the 2 x 2 system of dot products with the plane's
- * sides (which need not be perpendicular). */
-static void project(const Camera *camera, int width, int height, Vec3 p, double *col, double *row)
-{
-    Vec3 normal = vec3_cross(camera->right, camera->up);
-    Vec3 to_point = vec3_sub(p, camera->eye);
-    double t = vec3_dot(normal, vec3_sub(camera->bottom_left, camera->eye)) /
-               vec3_dot(normal, to_point);
-    Vec3 q = vec3_sub(vec3_add_scaled(camera->eye, to_point, t), camera->bottom_left);
-    double rr = vec3_dot(camera->right, camera->right), uu = vec3_dot(camera->up, camera->up);
-    double ru = vec3_dot(camera->right, camera->up);
-    double qr = vec3_dot(q, camera->right), qu = vec3_dot(q, camera->up);
-    double determinant = rr * uu - ru * ru;
-    double a = (qr * uu - qu * ru) / determinant, b = (qu * rr - qr * ru) / determinant;
-    *col = a * width;
-    *row = (1.0 - b) * height;
-}
-
 typedef struct {
     double value, error; /* a brightness or a ratio, and its standard error */
 } Measured;
 
-/* The mean radiance (average of the channels) over the pixels within `half` pixels of
- * position (col, row), clamped to the image, with its standard error. */
+/* The reference's brightness (the mean of the channels) within `half` pixels of (col, row). */
 static Measured brightness(const Reference *reference, double col, double row, int half)
 {
-    const Image *image = &reference->image;
-    int c0 = (int)col, r0 = (int)row;
-    double sum = 0.0, variance = 0.0;
-    int n = 0;
-    for (int r = r0 - half; r <= r0 + half; r++)
-        for (int c = c0 - half; c <= c0 + half; c++) {
-            int cc = c < 0 ? 0 : c >= image->width ? image->width - 1 : c;
-            int rc = r < 0 ? 0 : r >= image->height ? image->height - 1 : r;
-            double se = vec3_average(image_get(&reference->std_error, cc, rc));
-            sum += vec3_average(image_get(image, cc, rc));
-            variance += se * se;
-            n++;
-        }
-    return (Measured){sum / n, sqrt(variance) / n};
+    Measured m;
+    measure_window_mean(&reference->image, &reference->std_error, (int)col, (int)row, half,
+                        &m.value, &m.error);
+    return m;
 }
 
 /* Brightness at RIM_FRACTION of the sphere's radius, left and right of its centre
@@ -105,9 +74,9 @@ static Measured rim_to_centre(const Scene *scene, const Reference *reference, co
     Vec3 sideways = vec3_sub(camera->right, vec3_scale(sight, vec3_dot(camera->right, sight)));
     Vec3 offset = vec3_scale(vec3_normalize(sideways), RIM_FRACTION * sphere->radius);
     double col, row, left_col, left_row, right_col, right_row;
-    project(camera, width, height, sphere->center, &col, &row);
-    project(camera, width, height, vec3_sub(sphere->center, offset), &left_col, &left_row);
-    project(camera, width, height, vec3_add(sphere->center, offset), &right_col, &right_row);
+    view_position(camera, width, height, sphere->center, &col, &row);
+    view_position(camera, width, height, vec3_sub(sphere->center, offset), &left_col, &left_row);
+    view_position(camera, width, height, vec3_add(sphere->center, offset), &right_col, &right_row);
     double radius_pixels = fabs(right_col - left_col) / (2.0 * RIM_FRACTION);
     int half = (int)(radius_pixels / 10.0); /* a window small beside the sphere */
     Measured centre = brightness(reference, col, row, half);

@@ -127,6 +127,47 @@ static void test_image_mean_by_hand(void **state)
     image_free(&channel_error);
 }
 
+/* Channel means by hand: pixels (1, 2, 4) and (3, 6, 0) give (2, 4, 2). */
+static void test_channel_means_by_hand(void **state)
+{
+    const float values[] = {1, 2, 4, 3, 6, 0};
+    Image image = image_of(1, 2, values);
+    double means[3];
+    measure_channel_means(&image, means);
+    assert_close(means[0], 2.0, 1e-15);
+    assert_close(means[1], 4.0, 1e-15);
+    assert_close(means[2], 2.0, 1e-15);
+    image_free(&image);
+}
+
+/* A window's brightness by hand, on a 3 x 2 image whose pixels are grey 0 .. 5 in reading
+ * order with standard errors 1 .. 6 in the red channel alone (their channel mean, 1/3 ..
+ * 2): the 3 x 3 window around pixel (1, 0) repeats the top row for the row above the
+ * image, so it holds 0, 1, 2 twice and 3, 4, 5: mean 18 / 9 = 2, standard error
+ * sqrt(2 (1 + 4 + 9) + 16 + 25 + 36) / 9 / 3. Half 0 is the pixel alone; the window
+ * around the corner (2, 1) with half 1 repeats the last column and row: 1, 2, 2, 4, 5, 5,
+ * 4, 5, 5, mean 33 / 9. */
+static void test_window_mean_by_hand(void **state)
+{
+    float grey[18], errors[18] = {0};
+    for (int i = 0; i < 6; i++) {
+        grey[3 * i] = grey[3 * i + 1] = grey[3 * i + 2] = (float)i;
+        errors[3 * i] = (float)(i + 1);
+    }
+    Image image = image_of(3, 2, grey), std_error = image_of(3, 2, errors);
+    double mean, error;
+    measure_window_mean(&image, &std_error, 1, 0, 1, &mean, &error);
+    assert_close(mean, 2.0, 1e-15);
+    assert_close(error, sqrt(2.0 * (1 + 4 + 9) + 16 + 25 + 36) / 9.0 / 3.0, 1e-15);
+    measure_window_mean(&image, &std_error, 2, 1, 0, &mean, &error);
+    assert_close(mean, 5.0, 1e-15);
+    assert_close(error, 2.0, 1e-15);
+    measure_window_mean(&image, &std_error, 2, 1, 1, &mean, &error);
+    assert_close(mean, 33.0 / 9.0, 1e-15);
+    image_free(&image);
+    image_free(&std_error);
+}
+
 /* Averaging P independent pixels each with standard error s gives s / sqrt(P): four
  * pixels with s = 0.5 give 0.25. */
 static void test_image_mean_error_shrinks_as_root_n(void **state)
@@ -512,6 +553,8 @@ int main(void)
         cmocka_unit_test(test_identical_images_have_no_error),
         cmocka_unit_test(test_rms_by_hand),
         cmocka_unit_test(test_image_mean_by_hand),
+        cmocka_unit_test(test_channel_means_by_hand),
+        cmocka_unit_test(test_window_mean_by_hand),
         cmocka_unit_test(test_image_mean_error_shrinks_as_root_n),
         cmocka_unit_test(test_image_mean_error_of_known_variance),
         cmocka_unit_test(test_ks_test_has_power),
