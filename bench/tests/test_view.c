@@ -62,6 +62,8 @@ static void test_pixel_inside_the_image(void **state)
     assert_int_equal(row, 7);
     assert_int_equal(view_pixel(&room, 20, 10, ray_at(ray, -3.0), &col, &row), 0);
     assert_int_equal(view_pixel(&room, 20, 10, vec3(5, 7, 0), &col, &row), 0);  /* left of it */
+    assert_int_equal(view_pixel(&room, 20, 10, vec3(5, -7, 0), &col, &row), 0); /* right */
+    assert_int_equal(view_pixel(&room, 20, 10, vec3(5, 0, 9), &col, &row), 0);  /* above */
     assert_int_equal(view_pixel(&room, 20, 10, vec3(5, 0, -9), &col, &row), 0); /* below */
 }
 
