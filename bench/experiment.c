@@ -810,6 +810,20 @@ void experiment_caption(const TableRow *row, const char *title, char *caption, s
         snprintf(caption, size, "%s\n%s\n%.2f s, RMSE %.4f", title, row->settings,
                  row->seconds, row->rmse);
 }
+
+void experiment_write_panels(const Options *options, const char *name, const Image *images,
+                             const TableRow *rows, const char *const *titles, int count)
+{
+    char captions[8][512];
+    const char *list[8];
+    if (count > 8)
+        cli_fail(1, "%d panels in one figure (at most 8)", count);
+    for (int i = 0; i < count; i++) {
+        experiment_caption(&rows[i], titles[i], captions[i], sizeof captions[i]);
+        list[i] = captions[i];
+    }
+    experiment_write_figure(options, name, images, list, count, PANEL_EXPOSURE);
+}
 #endif /* CHAPTER >= 2 */
 
 #if CHAPTER >= 2

@@ -193,6 +193,11 @@ void describe_path(const PathSettings *settings, char *text, int size);
 
 /* A figure caption from a table row: its settings, then time and error. */
 void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size);
+
+/* The figure NAME of `count` panels (at most 8), each captioned by its title and its
+ * table row (experiment_caption). */
+void experiment_write_panels(const Options *options, const char *name, const Image *images,
+                             const TableRow *rows, const char *const *titles, int count);
 #endif /* CHAPTER >= 2 */
 
 #endif

@@ -89,13 +89,10 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
     rows[1] = experiment_row("ch08_photon_map", text, &photons.render);
     measure_fill_row(&rows[1], &photons.render.image, reference);
 
-    char captions[2][320];
-    experiment_caption(&rows[0], "chapter 7: final estimator (Figure 7)", captions[0], sizeof captions[0]);
-    experiment_caption(&rows[1], "chapter 8: + photon-mapped caustics, equal time",
-                       captions[1], sizeof captions[1]);
-    const char *caption_list[] = {captions[0], captions[1]};
+    const char *titles[] = {"chapter 7: final estimator (Figure 7)",
+                            "chapter 8: + photon-mapped caustics, equal time"};
     Image images[3] = {reference->image, traced.image, photons.render.image}; /* the crops' */
-    experiment_write_figure(options, "ch08_equal_time", &images[1], caption_list, 2, PANEL_EXPOSURE);
+    experiment_write_panels(options, "ch08_equal_time", &images[1], rows, titles, 2);
     experiment_write_table(options, "ch08_equal_time", rows, 2);
 
     /* The rows' RMSE has the reference's variance removed (measure.h); the raw one too. */
