@@ -288,6 +288,15 @@ void experiment_write_table(const Options *options, const char *name, const Tabl
     announce(table_write_csv(path, rows, count), path);
 }
 
+void experiment_write_numbers(const Options *options, const char *name, const char *header,
+                              const double *values, int rows, int columns, const int *decimals)
+{
+    char file_name[256], path[4400];
+    snprintf(file_name, sizeof file_name, "%s.csv", name);
+    experiment_path(options, file_name, path, sizeof path);
+    announce(table_write_numbers_csv(path, header, values, rows, columns, decimals), path);
+}
+
 TableRow experiment_row(const char *panel, const char *settings, const RenderResult *result)
 {
     TableRow row = {0};

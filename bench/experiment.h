@@ -90,6 +90,10 @@ void experiment_write_crops(const Options *options, const char *name, const Imag
 void experiment_write_table(const Options *options, const char *name, const TableRow *rows,
                             int count);
 
+/* Write a table of numbers as NAME.csv (table_write_numbers_csv). */
+void experiment_write_numbers(const Options *options, const char *name, const char *header,
+                              const double *values, int rows, int columns, const int *decimals);
+
 /* A table row with the cost columns of a render filled in and no error measured. */
 TableRow experiment_row(const char *panel, const char *settings, const RenderResult *result);
 

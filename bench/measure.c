@@ -93,6 +93,20 @@ static double image_mean_of(const Image *image)
     return sum / pixels;
 }
 
+double measure_z(double a, double a_error, double b, double b_error)
+{
+    return (a - b) / sqrt(a_error * a_error + b_error * b_error);
+}
+
+double measure_changed_fraction(const Image *a, const Image *b)
+{
+    long pixels = (long)a->width * a->height, changed = 0;
+    for (long i = 0; i < pixels; i++)
+        changed += a->pixels[3 * i] != b->pixels[3 * i] || a->pixels[3 * i + 1] != b->pixels[3 * i + 1] ||
+                   a->pixels[3 * i + 2] != b->pixels[3 * i + 2];
+    return (double)changed / pixels;
+}
+
 void measure_window_mean(const Image *image, const Image *std_error, int col, int row, int half,
                          double *mean, double *mean_std_error)
 {

@@ -93,6 +93,13 @@ int measure_error_estimate(const Image *image, const Image *reference,
 /* Root mean square over all pixels and channels. */
 double measure_rms(const Image *image);
 
+/* How many standard errors a lies from b, both measured: (a - b) / sqrt(a_error^2 +
+ * b_error^2). */
+double measure_z(double a, double a_error, double b, double b_error);
+
+/* The fraction of the pixels of a that differ from b's (same size) in some channel. */
+double measure_changed_fraction(const Image *a, const Image *b);
+
 /* The mean brightness (the mean of the three channels) of the pixels within `half` pixels
  * of (col, row) across and down, a window moved inside the image where it pokes out
  * (edge pixels repeated), and its standard error from the pixels' own, per channel in

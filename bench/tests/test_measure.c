@@ -140,6 +140,20 @@ static void test_channel_means_by_hand(void **state)
     image_free(&image);
 }
 
+/* z by hand: 5 +- 3 against 1 +- 4 is 4 / 5 = 0.8 standard errors above; the other
+ * way, -0.8. Changed pixels by hand: of three, one differs in its blue channel alone. */
+static void test_z_and_changed_fraction_by_hand(void **state)
+{
+    assert_close(measure_z(5, 3, 1, 4), 0.8, 1e-15);
+    assert_close(measure_z(1, 4, 5, 3), -0.8, 1e-15);
+    const float a_values[] = {1, 2, 3, 4, 5, 6, 7, 8, 9}, b_values[] = {1, 2, 3, 4, 5, 6.5f, 7, 8, 9};
+    Image a = image_of(3, 1, a_values), b = image_of(3, 1, b_values);
+    assert_close(measure_changed_fraction(&a, &b), 1.0 / 3.0, 1e-15);
+    assert_close(measure_changed_fraction(&a, &a), 0.0, 0.0);
+    image_free(&a);
+    image_free(&b);
+}
+
 /* A window's brightness by hand, on a 3 x 2 image whose pixels are grey 0 .. 5 in reading
  * order with standard errors 1 .. 6 in the red channel alone (their channel mean, 1/3 ..
  * 2): the 3 x 3 window around pixel (1, 0) repeats the top row for the row above the
@@ -554,6 +568,7 @@ int main(void)
         cmocka_unit_test(test_rms_by_hand),
         cmocka_unit_test(test_image_mean_by_hand),
         cmocka_unit_test(test_channel_means_by_hand),
+        cmocka_unit_test(test_z_and_changed_fraction_by_hand),
         cmocka_unit_test(test_window_mean_by_hand),
         cmocka_unit_test(test_image_mean_error_shrinks_as_root_n),
         cmocka_unit_test(test_image_mean_error_of_known_variance),
