@@ -93,6 +93,23 @@ static double image_mean_of(const Image *image)
     return sum / pixels;
 }
 
+int measure_most_efficient(const TableRow *rows, int count)
+{
+    int best = -1;
+    for (int i = 0; i < count; i++)
+        if (!rows[i].infinite_variance && !isnan(rows[i].efficiency) &&
+            (best < 0 || rows[i].efficiency > rows[best].efficiency))
+            best = i;
+    return best;
+}
+
+int measure_clearly_lower(const TableRow *a, const TableRow *b)
+{
+    double se_a = a->runs > 1 ? a->rel_mse_spread / sqrt(a->runs) : 0.0;
+    double se_b = b->runs > 1 ? b->rel_mse_spread / sqrt(b->runs) : 0.0;
+    return b->rel_mse - a->rel_mse > 2.0 * sqrt(se_a * se_a + se_b * se_b);
+}
+
 double measure_z(double a, double a_error, double b, double b_error)
 {
     return (a - b) / sqrt(a_error * a_error + b_error * b_error);

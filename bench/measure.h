@@ -93,6 +93,15 @@ int measure_error_estimate(const Image *image, const Image *reference,
 /* Root mean square over all pixels and channels. */
 double measure_rms(const Image *image);
 
+/* The row of the highest efficiency among those of finite variance whose efficiency was
+ * measured, or -1 if there is none: the most efficient setting that can be ranked. */
+int measure_most_efficient(const TableRow *rows, int count);
+
+/* Whether a's mean relative MSE is lower than b's by more than twice the standard error of
+ * their difference (each mean's is its runs' spread / sqrt(runs); 0 for one run): a
+ * difference the runs' spread cannot explain. */
+int measure_clearly_lower(const TableRow *a, const TableRow *b);
+
 /* How many standard errors a lies from b, both measured: (a - b) / sqrt(a_error^2 +
  * b_error^2). */
 double measure_z(double a, double a_error, double b, double b_error);

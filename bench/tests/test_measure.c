@@ -140,6 +140,35 @@ static void test_channel_means_by_hand(void **state)
     image_free(&image);
 }
 
+/* The most efficient row that can be ranked: not of infinite variance, its efficiency
+ * measured (not NaN); -1 when none is. */
+static void test_most_efficient(void **state)
+{
+    TableRow rows[4] = {{.efficiency = NAN}, {.efficiency = 3}, {.efficiency = 9, .infinite_variance = 1},
+                        {.efficiency = 5}};
+    assert_int_equal(measure_most_efficient(rows, 4), 3);
+    assert_int_equal(measure_most_efficient(rows, 3), 1);
+    assert_int_equal(measure_most_efficient(rows, 1), -1);
+    assert_int_equal(measure_most_efficient(&rows[2], 1), -1);
+}
+
+/* Clearly lower: relative MSE 1 and 2 from 4 runs each of spread 0.6 have a difference
+ * of standard error sqrt(2) 0.3 = 0.42, so 1 is more than twice that below 2, but not
+ * below 1.8; one run has no spread to weigh; and nothing is lower than itself. */
+static void test_clearly_lower(void **state)
+{
+    TableRow low = {.rel_mse = 1, .rel_mse_spread = 0.6, .runs = 4};
+    TableRow high = {.rel_mse = 2, .rel_mse_spread = 0.6, .runs = 4};
+    TableRow near = {.rel_mse = 1.8, .rel_mse_spread = 0.6, .runs = 4};
+    TableRow single = {.rel_mse = 1.1, .rel_mse_spread = NAN, .runs = 1};
+    assert_true(measure_clearly_lower(&low, &high));
+    assert_false(measure_clearly_lower(&high, &low));
+    assert_false(measure_clearly_lower(&low, &near));
+    assert_false(measure_clearly_lower(&low, &low));
+    TableRow single_high = {.rel_mse = 1.2, .rel_mse_spread = NAN, .runs = 1};
+    assert_true(measure_clearly_lower(&single, &single_high));
+}
+
 /* z by hand: 5 +- 3 against 1 +- 4 is 4 / 5 = 0.8 standard errors above; the other
  * way, -0.8. Changed pixels by hand: of three, one differs in its blue channel alone. */
 static void test_z_and_changed_fraction_by_hand(void **state)
@@ -569,6 +598,8 @@ int main(void)
         cmocka_unit_test(test_image_mean_by_hand),
         cmocka_unit_test(test_channel_means_by_hand),
         cmocka_unit_test(test_z_and_changed_fraction_by_hand),
+        cmocka_unit_test(test_most_efficient),
+        cmocka_unit_test(test_clearly_lower),
         cmocka_unit_test(test_window_mean_by_hand),
         cmocka_unit_test(test_image_mean_error_shrinks_as_root_n),
         cmocka_unit_test(test_image_mean_error_of_known_variance),
