@@ -3,19 +3,11 @@
  * New concepts (lib/): oren_nayar (eqs. 13-14 with their corrections:
  * A = 1 - sigma^2 / (2 (sigma^2 + 0.33)), and tan(beta) where the report has sin(beta)).
  *
- * The experiment, on scenes/oren_nayar.scene: a rough sphere (material `rough`) beside a
- * Lambertian sphere of the same colour, lit from the viewer's direction.
- *   - Figure 10: the two spheres. A Lambertian sphere lit from the eye darkens towards
- *     its rim (its radiance follows cos theta); a rough one looks flat, because near the
- *     rim the facets that face the viewer also face the light (retro-reflection);
- *   - a sweep of the roughness sigma of `rough` (0, 0.25, 0.5, 1 rad) on a quarter-size
- *     image, each against a reference of its own;
- *   - the number that says "flat": each sphere's brightness at 80% of its radius from
- *     its centre (left and right, averaged) over the brightness at its centre, measured
- *     on the references. At sigma = 0 Oren-Nayar is Lambert and the two agree; the rough
- *     sphere's ratio rises with sigma. Beside them, what eq. 13 predicts for a light
- *     exactly at the eye and no light from the walls (both directions at theta, with
- *     sin theta = 0.8): cos theta (A + B sin theta tan theta) / A.
+ * The experiment (docs/chapter5.md), on scenes/oren_nayar.scene: a rough sphere (material
+ * `rough`) beside a Lambertian one, lit from the viewer's direction. Figure 10; a sweep of
+ * sigma on a quarter-size image; and the number that says "flat": each sphere's
+ * brightness at 80% of its radius over that at its centre, on the references, beside what
+ * eq. 13 predicts for a light at the eye.
  */
 #include <stdio.h>
 
@@ -143,10 +135,8 @@ int main(int argc, char **argv)
     Image image;
     TableRow row = render_panel(&options, &scene, &reference, file_sigma, PIXEL_SUBPIXELS,
                                 "ch05_rough_and_lambert", &image);
-    char caption[256];
-    experiment_caption(&row, "Figure 10: Oren-Nayar | Lambert", caption, sizeof caption);
-    const char *figure_captions[] = {caption};
-    experiment_write_figure(&options, "ch05_figure10", &image, figure_captions, 1, PANEL_EXPOSURE);
+    const char *figure_title[] = {"Figure 10: Oren-Nayar | Lambert"};
+    experiment_write_panels(&options, "ch05_figure10", &image, &row, figure_title, 1);
     experiment_write_table(&options, "ch05_table", &row, 1);
     image_free(&image);
     measure_reference_free(&reference);
@@ -155,26 +145,23 @@ int main(int argc, char **argv)
     Options sweep_options = experiment_quarter_size(&options);
     TableRow rows[SIGMA_COUNT];
     Image images[SIGMA_COUNT];
-    char captions[SIGMA_COUNT][256];
+    char titles[SIGMA_COUNT][64];
+    const char *title_list[SIGMA_COUNT];
     Measured rough_ratio[SIGMA_COUNT], lambert_ratio[SIGMA_COUNT];
     for (int i = 0; i < SIGMA_COUNT; i++) {
         scene.materials[rough].sigma = SIGMAS[i];
         reference_for(&sweep_options, &scene, SIGMAS[i], &reference);
-        char name[64], title[64];
+        char name[64];
         snprintf(name, sizeof name, "ch05_sigma%g", SIGMAS[i]);
-        snprintf(title, sizeof title, "sigma = %g rad", SIGMAS[i]);
+        snprintf(titles[i], sizeof titles[i], "sigma = %g rad", SIGMAS[i]);
+        title_list[i] = titles[i];
         rows[i] = render_panel(&sweep_options, &scene, &reference, SIGMAS[i], PIXEL_RANDOM,
                                name, &images[i]);
-        experiment_caption(&rows[i], title, captions[i], sizeof captions[i]);
         rough_ratio[i] = rim_to_centre(&scene, &reference, rough_sphere);
         lambert_ratio[i] = rim_to_centre(&scene, &reference, lambert_sphere);
         measure_reference_free(&reference);
     }
-    const char *sweep_captions[SIGMA_COUNT];
-    for (int i = 0; i < SIGMA_COUNT; i++)
-        sweep_captions[i] = captions[i];
-    experiment_write_figure(&options, "ch05_sigma_sweep", images, sweep_captions, SIGMA_COUNT,
-                            PANEL_EXPOSURE);
+    experiment_write_panels(&options, "ch05_sigma_sweep", images, rows, title_list, SIGMA_COUNT);
     printf("\nsweep of sigma at %d pixels wide:\n", sweep_options.size);
     experiment_write_table(&options, "ch05_sigma_sweep", rows, SIGMA_COUNT);
 
