@@ -1,13 +1,11 @@
 /* bias_variance.h (bench, chapter 8): a setting's error split into bias and variance, from
- * K images of independent seeds and two references of independent seeds, and the table
- * of such settings (docs/chapter8.md derives it).
- *
- * For the K images X_1..X_K, V is the mean over values (pixels and channels) of their
- * sample variance: one image's variance. Their mean X has error X - T = b + e (bias b,
- * noise e of variance V / K), each reference R_j - T = n_j, and then
- *     E[(X - R_1)(X - R_2)] = b^2 + V / K,
- * the references' noise dropping out of the product. So bias^2 is the mean of that
- * product minus V / K, and one image's mean squared error is bias^2 + V.
+ * K images of independent seeds and two references of independent seeds, and the table of
+ * such settings (docs/chapter8.md). For the K images, V is the mean over values (pixels and
+ * channels) of their sample variance: one image's variance. Their mean X has error
+ * X - T = b + e (bias b, noise e of variance V / K), each reference R_j - T = n_j, and
+ * E[(X - R_1)(X - R_2)] = b^2 + V / K: the references' noise drops out of the product. So
+ * bias^2 is the mean of that product minus V / K, and one image's mean squared error is
+ * bias^2 + V.
  */
 #ifndef BIAS_VARIANCE_H
 #define BIAS_VARIANCE_H

@@ -1,15 +1,11 @@
-/* sample_order.h (bench, chapter 1): the order in which a render takes each pixel's
- * samples, so that a render stopped early is unbiased (docs/chapter2.md).
- *
- * Sample s of n looks through sub-pixel s (pixel_sampling.h), so taking samples 0, 1, ...
- * and stopping after k < n would cover the top k/n of every pixel only. Instead each
- * pixel starts at its own first sample f, uniform in [0, n) and drawn from a generator of
- * the pixel's that no sample uses, and pass j takes sample
- *     ((f + j) mod n) g mod n,
- * g sharing no factor with n, so that the n passes take each sample once. Whatever j, the
- * sample is uniform over the n sub-pixels and, jittered, over the pixel: so the mean of
- * any first k passes is unbiased. Any such g would do; the integer nearest n / phi (the
- * golden ratio) spreads the sub-pixels a stopped render has taken across the pixel. Other
+/* sample_order.h (bench, chapter 1): which sample each pass of a render takes of each pixel,
+ * so that a render stopped early is unbiased (docs/chapter2.md). On sub-pixels sample s
+ * looks through cell s (pixel_sampling.h), so passes 0, 1, ... stopped at k < n would cover
+ * the top k/n of every pixel. Instead each pixel starts at its own first sample f, uniform
+ * in [0, n) from a generator of the pixel's that no sample uses, and pass j takes sample
+ * ((f + j) mod n) g mod n, g the integer nearest n / phi (the golden ratio) that shares no
+ * factor with n: each pass's sample is uniform over the cells, so over the pixel, the n
+ * passes take each sample once, and that g spreads a stopped render's cells. Other
  * placements (and chapter 1's pixel centres) take sample j at pass j.
  */
 #ifndef SAMPLE_ORDER_H

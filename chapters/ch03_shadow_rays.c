@@ -1,13 +1,11 @@
 /* ch03_shadow_rays.c (chapter 3): shadow rays (report §3.7, eq. 21; Figure 11).
  *
- * New concepts (lib/): area_light (uniform sampling of the lights' area, and the
- * direct light of eq. 21 with M shadow rays), path_direct (the path tracer with them).
- *
- * The experiment (docs/chapter3.md): Figure 11, 1 against 30 shadow rays; Figure 8 again
- * as the report rendered it, with shadow rays (chapter 2's finds light only by hitting
- * the lamp); a sweep of M from 0 (chapter 2's estimator) to 30 on a quarter-size image,
- * where more shadow rays stop paying for themselves, and what it measured, in words.
- * Every M estimates the same image, so one reference serves them all.
+ * New concepts (lib/): area_light (uniform sampling of the lights' area, and the direct
+ * light of eq. 21 with M shadow rays), path_direct (the path tracer with them). The
+ * experiment (docs/chapter3.md): Figure 11, 1 against 30 shadow rays; Figure 8 as the
+ * report rendered it, with shadow rays; a sweep of M from 0 (chapter 2's estimator) to 30
+ * on a quarter-size image, where more shadow rays stop paying, and what it measured, in
+ * words. Every M estimates the same image, so one reference serves them all.
  */
 #include <stdio.h>
 

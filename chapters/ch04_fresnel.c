@@ -1,16 +1,11 @@
 /* ch04_fresnel.c (chapter 4): Fresnel glass and ray depth (report §3.5.1-3.5.2, §4.4; Figure 9).
  *
- * New concepts (lib/): fresnel (the exact Fresnel reflectance, eqs. 3-5, with the
- * labels R_s and R_p corrected), chosen in glass.c by the path settings. The perfect
- * mirror, Snell's law with total internal reflection, and Schlick's approximation
- * (eqs. 2, 6-7) came in chapter 1; the path tracer's glass has used Schlick since
- * chapter 2.
- *
- * The experiment (docs/chapter4.md): Figure 9, depth 3 against 8, with the report's red
- * square enlarged and each image's mean radiance, where the bias of cutting paths short
- * shows; then Schlick against exact Fresnel: (a) their reflectance curves, (b) the cost
- * of one evaluation, (c) the room with each, rendered with the same random numbers. No
- * Russian roulette in the panels (chapter 6).
+ * New concepts (lib/): fresnel (the exact reflectance, eqs. 3-5, the labels R_s and R_p
+ * corrected), chosen in glass.c by the path settings; Snell's law and Schlick (eqs. 2,
+ * 6-7) came in chapter 1. The experiment (docs/chapter4.md): Figure 9, depth 3 against 8,
+ * with the report's red square enlarged and each image's mean radiance, where cutting
+ * paths short shows; then Schlick against exact Fresnel: (a) their curves, (b) the cost
+ * of one evaluation, (c) the room with each, from the same random numbers. No roulette.
  */
 #include <stdio.h>
 
@@ -113,25 +108,32 @@ static int angles_with_critical(double step, double *angles)
     return count;
 }
 
-/* (a) The reflectance curves: exact and Schlick, entering glass and leaving it. The
- * table every 5 degrees, printed and as a CSV; the plot every half degree, Schlick's
- * curves dashed. */
+/* Glass's reflectance at `degrees` of incidence: exact and Schlick entering it, then
+ * exact and Schlick leaving it. */
+static void reflectances(double degrees, double r[4])
+{
+    double cos_i = cos(degrees * PI / 180.0);
+    r[0] = fresnel_reflectance(cos_i, 1.0, GLASS_IOR);
+    r[1] = schlick_reflectance(cos_i, 1.0, GLASS_IOR);
+    r[2] = fresnel_reflectance(cos_i, GLASS_IOR, 1.0);
+    r[3] = schlick_reflectance(cos_i, GLASS_IOR, 1.0);
+}
+
+/* (a) The reflectance curves. The table every 5 degrees, printed and as a CSV, with
+ * Schlick's difference from exact; the plot every half degree, Schlick's curves dashed. */
 static void fresnel_curves(const Options *options)
 {
-    double angles[200], r[4][200], table[24][7];
+    double angles[200], table[24][7], r[4];
     int count = angles_with_critical(5.0, angles);
     printf("\nglass reflectance R (n = %.1f), Schlick minus exact; the critical angle "
            "leaving glass is %.2f degrees:\n", GLASS_IOR, snell_critical_angle(GLASS_IOR, 1.0) * 180.0 / PI);
     printf("  angle   entering: exact  Schlick  differ.   leaving: exact  Schlick  differ.\n");
     for (int i = 0; i < count; i++) {
-        double cos_i = cos(angles[i] * PI / 180.0), *t = table[i];
+        reflectances(angles[i], r);
+        double *t = table[i];
         t[0] = angles[i];
-        t[1] = fresnel_reflectance(cos_i, 1.0, GLASS_IOR);
-        t[2] = schlick_reflectance(cos_i, 1.0, GLASS_IOR);
-        t[4] = fresnel_reflectance(cos_i, GLASS_IOR, 1.0);
-        t[5] = schlick_reflectance(cos_i, GLASS_IOR, 1.0);
-        t[3] = t[2] - t[1];
-        t[6] = t[5] - t[4];
+        t[1] = r[0], t[2] = r[1], t[3] = r[1] - r[0];
+        t[4] = r[2], t[5] = r[3], t[6] = r[3] - r[2];
         printf("  %5.2f            %.4f   %.4f  %+.4f            %.4f   %.4f  %+.4f\n", t[0],
                t[1], t[2], t[3], t[4], t[5], t[6]);
     }
@@ -144,17 +146,17 @@ static void fresnel_curves(const Options *options)
     const char *labels[4] = {"exact, entering glass", "Schlick, entering glass",
                              "exact, leaving glass", "Schlick, leaving glass"};
     const Vec3 colours[4] = {{0.8, 0.0, 0.0}, {1.0, 0.5, 0.0}, {0.0, 0.0, 0.9}, {0.0, 0.6, 0.8}};
+    double curves[4][200];
     count = angles_with_critical(0.5, angles);
-    PlotSeries series[4];
-    for (int c = 0; c < 4; c++) {
-        double n_i = c < 2 ? 1.0 : GLASS_IOR, n_t = c < 2 ? GLASS_IOR : 1.0;
-        for (int i = 0; i < count; i++) {
-            double cos_i = cos(angles[i] * PI / 180.0);
-            r[c][i] = c % 2 ? schlick_reflectance(cos_i, n_i, n_t) : fresnel_reflectance(cos_i, n_i, n_t);
-        }
-        series[c] = (PlotSeries){.label = labels[c], .x = angles, .y = r[c], .count = count,
-                                 .colour = colours[c], .dashed = c % 2};
+    for (int i = 0; i < count; i++) {
+        reflectances(angles[i], r);
+        for (int c = 0; c < 4; c++)
+            curves[c][i] = r[c];
     }
+    PlotSeries series[4];
+    for (int c = 0; c < 4; c++)
+        series[c] = (PlotSeries){.label = labels[c], .x = angles, .y = curves[c], .count = count,
+                                 .colour = colours[c], .dashed = c % 2};
     Plot plot = {{"angle of incidence (degrees)", PLOT_LINEAR, 0.0, 90.0, 15.0},
                  {"reflectance R", PLOT_LINEAR, 0.0, 1.0, 0.25}, series, 4, 0.0};
     experiment_write_plot(options, "ch04_fresnel_curve", &plot, 800, 450,

@@ -2,12 +2,10 @@
  *
  * New concepts (lib/): oren_nayar (eqs. 13-14 with their corrections:
  * A = 1 - sigma^2 / (2 (sigma^2 + 0.33)), and tan(beta) where the report has sin(beta)).
- *
- * The experiment (docs/chapter5.md), on scenes/oren_nayar.scene: a rough sphere (material
- * `rough`) beside a Lambertian one, lit from the viewer's direction. Figure 10; a sweep of
- * sigma on a quarter-size image; and the number that says "flat": each sphere's
- * brightness at 80% of its radius over that at its centre, on the references, beside what
- * eq. 13 predicts for a light at the eye.
+ * The experiment (docs/chapter5.md), on scenes/oren_nayar.scene, a rough sphere beside a
+ * Lambertian one lit from the viewer: Figure 10; a sweep of sigma on a quarter-size image;
+ * and the number that says "flat", each sphere's brightness at 80% of its radius over
+ * that at its centre, on the references, beside eq. 13's for a light at the eye.
  */
 #include <stdio.h>
 

@@ -1,14 +1,11 @@
 /* ch06_russian_roulette.c (chapter 6): Russian roulette (report §2.2, §4.7; Figure 12).
  *
- * New concepts (lib/): roulette (a path survives each diffuse hit with probability
- * alpha, its weight divided by alpha; alpha is the SURVIVAL probability, the report's
- * erratum), path_roulette (the report's path tracer: shadow rays and roulette).
- *
- * The experiment (docs/chapter6.md): Figure 12, alpha = 0.01 against 0.5; a sweep of alpha
- * and, last, roulette with bounded weights (roulette.h) on a quarter-size image, where the
- * image's mean stays the reference's (roulette is unbiased) while time and variance move.
- * Below alpha = rho^2 of the brightest diffuse surface the variance is infinite: such rows
- * are marked and not ranked. Depth 64, so that the limit almost never acts.
+ * New concepts (lib/): roulette (a path survives each diffuse hit with probability alpha,
+ * its weight divided by alpha: alpha is the SURVIVAL probability, the report's erratum),
+ * path_roulette (the report's path tracer). The experiment (docs/chapter6.md): Figure 12,
+ * alpha = 0.01 against 0.5; a sweep of alpha and bounded weights on a quarter-size image,
+ * the image's mean staying the reference's while time and variance move. Below alpha =
+ * rho^2 of the brightest surface the variance is infinite: such rows are marked, not ranked.
  */
 #include <stdio.h>
 

@@ -1,17 +1,12 @@
-/* ch07_final.c (chapter 7): the final image and the benchmarks (report §4.2, §4.8, §5; Figure 7,
- * Table 1).
+/* ch07_final.c (chapter 7): the final image and the benchmarks (report §4.2, §4.8, §5;
+ * Figure 7, Table 1).
  *
- * New concepts (lib/): ways to spend the samples where the error is: mis, mirror_light
- * (the lamp's image in the mirror wall as a light of its own), direct_light (both, at a
- * diffuse vertex), sphere_guide (bounces aimed at the mirror and glass spheres), sobol
- * (stratified pairs across a pixel's samples), and path_final, the path tracer with them
- * all and roulette with bounded weights.
- *
- * The experiment (docs/chapter7.md): Figure 7 with every lever on; the levers one by one
- * at equal samples on a quarter-size image; Table 1's six settings beside the report's
- * minutes; the convergence plot of Table 1's estimators. Every setting estimates the same
- * image, so one reference serves all; Table 1's alpha = 0.25 and 0.01 are below the
- * room's rho^2, of infinite variance (chapter 6), and marked.
+ * New concepts (lib/): mis, mirror_light (the lamp's image in the mirror wall as a light),
+ * direct_light (both, at a diffuse vertex), sphere_guide (bounces aimed at the spheres),
+ * sobol (stratified pairs across a pixel's samples), path_final (all of them, roulette with
+ * bounded weights). The experiment (docs/chapter7.md): Figure 7 with every lever on; the
+ * levers one by one on a quarter-size image; Table 1 beside the report's minutes; the
+ * convergence plot of Table 1's estimators. Every setting estimates one image.
  */
 #include <stdio.h>
 

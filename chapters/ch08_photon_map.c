@@ -1,17 +1,12 @@
-/* ch08_photon_map.c (chapter 8): caustics from a photon map, made progressive, on top of chapter 7's
- * final path tracer (beyond the report: its §5 names photon mapping, its reference [9], as
- * the way to caustics and shorter renders).
+/* ch08_photon_map.c (chapter 8): caustics from a photon map, made progressive, on top of
+ * chapter 7's final path tracer (beyond the report: its §5 names photon mapping).
  *
- * New concepts (lib/): point_grid (points near a place, fast), photon (the caustic map
- * L S+ D), photon_estimate (radiance from the photons' density, the progressive radius),
- * path_caustics (chapter 7's final path tracer plus the map). The bench renders it in
- * independent passes (bench/ppm.h).
- *
- * The experiment (docs/chapter8.md): chapter 7's final estimator against the same with
- * photon-mapped caustics at equal processor time, with crops of the caustic under the
- * glass sphere and of the lamp's image in the mirror wall; then, on a quarter-size image,
- * each setting over SEEDS seeds, the error against time split into bias and variance
- * (bench/bias_variance.h), as a table and a log-log plot.
+ * New concepts (lib/): point_grid, photon (the caustic map L S+ D), photon_estimate
+ * (radiance from the photons' density, the progressive radius), path_caustics (chapter 7's
+ * final path tracer plus the map); the bench renders it in passes (bench/ppm.h). The
+ * experiment (docs/chapter8.md): both at equal processor time, with crops of the caustic
+ * under the glass sphere and of the lamp's image in the mirror; then, on a quarter-size
+ * image, each setting over SEEDS seeds, the error against time as bias and variance.
  */
 #include <stdio.h>
 #include <stdlib.h>
