@@ -247,8 +247,7 @@ void experiment_write_figure(const Options *options, const char *name, const Ima
 }
 
 #if CHAPTER >= 4
-void experiment_write_plot(const Options *options, const char *name, const Plot *plot,
-                           int width, int height, const char *caption)
+Image experiment_plot(const Plot *plot, int width, int height)
 {
     Font font;
     load_font(&font);
@@ -256,6 +255,13 @@ void experiment_write_plot(const Options *options, const char *name, const Plot 
     font_free(&font);
     if (!image.pixels)
         cli_fail(1, "out of memory for a %d x %d plot", width, height);
+    return image;
+}
+
+void experiment_write_plot(const Options *options, const char *name, const Plot *plot,
+                           int width, int height, const char *caption)
+{
+    Image image = experiment_plot(plot, width, height);
     experiment_write_figure(options, name, &image, &caption, 1, 1.0);
     image_free(&image);
 }

@@ -107,6 +107,10 @@ void experiment_write_panel(const Options *options, const char *name, const Rend
 void experiment_exit_if_interrupted(const RenderResult *result, const char *saved);
 
 #if CHAPTER >= 4
+/* The plot drawn on a width x height image (exit 1 without the font or memory), to show
+ * as a panel of a figure (experiment_write_figure). */
+Image experiment_plot(const Plot *plot, int width, int height);
+
 /* The plot drawn on a width x height image, written as the figure NAME.png with its
  * caption (exit 1 without the font or memory). */
 void experiment_write_plot(const Options *options, const char *name, const Plot *plot,
