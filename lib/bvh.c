@@ -437,10 +437,10 @@ static double primitive_intersect(const Bvh *bvh, BvhPrimitives p, int entry, Ra
     return sphere_intersect(&p.spheres[index - p.triangle_count], ray, 0.0, tmax);
 }
 
-/* Both queries: any_hit stops at the first hit found. */
+/* Both queries: any_hit stops at the first hit found. A non-finite ray hits nothing. */
 static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int any_hit)
 {
-    if (bvh->node_count == 0)
+    if (bvh->node_count == 0 || !vec3_is_finite(ray.origin) || !vec3_is_finite(ray.dir))
         return -1;
     BoxRay r;
     box_ray_axis(&r, 0, ray.origin.x, ray.dir.x, bvh->centre[0], bvh->scale);

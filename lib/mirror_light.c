@@ -6,15 +6,25 @@
 #include "diffuse.h"
 #include "mirror.h"
 
-/* Two triangles share a plane when their normals are parallel (either orientation) and
- * the offsets agree, to a tolerance relative to the scene's coordinates. */
-#define PLANE_TOLERANCE 1e-9
+/* A triangle lies in a plane when their normals are parallel (either orientation) and
+ * its v0 has the plane's offset, both to the rounding of the numbers compared: the sine
+ * of the angle between the normals, and the offsets against the largest term n_i v_i of
+ * the dot products that gave them. Nothing absolute: the room scaled by 2^-40 keeps its
+ * planes apart as the room does (docs/chapter7.md). */
+#define PLANE_TOLERANCE 1e-12
+
+/* The largest term of n . v, what the rounding of the dot product is relative to. */
+static double largest_term(Vec3 n, Vec3 v)
+{
+    return vec3_max_abs(vec3_mul(n, v));
+}
 
 static int in_plane(const MirrorPlane *plane, const Triangle *triangle)
 {
     double offset = vec3_dot(plane->normal, triangle->v0);
-    return fabs(fabs(vec3_dot(plane->normal, triangle->normal)) - 1.0) < PLANE_TOLERANCE &&
-           fabs(offset - plane->offset) < PLANE_TOLERANCE * (1.0 + fabs(plane->offset));
+    double terms = max2(plane->largest_term, largest_term(plane->normal, triangle->v0));
+    return vec3_length(vec3_cross(plane->normal, triangle->normal)) < PLANE_TOLERANCE &&
+           fabs(offset - plane->offset) <= PLANE_TOLERANCE * terms;
 }
 
 static int is_mirror_triangle(const Scene *scene, int triangle)
@@ -42,7 +52,8 @@ int mirror_light_find_planes(const Scene *scene, MirrorPlanes *mirrors)
         for (int p = 0; p < mirrors->count && !known; p++)
             known = in_plane(&mirrors->planes[p], triangle);
         if (!known) {
-            MirrorPlane plane = {triangle->normal, vec3_dot(triangle->normal, triangle->v0)};
+            MirrorPlane plane = {triangle->normal, vec3_dot(triangle->normal, triangle->v0),
+                                 largest_term(triangle->normal, triangle->v0)};
             mirrors->planes[mirrors->count++] = plane;
         }
     }

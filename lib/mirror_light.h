@@ -13,10 +13,12 @@
 
 #include "area_light.h"
 
-/* A plane n . p = offset holding mirror triangles. */
+/* A plane n . p = offset holding mirror triangles; largest_term is the largest |n_i p_i|
+ * of the point p it was found from, the size the offset's rounding is relative to. */
 typedef struct {
     Vec3 normal;
     double offset;
+    double largest_term;
 } MirrorPlane;
 
 typedef struct {

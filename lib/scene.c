@@ -108,23 +108,24 @@ int scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit)
     if (primitive < 0)
         return 0;
     hit->t = tmax;
-    hit->point = ray_at(ray, tmax);
+    /* o + t d, put back on the surface from the surface's own numbers (ray.h). */
+    Vec3 p = ray_at(ray, tmax);
     if (primitive >= scene->triangle_count) {
         const Sphere *sphere = &scene->spheres[primitive - scene->triangle_count];
-        hit->normal = sphere_normal(sphere, hit->point);
+        hit->normal = sphere_normal(sphere, p);
+        hit->point = vec3_add_scaled(sphere->center, hit->normal, sphere->radius);
         hit->material = sphere->material;
         hit->triangle = -1;
         hit->scale = vec3_max_abs(sphere->center) + sphere->radius;
     } else {
         const Triangle *triangle = &scene->triangles[primitive];
-        hit->normal = triangle->normal;
+        Vec3 n = triangle->normal, s = vec3_sub(p, triangle->v0);
+        hit->normal = n;
+        hit->point = vec3_add_scaled(p, n, -vec3_dot(s, n));
         hit->material = triangle->material;
         hit->triangle = primitive;
-        hit->scale = max2(vec3_max_abs(triangle->v0),
-                          max2(vec3_max_abs(vec3_add(triangle->v0, triangle->e1)),
-                               vec3_max_abs(vec3_add(triangle->v0, triangle->e2))));
+        hit->scale = fabs(n.x * s.x) + fabs(n.y * s.y) + fabs(n.z * s.z);
     }
-    hit->scale = max2(hit->scale, vec3_max_abs(ray.origin));
     return 1;
 }
 

@@ -45,8 +45,8 @@ typedef struct {
     Vec3 normal;  /* unit geometric normal of the front side (outward on spheres) */
     int material;
     int triangle; /* index of the triangle hit, or -1 for a sphere */
-    double scale; /* the largest coordinate of the ray's origin and the surface hit: the
-                     offset of a ray leaving the point (ray.h) */
+    double scale; /* what the point's error along the normal is relative to besides its
+                     own coordinates: the surface's numbers (ray.h) */
 } Hit;
 
 void scene_init(Scene *scene);

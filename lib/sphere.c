@@ -29,5 +29,5 @@ double sphere_intersect(const Sphere *sphere, Ray ray, double tmin, double tmax)
 
 Vec3 sphere_normal(const Sphere *sphere, Vec3 p)
 {
-    return vec3_scale(vec3_sub(p, sphere->center), 1.0 / sphere->radius);
+    return vec3_normalize(vec3_sub(p, sphere->center));
 }

@@ -19,7 +19,7 @@ typedef struct {
 /* Exercise 1.1: the smallest t in (tmin, tmax) where the ray meets the sphere, or INFINITY. */
 double sphere_intersect(const Sphere *sphere, Ray ray, double tmin, double tmax);
 
-/* Outward unit normal at surface point p. */
+/* Outward unit normal at surface point p (or at the surface point nearest p). */
 Vec3 sphere_normal(const Sphere *sphere, Vec3 p);
 
 #endif

@@ -476,6 +476,28 @@ static void test_empty_and_single(void **state)
     scene_free(&one);
 }
 
+/* A ray that is not a ray -- a NaN or infinite direction or origin, as a direction
+ * normalised from a zero vector gives -- hits nothing, in the room and in a tree of
+ * one node with empty child slots: it must not visit a slot that holds no child (the
+ * slab tests, all NaN, did not rule any out, and the traversal read before the nodes). */
+static void test_rays_that_are_not_rays(void **state)
+{
+    Scene room;
+    char error[256];
+    assert_int_equal(scene_load("scenes/room.scene", &room, error, sizeof error), 0);
+    Scene one = scene_of_triangles(1, same_triangle);
+    const Ray rays[] = {{vec3(0, 0, 0), vec3(NAN, NAN, NAN)}, {vec3(NAN, 0, 0), vec3(0, 0, 1)},
+                        {vec3(0, 0, 0), vec3(INFINITY, 0, 0)}, {vec3(1, -INFINITY, 0), vec3(0, 1, 0)}};
+    for (int i = 0; i < 4; i++) {
+        Hit hit;
+        assert_int_equal(scene_intersect(&room, rays[i], INFINITY, &hit), 0);
+        assert_int_equal(scene_intersect(&one, rays[i], INFINITY, &hit), 0);
+        assert_false(bvh_occluded(&room.bvh, primitives_of(&room), rays[i], 1.0));
+    }
+    scene_free(&one);
+    scene_free(&room);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -490,6 +512,7 @@ int main(void)
         cmocka_unit_test(test_common_centre_is_one_leaf),
         cmocka_unit_test(test_nest_has_bounded_depth),
         cmocka_unit_test(test_empty_and_single),
+        cmocka_unit_test(test_rays_that_are_not_rays),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -91,6 +91,36 @@ static void test_planes_are_shared_and_distinct(void **state)
     scene_free(&scene);
 }
 
+/* Planes are told apart relative to the numbers compared, at every scale: the room's
+ * mirror wall, a parallel mirror across the room (where its green wall is) and a mirror
+ * with decimal corners in a tilted plane are three planes, each quad's two triangles
+ * one, in the room scaled by 2^-40, 1e-12, 1, 1e12 and 2^60. A tolerance with an
+ * absolute part, 1e-9 (1 + |offset|), merged the two walls in rooms below about 1e-10. */
+static void test_planes_at_every_scale(void **state)
+{
+    const double scales[] = {0x1p-40, 1e-12, 1.0, 1e12, 0x1p60};
+    for (int i = 0; i < 5; i++) {
+        double s = scales[i];
+        Scene scene;
+        scene_init(&scene);
+        Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
+        int m = scene_add_material(&scene, mirror);
+        add_quad(&scene, vec3(13 * s, 0, -5 * s), vec3(13 * s, 0, 5 * s), vec3(10 * s, 6 * s, 5 * s),
+                 vec3(10 * s, 6 * s, -5 * s), m);
+        add_quad(&scene, vec3(-3 * s, 0, -5 * s), vec3(-3 * s, 0, 5 * s), vec3(0, -6 * s, 5 * s),
+                 vec3(0, -6 * s, -5 * s), m);
+        Vec3 corner = vec3(2.3 * s, 0.7 * s, -1.9 * s), u = vec3(1.1 * s, 0.3 * s, 0.2 * s),
+             v = vec3(-0.2 * s, 0.9 * s, 1.3 * s);
+        add_quad(&scene, corner, vec3_add(corner, u), vec3_add(vec3_add(corner, u), v),
+                 vec3_add(corner, v), m);
+        MirrorPlanes planes = planes_of(&scene);
+        print_message("    scale %g: %d planes\n", s, planes.count);
+        assert_int_equal(planes.count, 3);
+        mirror_planes_free(&planes);
+        scene_free(&scene);
+    }
+}
+
 /* A 0.4 x 0.6 lamp (Le = 2) at height 1 around x = 0.5, tilted to face down and
  * along x (so that its image's normal differs from its own), and the mirror x = 1
  * (reflectance R) as a big quad; or, `moved`, no mirror and the lamp reflected across
@@ -304,6 +334,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_planes_of_the_room),
         cmocka_unit_test(test_planes_are_shared_and_distinct),
+        cmocka_unit_test(test_planes_at_every_scale),
         cmocka_unit_test(test_image_is_the_lamp_moved),
         cmocka_unit_test(test_same_light_as_hitting_the_lamp_in_the_room),
         cmocka_unit_test(test_where_the_image_gives_nothing),

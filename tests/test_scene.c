@@ -133,8 +133,8 @@ static void test_hit_from_inside_sphere(void **state)
 /* A triangle-only scene: one large awkwardly oriented square, once off the origin
  * and aimed at uniformly, once through the origin and aimed at points 1e-12 to 1
  * (times the scale, log-uniform) from it -- where an offset relative to |p| alone
- * would fail, because a hit point's rounding error is set by the eye's and the
- * square's coordinates, not by |p| (ray.h). From 2000 hit points per case, seen from
+ * would fail, because a hit point's rounding error is set by the square's numbers
+ * along its normal, not by |p| (ray.h). From 2000 hit points per case, seen from
  * 10 units away on either side, rays spawned into random directions of either
  * hemisphere must hit nothing: the only surface is the plane they left. */
 static void test_no_acne_on_triangles(void **state)
@@ -485,6 +485,97 @@ static void test_far_object_changes_nothing(void **state)
     scene_free(&room);
 }
 
+/* However far the ray came from, its hit point is put back on the surface (scene.h),
+ * so what starts there behaves as from a near camera: a floor with a wall standing on
+ * it and a ball beside, seen from 1e3, 1e8 and 1e11 away (the pulled-back cameras of
+ * the metamorphic tests), 400 points of each per distance. From the floor: a shadow ray
+ * to a lamp above is not blocked by the floor (acne, where the point kept the rounding
+ * of an origin 1e8 away), and a ray spawned towards the wall meets it (it started 10
+ * units up when the offset grew with the origin, and a mirror floor's reflections
+ * vanished). From the ball: outwards nothing, inwards its far side, and from its lit
+ * side the lamp, unblocked. */
+static void test_far_camera(void **state)
+{
+    Rng rng = rng_for_sample(37, 0, 0);
+    const double distances[] = {1e3, 1e8, 1e11};
+    Scene scene;
+    scene_init(&scene);
+    int m = add_material(&scene, MATERIAL_LAMBERT, 0);
+    add_square(&scene, vec3(0.7, -0.3, 0), vec3(1, 0, 0), vec3(0, 1, 0), 5, m);  /* 0, 1 */
+    add_square(&scene, vec3(0.31, -0.3, 1), vec3(0, 1, 0), vec3(0, 0, 1), 1, m); /* 2, 3 */
+    Sphere ball = {vec3(2.9, 1.7, 0.8), 0.75, m};
+    scene_add_sphere(&scene, ball);
+    assert_int_equal(scene_prepare(&scene), 0);
+    Vec3 lamp = vec3(1.5, -0.2, 3.9), down = vec3(0, 0, -1);
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 800; k++) {
+            int on_ball = k % 2;
+            Vec3 target = on_ball ? vec3_add_scaled(ball.center, random_unit_vector(&rng), ball.radius)
+                                  : vec3(0.35 + rng_uniform(&rng), -1.0 + 1.4 * rng_uniform(&rng), 0);
+            Vec3 away = on_ball ? vec3_normalize(vec3_sub(target, ball.center)) : vec3(0, 0, 1);
+            Vec3 eye = vec3_add_scaled(target, random_direction_along(&rng, away), distances[i]);
+            Hit hit, next;
+            if (!scene_intersect(&scene, ray_through(eye, target), INFINITY, &hit) ||
+                (on_ball ? hit.triangle >= 0 : hit.triangle < 0 || hit.triangle > 1))
+                continue; /* something else is in the way */
+            int lit = vec3_dot(vec3_sub(lamp, hit.point), hit.normal) > 0;
+            if (lit && scene_occluded(&scene, hit.point, hit.normal, lamp, down))
+                fail_msg("camera %g away: the %s shadows itself (acne)", distances[i],
+                         on_ball ? "ball" : "floor");
+            if (!on_ball) {
+                Vec3 dir = vec3_normalize(vec3(-1, 0.2 * rng_uniform(&rng), 0.3 * rng_uniform(&rng)));
+                if (!scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale),
+                                     INFINITY, &next) || next.triangle < 2)
+                    fail_msg("camera %g away: from the floor, the wall was missed", distances[i]);
+                continue;
+            }
+            Vec3 out = random_direction_along(&rng, hit.normal), in = vec3_neg(out);
+            if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, out, hit.scale), INFINITY,
+                                &next) && next.triangle < 0)
+                fail_msg("camera %g away: an outward ray hit the ball again", distances[i]);
+            if (!scene_intersect(&scene, ray_spawn(hit.point, hit.normal, in, hit.scale), INFINITY,
+                                 &next) || next.triangle >= 0 ||
+                !(next.t > ball.radius * vec3_dot(in, vec3_neg(hit.normal))))
+                fail_msg("camera %g away: an inward ray missed the ball's far side", distances[i]);
+        }
+    scene_free(&scene);
+}
+
+/* A floor quad 2e12 wide under a ceiling 1 above: rays from between them hit the floor
+ * near the origin and, spawned upwards, must meet the ceiling at t = 1 / cos(theta). The
+ * offset of a point follows the numbers that place it on the floor along the normal (its
+ * height, -5), not the floor's far corners: scaled by them, the rays started 100 units up,
+ * above the ceiling, and the room with its floor extended far beyond the walls lost its
+ * bounced light. */
+static void test_huge_floor(void **state)
+{
+    Rng rng = rng_for_sample(38, 0, 0);
+    Scene scene;
+    scene_init(&scene);
+    int m = add_material(&scene, MATERIAL_LAMBERT, 0);
+    add_quad(&scene, vec3(-1e12, -1e12, -5), vec3(1e12, -1e12, -5), vec3(1e12, 1e12, -5),
+             vec3(-1e12, 1e12, -5), m);
+    add_square(&scene, vec3(0.5, 0.5, -4), vec3(1, 0, 0), vec3(0, 1, 0), 20, m);
+    assert_int_equal(scene_prepare(&scene), 0);
+    for (int k = 0; k < 2000; k++) {
+        Vec3 target = vec3(3 * rng_uniform(&rng) - 1, 3 * rng_uniform(&rng) - 1, -5);
+        Vec3 eye = vec3_add_scaled(target, random_direction_along(&rng, vec3(0, 0, 1)), 0.9);
+        Hit hit, ceiling;
+        assert_true(scene_intersect(&scene, ray_through(eye, target), INFINITY, &hit));
+        assert_true(hit.triangle < 2);
+        Vec3 dir;
+        do
+            dir = random_direction_along(&rng, vec3(0, 0, 1));
+        while (dir.z < 0.5);
+        if (!scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY,
+                             &ceiling) || ceiling.triangle < 2)
+            fail_msg("from the floor at (%g, %g), up: the ceiling was missed", hit.point.x,
+                     hit.point.y);
+        assert_close(ceiling.t, 1.0 / dir.z, 1e-9);
+    }
+    scene_free(&scene);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -499,6 +590,8 @@ int main(void)
         cmocka_unit_test(test_light_list),
         cmocka_unit_test(test_scaled_room),
         cmocka_unit_test(test_far_object_changes_nothing),
+        cmocka_unit_test(test_far_camera),
+        cmocka_unit_test(test_huge_floor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

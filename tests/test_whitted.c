@@ -276,8 +276,8 @@ static void mirror_scene(Scene *scene)
  * q' = (4 - q.x, q.y, 0) of floor point q, the ray reflects onto q, and the radiance
  * is c times the radiance seen directly at q (which is the closed form, in any viewing
  * direction). One bounce and one shadow ray. To 1e-12 the test must know one more
- * thing: the reflected ray starts off the mirror by RAY_OFFSET times the largest
- * coordinate behind the hit (ray.h: the mirror's corners, 2), towards the room, so it is
+ * thing: the reflected ray starts off the mirror by RAY_OFFSET times the hit point's
+ * largest coordinate (ray.h: its x, 2), towards the room, so it is
  * the reflected ray moved by that much along -x, and lands that much short of q;
  * ignoring it is a relative error of about 1e-10. */
 static void test_mirror_shows_c_times_mirrored_point(void **state)

@@ -416,32 +416,38 @@ static void test_one_reference_for_two_programs(void **state)
 
 #if CHAPTER >= 8
 /* Chapter 8's photon panel renders passes for the processor time its path-traced panel
- * took. SIGINT well into them, before their end (0.7 times as long after the
- * path-traced panel is written as that took from the start), saves the image of the
- * passes completed: at least one pass of 8 samples per pixel. */
+ * took. SIGINT well into them, before their end, saves the image of the passes
+ * completed: at least one pass of 8 samples per pixel. "Well into" is a moment on a
+ * clock that other programs share: 0.7 times as long after the path-traced panel is
+ * written as that took from the start, and where that came before the first pass had
+ * ended (nothing saved, as it must), again later: 0.85, then 0.95 times. */
 static void test_sigint_saves_the_photon_passes(void **state)
 {
     char folder[600], log[700], arguments[800], path_panel[700], saved[300];
     snprintf(folder, sizeof folder, "%s/photons", out_dir);
     snprintf(log, sizeof log, "%s.log", folder);
     snprintf(path_panel, sizeof path_panel, "%s/ch08_path.pfm", folder);
-    empty_folder(folder);
     snprintf(arguments, sizeof arguments,
              "--quiet --size 32 --spp 64 --reference-spp 8 --seed 5 --out %s", folder);
-    double began = seconds_now();
-    pid_t child = start("ch08_photon_map", arguments, log);
-    while (access(path_panel, F_OK) != 0 && seconds_now() - began < 120.0)
-        sleep_seconds(0.01);
-    double path_seconds = seconds_now() - began;
-    sleep_seconds(0.7 * path_seconds);
-    kill(child, SIGINT);
-    int status = wait_for(child);
+    const double moments[] = {0.7, 0.85, 0.95};
+    int status = 0, said = 0;
     double spp = 0.0;
-    int said = saved_when_interrupted(log, saved, sizeof saved, &spp);
-    print_message("    path-traced panel after %.2f s, SIGINT %.2f s into the photon passes: "
-                  "status %d, saved %s after %.2f samples per pixel\n", path_seconds,
-                  0.7 * path_seconds, status, said ? saved : "nothing", spp);
-    assert_int_equal(status, 130);
+    for (int attempt = 0; attempt < 3 && !said; attempt++) {
+        empty_folder(folder);
+        double began = seconds_now();
+        pid_t child = start("ch08_photon_map", arguments, log);
+        while (access(path_panel, F_OK) != 0 && seconds_now() - began < 120.0)
+            sleep_seconds(0.01);
+        double path_seconds = seconds_now() - began;
+        sleep_seconds(moments[attempt] * path_seconds);
+        kill(child, SIGINT);
+        status = wait_for(child);
+        said = saved_when_interrupted(log, saved, sizeof saved, &spp);
+        print_message("    path-traced panel after %.2f s, SIGINT %.2f s into the photon passes: "
+                      "status %d, saved %s after %.2f samples per pixel\n", path_seconds,
+                      moments[attempt] * path_seconds, status, said ? saved : "nothing", spp);
+        assert_int_equal(status, 130);
+    }
     assert_true(said);
     assert_string_equal(saved, "ch08_photon_map.pfm");
     assert_true(spp >= 8.0);
