@@ -162,19 +162,29 @@ $(BUILD)/tests/%: $(BUILD)/chapter$(FINAL)/bench/tests/%
 CHAPTER_TESTS := $(filter-out $(CHAPTER$(FINAL)_TESTS),$(ALL_TESTS))
 
 # ---- exercises (README.md, "Do the chapters yourself") ----------------------------------
-# Chapter N's exercises are the functions its lesson marks "Exercise N.k"; its grader,
-# bench/exercise/chapterN.c with grade.c and what they share, is built twice: from the
-# solution (chapter N's library), which lists the exercises and renders the references,
-# and by bench/exercise/check.sh from the student's tree (bench/exercise/student.mk).
+# Chapter N's exercises are the functions its lesson marks "Exercise N.k"; their graders,
+# bench/exercise/chapterN.c, are built into two programs: the judge (grade.c), from the
+# solution (chapter N's library), which lists the exercises, renders the references and
+# gives every verdict, and the probe (probe.c), which only computes the answers the judge
+# judges, built by bench/exercise/check.sh from the student's tree
+# (bench/exercise/student.mk) and, to hold it to the project's flags, from the solution.
 # A chapter without bench/exercise/chapterN.c has no exercises yet.
-EXERCISE_COMMON   := $(wildcard bench/exercise/grade.c bench/exercise/grading.c bench/exercise/render_check.c)
+EXERCISE_COMMON   := $(wildcard bench/exercise/grade.c bench/exercise/grading.c bench/exercise/answers.c \
+                                bench/exercise/supervise.c bench/exercise/render_check.c)
+PROBE_COMMON      := $(wildcard bench/exercise/probe.c bench/exercise/grading.c bench/exercise/answers.c \
+                                bench/exercise/render_check.c)
 EXERCISE_CHAPTERS := $(foreach n,$(CHAPTERS),$(if $(wildcard bench/exercise/chapter$(n).c),$(n)))
 EXERCISE_DIR      := $(BUILD)/exercise
+# STUDENT and ONLY reach check-exercise-chapterN's shell through its environment, never
+# pasted into its text, so that any path works (spaces, quotes, a leading dash).
 STUDENT           ?=
 ONLY              ?=
+export STUDENT ONLY
 grader_of          = $(BUILD)/chapter$(1)/bench/exercise/grade
+probe_of           = $(BUILD)/chapter$(1)/bench/exercise/probe
 grader_sources     = $(call upto,$(1),$(EXERCISE_COMMON)) bench/exercise/chapter$(1).c
-SOLUTION_GRADERS  := $(foreach n,$(EXERCISE_CHAPTERS),$(call grader_of,$(n)))
+probe_sources      = $(call upto,$(1),$(PROBE_COMMON)) bench/exercise/chapter$(1).c
+SOLUTION_GRADERS  := $(foreach n,$(EXERCISE_CHAPTERS),$(call grader_of,$(n)) $(call probe_of,$(n)))
 
 define EXERCISE_RULES
 .PHONY: exercise-chapter$(1) check-exercise-chapter$(1)
@@ -182,16 +192,20 @@ ifneq ($(filter $(1),$(EXERCISE_CHAPTERS)),)
 $(call grader_of,$(1)): $(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call grader_sources,$(1))) $(BUILD)/chapter$(1)/libmc.a
 	$$(CC) $$^ $$(LDFLAGS) $$(LIBS) -o $$@
 
+$(call probe_of,$(1)): $(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call probe_sources,$(1))) $(BUILD)/chapter$(1)/libmc.a
+	$$(CC) $$^ $$(LDFLAGS) $$(LIBS) -o $$@
+
 exercise-chapter$(1): source-chapter$(1) $(call grader_of,$(1))
 	@sh bench/exercise/exercise.sh $(1) $(BUILD)/source/chapter$(1) $(call grader_of,$(1)) $(EXERCISE_DIR)/chapter$(1)
 
 check-exercise-chapter$(1): $(call grader_of,$(1))
-	@student=$$(if $$(STUDENT),$$(STUDENT),$(EXERCISE_DIR)/chapter$(1)); \
+	@student=$$$${STUDENT:-$(EXERCISE_DIR)/chapter$(1)}; \
 	if [ ! -d "$$$$student/lib" ]; then echo "no exercise tree in $$$$student: make exercise-chapter$(1) first (or STUDENT=DIR)"; exit 2; fi; \
+	set -f; \
 	CC="$$(CC)" CFLAGS="$$(CFLAGS)" LDFLAGS="$$(LDFLAGS)" LIBS="$$(LIBS)" PKG_CFLAGS="$$(PKG_CFLAGS)" \
 	BENCH_OBJECTS="$$(addprefix $$(CURDIR)/,$(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call upto,$(1),$(BENCH_SOURCES))))" \
-	GRADER_FILES="$$(addprefix $$(CURDIR)/,$(call grader_sources,$(1)))" \
-	sh bench/exercise/check.sh $(1) "$$$$student" $(call grader_of,$(1)) $(EXERCISE_DIR)/references/chapter$(1) $$(ONLY)
+	PROBE_FILES="$$(addprefix $$(CURDIR)/,$(call probe_sources,$(1)))" \
+	sh bench/exercise/check.sh $(1) "$$$$student" $(call grader_of,$(1)) $(EXERCISE_DIR)/references/chapter$(1) $$$${ONLY:-}
 else
 exercise-chapter$(1) check-exercise-chapter$(1):
 	@echo "chapter $(1) has no exercises yet (bench/exercise/chapter$(1).c)"; exit 2

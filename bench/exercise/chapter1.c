@@ -47,7 +47,7 @@ static void grade_sphere(Grading *g)
         double near = b - half, far = b + half;
         double expected = pass > r ? INFINITY : (near > 1e-9 ? near : (far > 1e-9 ? far : INFINITY));
         Ray ray = {origin, d};
-        double t = sphere_intersect(&sphere, ray, 1e-9, INFINITY);
+        double t = ASK(g, sphere_intersect(&sphere, ray, 1e-9, INFINITY));
         if (isnan(t)) {
             grading_not_finite(g, t, "t");
             break;
@@ -113,7 +113,7 @@ static void grade_triangle(Grading *g)
             continue;
         int away = i % 5 == 4;
         Ray ray = {origin, away ? vec3_neg(d) : d};
-        double t = triangle_intersect(&tri, ray, 1e-9, INFINITY);
+        double t = ASK(g, triangle_intersect(&tri, ray, 1e-9, INFINITY));
         if (isnan(t)) {
             grading_not_finite(g, t, "t");
             break;
@@ -152,7 +152,11 @@ static void grade_camera(Grading *g)
         Rng rng = rng_for_sample(13, 1, (uint64_t)i);
         int col = (int)(rng_uniform(&rng) * width), row = (int)(rng_uniform(&rng) * height);
         double u = rng_uniform(&rng), v = rng_uniform(&rng);
-        Ray ray = camera_ray(&camera, width, height, col, row, u, v);
+        Ray ray = {vec3(0, 0, 0), vec3(0, 0, 0)};
+        if (grading_probing(g))
+            ray = camera_ray(&camera, width, height, col, row, u, v);
+        ray.origin = grading_ask_vec3(g, ray.origin);
+        ray.dir = grading_ask_vec3(g, ray.dir);
         double length = vec3_length(ray.dir);
         if (grading_not_finite(g, length, "the direction's length"))
             break;
@@ -197,7 +201,7 @@ static void grade_mirror(Grading *g)
     for (i = 0; i < TRIES && !g->failed; i++) {
         Rng rng = rng_for_sample(14, 1, (uint64_t)i);
         Vec3 n = grading_direction(&rng), d = grading_direction(&rng);
-        Vec3 r = mirror_reflect(d, n);
+        Vec3 r = ASK_VEC3(g, mirror_reflect(d, n));
         double length = vec3_length(r);
         if (grading_not_finite(g, length, "the reflected direction's length"))
             break;
@@ -235,7 +239,8 @@ static void grade_snell(Grading *g)
         double degrees = acos(cos_i) * 180.0 / PI;
         double critical = n_i > n_t ? asin(n_t / n_i) * 180.0 / PI : 90.0;
         Vec3 t = vec3(NAN, NAN, NAN);
-        int ok = snell_refract(d, n, n_i, n_t, &t);
+        int ok = ASK(g, snell_refract(d, n, n_i, n_t, &t)) != 0.0;
+        t = grading_ask_vec3(g, t);
         if (sin_t > 1.0) {
             reflected++;
             if (ok)

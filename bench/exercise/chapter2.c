@@ -32,7 +32,7 @@ static void grade_cosine_sample(Grading *g)
         Rng rng = rng_for_sample(21, 1, (uint64_t)i);
         double u1, u2;
         rng_pair(&rng, &u1, &u2);
-        Vec3 w = hemisphere_sample_cosine(u1, u2);
+        Vec3 w = ASK_VEC3(g, hemisphere_sample_cosine(u1, u2));
         double length = vec3_length(w);
         if (!(fabs(length - 1.0) < 1e-6) || !(w.z > 0.0)) {
             warp_add(&warp, i, -1, 0, u1, u2, NAN, NAN);
@@ -61,7 +61,7 @@ static void grade_cosine_pdf(Grading *g)
     for (int i = 0; i < 2000 && !g->failed; i++, checked++) {
         Rng rng = rng_for_sample(22, 1, (uint64_t)i);
         Vec3 w = grading_direction(&rng);
-        double pdf = hemisphere_pdf_cosine(w), right = w.z > 0.0 ? w.z / PI : 0.0;
+        double pdf = ASK(g, hemisphere_pdf_cosine(w)), right = w.z > 0.0 ? w.z / PI : 0.0;
         if (grading_not_finite(g, pdf, "the pdf"))
             break;
         if (w.z <= 0.0 && pdf != 0.0)
@@ -89,7 +89,7 @@ static void grade_cosine_pdf(Grading *g)
 static void grade_lambert(Grading *g)
 {
     const double rho[3] = {0.5, 0.25, 0.8};
-    Vec3 f = lambert_brdf(vec3(rho[0], rho[1], rho[2]));
+    Vec3 f = ASK_VEC3(g, lambert_brdf(vec3(rho[0], rho[1], rho[2])));
     double got[3] = {f.x, f.y, f.z};
     grading_note(g, "f(rho = (%.2f, %.2f, %.2f)) = (%.4f, %.4f, %.4f); rho / pi = (%.4f, %.4f, "
                  "%.4f)", rho[0], rho[1], rho[2], got[0], got[1], got[2], rho[0] / PI,

@@ -46,7 +46,12 @@ static void grade_light_sample(Grading *g)
         Rng rng = rng_for_sample(31, 1, (uint64_t)i);
         double u_select = rng_uniform(&rng), u1, u2;
         rng_pair(&rng, &u1, &u2);
-        LightSample s = area_light_sample(&scene, u_select, u1, u2);
+        LightSample s = {vec3(0, 0, 0), vec3(0, 0, 0), vec3(0, 0, 0)};
+        if (grading_probing(g))
+            s = area_light_sample(&scene, u_select, u1, u2);
+        s.point = grading_ask_vec3(g, s.point);
+        s.normal = grading_ask_vec3(g, s.normal);
+        s.emission = grading_ask_vec3(g, s.emission);
         Vec3 p = s.point;
         int on = fabs(p.z - 1.0) < 1e-9 && p.x >= 0.0 && p.x <= 3.0 && p.y >= 0.0 && p.y <= 1.0 &&
                  fabs(s.normal.z + 1.0) < 1e-9 && s.emission.x == 1.0;
@@ -78,7 +83,7 @@ static void grade_light_pdf(Grading *g)
     for (int i = 0; i < 200 && !g->failed; i++, checked++) {
         Rng rng = rng_for_sample(32, 1, (uint64_t)i);
         double d = 0.2 + 3.0 * rng_uniform(&rng), cos_beta = 0.05 + 0.95 * rng_uniform(&rng);
-        double pdf = area_light_pdf(&scene, d, cos_beta), right = d * d / (area * cos_beta);
+        double pdf = ASK(g, area_light_pdf(&scene, d, cos_beta)), right = d * d / (area * cos_beta);
         if (grading_not_finite(g, pdf, "the pdf"))
             break;
         if (fabs(pdf - right) <= 1e-9 * right)

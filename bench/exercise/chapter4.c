@@ -42,7 +42,8 @@ static void grade_polarised(Grading *g)
             double n_i = pairs[k][0], n_t = pairs[k][1], cos_i = cos(a * PI / 180.0);
             double s, p, swapped_s, swapped_p;
             right_fresnel(a, n_i, n_t, &s, &p);
-            double got_s = fresnel_s(cos_i, n_i, n_t), got_p = fresnel_p(cos_i, n_i, n_t);
+            double got_s = ASK(g, fresnel_s(cos_i, n_i, n_t));
+            double got_p = ASK(g, fresnel_p(cos_i, n_i, n_t));
             if (grading_not_finite(g, got_s, "R_s") || grading_not_finite(g, got_p, "R_p"))
                 break;
             if (fabs(got_s - s) <= 1e-9 && fabs(got_p - p) <= 1e-9)
@@ -53,6 +54,7 @@ static void grade_polarised(Grading *g)
             /* the same incidence seen from the other side: the indices swapped */
             double cos_other = sin_t < 1.0 ? sqrt(1.0 - sin_t * sin_t) : 0.0;
             right_fresnel(acos(cos_other) * 180.0 / PI, n_t, n_i, &swapped_s, &swapped_p);
+            double got_other_s = ASK(g, fresnel_s(cos_other, n_t, n_i));
             if (s == 1.0 && (got_s != 1.0 || got_p != 1.0))
                 grading_fail(g, "R_s = %.4f, R_p = %.4f at %d degrees from index %.2f into %.2f, "
                              "beyond the critical angle %.1f degrees: with no transmitted ray "
@@ -64,7 +66,7 @@ static void grade_polarised(Grading *g)
                              "R_s, vanishes at Brewster's angle, %.1f degrees; the report's "
                              "labels are swapped)", a, n_i, n_t, got_s, got_p, s, p, brewster);
             else if (sin_t < 1.0 && a > 0 && fabs(got_s - s) > 1e-9 && fabs(got_s - swapped_s) > 1e-9 &&
-                     fabs(got_s - fresnel_s(cos_other, n_t, n_i)) <= 1e-9 && fabs(cos_other - cos_i) > 1e-6)
+                     fabs(got_s - got_other_s) <= 1e-9 && fabs(cos_other - cos_i) > 1e-6)
                 grading_fail(g, "R_s = %.4f at %d degrees from index %.2f into %.2f, where eqs. "
                              "4-5 give %.4f: are n_i and n_t, or cos_i and cos_t, swapped?", got_s,
                              a, n_i, n_t, s);
@@ -88,7 +90,7 @@ static void grade_unpolarised(Grading *g)
         for (int a = 0; a < 90 && !g->failed; a++, checked++) {
             double n_i = pairs[k][0], n_t = pairs[k][1], cos_i = cos(a * PI / 180.0), s, p;
             right_fresnel(a, n_i, n_t, &s, &p);
-            double got = fresnel_reflectance(cos_i, n_i, n_t), want = 0.5 * (s + p);
+            double got = ASK(g, fresnel_reflectance(cos_i, n_i, n_t)), want = 0.5 * (s + p);
             if (grading_not_finite(g, got, "R"))
                 break;
             largest = fmax(largest, got);

@@ -25,7 +25,9 @@ static int roulette_trials(Grading *g, const PathSettings *settings, int segment
     for (long i = 0; i < TRIALS; i++) {
         Rng rng = rng_for_sample(61, (uint64_t)segment, (uint64_t)i);
         Vec3 after = t;
-        int goes_on = roulette_continues(settings, segment, &after, &rng);
+        int goes_on = ASK(g, roulette_continues(settings, segment, &after, &rng)) != 0.0;
+        if (goes_on)
+            after = grading_ask_vec3(g, after);
         double v[3] = {after.x, after.y, after.z};
         kept += goes_on != 0;
         for (int c = 0; c < 3; c++) {
@@ -87,7 +89,7 @@ static void grade_survival(Grading *g)
                                 {0.0, 0.0, 0.0}, {0.7, 0.7, 0.7}};
     for (int i = 0; i < (int)(sizeof throughputs / sizeof throughputs[0]) && !g->failed; i++) {
         Vec3 t = throughputs[i];
-        double got = roulette_survival_from_throughput(t);
+        double got = ASK(g, roulette_survival_from_throughput(t));
         double want = fmin(1.0, vec3_max_component(t));
         grading_note(g, "throughput (%.2f, %.2f, %.2f): survival %.4f; min(1, max) = %.4f", t.x,
                      t.y, t.z, got, want);

@@ -64,7 +64,7 @@ static void grade_density(Grading *g)
             counted += p->power.x;
         }
         double want = 0.5 / PI * counted / (PI * r * r);
-        Vec3 got = photon_estimate_radiance(&map, r, points[k], n, wo, &floor);
+        Vec3 got = ASK_VEC3(g, photon_estimate_radiance(&map, r, points[k], n, wo, &floor));
         grading_note(g, "at (%.1f, %.1f) with r = %.2f: L = %.5f (red); (rho / pi) Phi / (pi r^2) "
                      "= %.5f from %.3f W of %.3f W within r", points[k].x, points[k].y, r, got.x,
                      want, counted, all);
@@ -102,7 +102,7 @@ static void grade_radius(Grading *g)
     for (int a = 0; a < 3 && !g->failed; a++) {
         double alpha = alphas[a];
         for (int j = 1; j <= 1000 && !g->failed; j = j < 10 ? j + 1 : j * 10) {
-            double got = ppm_radius(first, alpha, j), want = first * sqrt(pow(j, alpha - 1.0));
+            double got = ASK(g, ppm_radius(first, alpha, j)), want = first * sqrt(pow(j, alpha - 1.0));
             if (grading_not_finite(g, got, "the radius") || fabs(got - want) <= 1e-12 * want)
                 continue;
             if (j > 1 && got > first)
@@ -117,8 +117,10 @@ static void grade_radius(Grading *g)
                 grading_fail(g, "pass %d's radius at alpha = %.2f is %.5f, where r_1 sqrt(j^(alpha "
                              "- 1)) = %.5f", j, alpha, got, want);
         }
-        grading_note(g, "alpha = %.2f: r_1 = %.2f, r_10 = %.4f, r_1000 = %.4f", alpha, first,
-                     ppm_radius(first, alpha, 10), ppm_radius(first, alpha, 1000));
+        double r_10 = ASK(g, ppm_radius(first, alpha, 10));
+        double r_1000 = ASK(g, ppm_radius(first, alpha, 1000));
+        grading_note(g, "alpha = %.2f: r_1 = %.2f, r_10 = %.4f, r_1000 = %.4f", alpha, first, r_10,
+                     r_1000);
     }
 }
 

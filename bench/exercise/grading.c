@@ -1,11 +1,13 @@
 /* grading.c (bench, chapter 1): verdicts, numbers and the warp test. See grading.h. */
 #include "grading.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "chi_square.h"
 #include "figure.h"
@@ -19,6 +21,46 @@ static void append(char *text, size_t size, const char *format, va_list args)
     size_t used = strlen(text);
     if (used + 1 < size)
         vsnprintf(text + used, size - used, format, args);
+}
+
+const Exercise *exercise_find(const char *id)
+{
+    for (int i = 0; i < exercise_count; i++)
+        if (strcmp(exercises[i].id, id) == 0)
+            return &exercises[i];
+    return NULL;
+}
+
+int grading_probing(const Grading *g)
+{
+    return g->writer != NULL;
+}
+
+double grading_ask(Grading *g, double value)
+{
+    if (grading_probing(g)) {
+        if (answer_put(g->writer, value) != 0) {
+            fprintf(stderr, "grade: cannot send an answer to the grader: %s\n", strerror(errno));
+            _exit(3);
+        }
+        return value;
+    }
+    if (g->next < g->answers->count)
+        return g->answers->values[g->next++];
+    grading_fail(g, "%s", g->ended);
+    return NAN;
+}
+
+Vec3 grading_ask_vec3(Grading *g, Vec3 value)
+{
+    double x = grading_ask(g, value.x), y = grading_ask(g, value.y);
+    return vec3(x, y, grading_ask(g, value.z));
+}
+
+void grading_ask_floats(Grading *g, float *values, long count)
+{
+    for (long i = 0; i < count; i++)
+        values[i] = (float)grading_ask(g, values[i]);
 }
 
 void grading_note(Grading *g, const char *format, ...)
@@ -232,6 +274,8 @@ static void marginal(const Warp *warp, int by_row, int index, double *observed, 
 int grading_warp(Grading *g, const Warp *warp, const char *what, double level, int tests,
                  const char *hint)
 {
+    if (g->failed)
+        return 0;
     int cells = warp->rows * warp->cols + 1, dof;
     double statistic = chi_square_statistic(warp->observed, warp->expected, cells, &dof);
     double p = chi_square_p_value(statistic, dof);
@@ -246,7 +290,8 @@ int grading_warp(Grading *g, const Warp *warp, const char *what, double level, i
     char picture_verdict[300];
     snprintf(picture_verdict, sizeof picture_verdict, "%s: %s", verdict,
              passed ? "passes" : "FAILS");
-    write_warp_picture(g, warp, what, picture_verdict);
+    if (!grading_probing(g))
+        write_warp_picture(g, warp, what, picture_verdict);
     if (passed)
         return 1;
     char observed_text[32], expected_text[32];

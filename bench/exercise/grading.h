@@ -2,27 +2,28 @@
  * yourself").
  *
  * An exercise is one marked function of the lesson ("Exercise N.k" in the comment that
- * documents it). `make exercise-chapterN` replaces chapter N's marked bodies by a
- * neutral one under the task; `make check-exercise-chapterN` builds the student's tree
- * with bench/exercise/grade.c and that chapter's table (bench/exercise/chapterN.c), and
- * grades each exercise in a process of its own. A grader knows the right answer (a
- * closed form, a property every right answer has, or the solution's render) and says
- * what is wrong in a student's words, computed from the test that caught it, with the
- * numbers behind it. A sampler is graded by the warp test: Pearson's chi-square
- * (chi_square.h) of its samples' histogram against the exact density integrated over
- * each cell, and a picture of both.
+ * documents it), graded by bench/exercise/chapterN.c. A grader knows the right answer (a
+ * closed form, a property every right answer has, or the solution's render) and says what
+ * is wrong in a student's words, with the numbers behind it. A sampler is graded by the
+ * warp test: Pearson's chi-square (chi_square.h) of its samples' histogram against the
+ * exact density integrated over each cell, and a picture of both.
  */
 #ifndef GRADING_H
 #define GRADING_H
 
 #include <stddef.h>
 
+#include "answers.h"
 #include "render.h"
 
 typedef struct {
     const char *id;         /* "2.1" */
-    const char *out;        /* the folder the pictures go to */
-    const char *references; /* the folder with the solution's reference renders */
+    const char *out;        /* the folder the pictures go to (the judge's) */
+    const char *references; /* the folder with the solution's reference renders (the judge's) */
+    AnswerWriter *writer;   /* the probe's: where the answers go (NULL in the judge) */
+    const AnswerReader *answers; /* the judge's: the answers that came back */
+    const char *ended;      /* the judge's: why no more came, the verdict if it asks for more */
+    long next;              /* the judge's: the next answer to read */
     int failed;
     char message[1024];     /* what is wrong (the first failure found), when failed */
     char numbers[4096];     /* the numbers behind the verdict, one line each */
@@ -44,6 +45,32 @@ typedef struct {
 /* Each chapter's table, bench/exercise/chapterN.c; the grader links one of them. */
 extern const Exercise exercises[];
 extern const int exercise_count;
+
+/* The exercise of that id, or NULL. */
+const Exercise *exercise_find(const char *id);
+
+/* Each grader runs twice, in two processes. In the student's program (the probe, probe.c)
+ * every value the student's code computes passes through ASK, which sends it to the
+ * grader built from the solution (the judge, grade.c); there the same grader runs again,
+ * ASK returning the values that came back instead of computing them, and decides. So no
+ * student code runs where the verdict is made (supervise.h). A grader computes any value
+ * of its own from a lesson function (an oracle) only in the judge:
+ * if (!grading_probing(g)). */
+
+/* Whether this is the student's program (the probe), not the grader (the judge). */
+int grading_probing(const Grading *g);
+
+/* A value the student's code computed: the probe sends it and returns it; the judge
+ * returns the one that came back, or, when none is left, fails with g->ended and
+ * returns NaN. ASK and ASK_VEC3 compute their expression in the probe only. */
+double grading_ask(Grading *g, double value);
+Vec3 grading_ask_vec3(Grading *g, Vec3 value);
+#define ASK(g, expression) grading_ask((g), grading_probing(g) ? (double)(expression) : 0.0)
+#define ASK_VEC3(g, expression) \
+    grading_ask_vec3((g), grading_probing(g) ? (expression) : vec3(0.0, 0.0, 0.0))
+
+/* `count` values in place: sent by the probe, overwritten in the judge. */
+void grading_ask_floats(Grading *g, float *values, long count);
 
 /* Append one line to the numbers behind the verdict. */
 void grading_note(Grading *g, const char *format, ...)

@@ -157,31 +157,97 @@ static PixelTest pixel_test(const RenderResult *yours, const Image *reference, c
     return t;
 }
 
+/* A count the probe sends, as a whole number the judge can hold. */
+static uint64_t ask_count(Grading *g, uint64_t count)
+{
+    double value = grading_ask(g, (double)count);
+    return value >= 0.0 && value < 1e18 ? (uint64_t)value : 0;
+}
+
+/* Whether every pixel value is finite, and every standard error also >= 0. */
+static int finite_render(const RenderResult *r)
+{
+    for (long i = 0; i < 3L * r->image.width * r->image.height; i++) {
+        float se = r->std_error.pixels[i], average = r->average_std_error.pixels[i];
+        if (!isfinite(r->image.pixels[i]) || !isfinite(se) || se < 0.0f || !isfinite(average) ||
+            average < 0.0f)
+            return 0;
+    }
+    return 1;
+}
+
+/* The probe renders with the student's code and sends the result; the judge receives it
+ * (size, pixels, standard errors, sample counts). Returns 0, or -1 after failing. */
+static int ask_render(Grading *g, const RenderCheck *check, RenderResult *yours)
+{
+    memset(yours, 0, sizeof *yours);
+    Scene scene;
+    char error[512];
+    if (load_scene(check, &scene, error, sizeof error) != 0) {
+        grading_fail(g, "the exercise's scene does not load: %s", error);
+        return -1;
+    }
+    int status = grading_probing(g) ? render_at(check, &scene, check->spp, 1, yours) : 0;
+    int width = check->width, height = (int)lround(width / camera_aspect(&scene.camera));
+    scene_free(&scene);
+    if (grading_ask(g, status) != 0.0) {
+        grading_fail(g, "out of memory while rendering");
+        return -1;
+    }
+    double width_got = grading_ask(g, yours->image.width);
+    double height_got = grading_ask(g, yours->image.height);
+    if (width_got != width || height_got != height) {
+        grading_fail(g, "the render is %g x %g pixels, where %d x %d were asked for", width_got,
+                     height_got, width, height);
+        return -1;
+    }
+    if (!grading_probing(g)) {
+        yours->image = image_new(width, height);
+        yours->std_error = image_new(width, height);
+        yours->average_std_error = image_new(width, height);
+    }
+    if (!yours->image.pixels || !yours->std_error.pixels || !yours->average_std_error.pixels) {
+        render_result_free(yours);
+        grading_fail(g, "out of memory");
+        return -1;
+    }
+    long values = 3L * width * height;
+    grading_ask_floats(g, yours->image.pixels, values);
+    grading_ask_floats(g, yours->std_error.pixels, values);
+    grading_ask_floats(g, yours->average_std_error.pixels, values);
+    yours->samples = ask_count(g, yours->samples);
+    yours->nonfinite = ask_count(g, yours->nonfinite);
+    if (!g->failed && !finite_render(yours))
+        grading_fail(g, "the render's pixels are not all finite numbers, nor its standard "
+                     "errors all >= 0");
+    if (!g->failed)
+        return 0;
+    render_result_free(yours);
+    return -1;
+}
+
 int grading_render(Grading *g, const RenderCheck *check, double level, const char *hint)
 {
+    RenderResult yours;
+    if (ask_render(g, check, &yours) != 0)
+        return 0;
+    if (grading_probing(g)) {
+        render_result_free(&yours);
+        return 1;
+    }
     char error[512], image_path[1024], se_path[1024];
     reference_paths(g->references, g->id, image_path, se_path, sizeof image_path);
     Image reference = {0, 0, NULL}, se = {0, 0, NULL};
+    int ok = 0;
     if (image_read_pfm(image_path, &reference, error, sizeof error) != 0 ||
         image_read_pfm(se_path, &se, error, sizeof error) != 0) {
-        image_free(&reference);
-        return grading_fail(g, "no reference to compare with (%s): check through make "
-                            "check-exercise-chapterN, which renders it", error);
-    }
-    Scene scene;
-    RenderResult yours;
-    int ok = 0;
-    if (load_scene(check, &scene, error, sizeof error) != 0) {
-        grading_fail(g, "the exercise's scene does not load: %s", error);
+        grading_fail(g, "no reference to compare with (%s): check through make "
+                     "check-exercise-chapterN, which renders it", error);
         goto free_reference;
-    }
-    if (render_at(check, &scene, check->spp, 1, &yours) != 0) {
-        grading_fail(g, "out of memory while rendering");
-        goto free_scene;
     }
     if (yours.image.width != reference.width || yours.image.height != reference.height) {
         grading_fail(g, "the reference has another size: render it again");
-        goto free_render;
+        goto free_reference;
     }
     grading_note(g, "rendered %d x %d pixels at %d samples per pixel; reference at %d",
                  reference.width, reference.height, check->spp, check->reference_spp);
@@ -191,7 +257,7 @@ int grading_render(Grading *g, const RenderCheck *check, double level, const cha
                      "number, a division by a zero pdf?): %s",
                      grading_count((double)yours.nonfinite, count, sizeof count),
                      grading_count((double)yours.samples, error, sizeof error), hint);
-        goto free_render;
+        goto free_reference;
     }
     double mean, mean_se, ref_mean, ref_se;
     measure_image_mean(&yours.image, &yours.average_std_error, &mean, &mean_se);
@@ -199,7 +265,7 @@ int grading_render(Grading *g, const RenderCheck *check, double level, const cha
     Image zmap = image_new(reference.width, reference.height);
     if (!zmap.pixels) {
         grading_fail(g, "out of memory");
-        goto free_render;
+        goto free_reference;
     }
     /* Under the hypothesis that the student's estimator is the solution's, a pixel's
      * standard error is the reference's times sqrt(reference_spp / spp): a pixel whose
@@ -239,11 +305,8 @@ int grading_render(Grading *g, const RenderCheck *check, double level, const cha
                      "see exercise-%s-zmap.png: %s", brightness, 100.0 * share, ptext, t.level,
                      g->id, hint);
     }
-free_render:
-    render_result_free(&yours);
-free_scene:
-    scene_free(&scene);
 free_reference:
+    render_result_free(&yours);
     image_free(&reference);
     image_free(&se);
     return ok;

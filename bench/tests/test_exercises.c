@@ -15,6 +15,8 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include "run_command.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -116,29 +118,6 @@ static const char *build_dir(void)
     return getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
 }
 
-/* Run a shell command; its output into *out (malloc'd). Returns its exit status. */
-static int run(const char *command, char **out)
-{
-    FILE *pipe = popen(command, "r");
-    assert_non_null(pipe);
-    size_t size = 0, cap = 4096;
-    char *text = malloc(cap);
-    assert_non_null(text);
-    size_t n;
-    while ((n = fread(text + size, 1, cap - size - 1, pipe)) > 0) {
-        size += n;
-        if (cap - size < 2) {
-            cap *= 2;
-            text = realloc(text, cap);
-            assert_non_null(text);
-        }
-    }
-    text[size] = '\0';
-    int status = pclose(pipe);
-    *out = text;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 /* Grade tree DIR (all of chapter N's exercises, or ONLY id) through the Makefile. */
 static int grade(int chapter, const char *dir, const char *only, char **out)
 {
@@ -147,7 +126,7 @@ static int grade(int chapter, const char *dir, const char *only, char **out)
              "env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory -s BUILD=%s "
              "check-exercise-chapter%d STUDENT=%s ONLY='%s' 2>&1",
              build_dir(), chapter, dir, only);
-    return run(command, out);
+    return run_command(command, out);
 }
 
 /* Replace the one occurrence of `from` in `path` by `to`; 0, or -1 when `from` is not
