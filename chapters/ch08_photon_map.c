@@ -20,7 +20,6 @@
  * fraction of the view's width at the depth the camera sees (ppm_first_radius).
  * docs/chapter8.md: how they were chosen. */
 #define PHOTONS_PER_PIXEL 0.5
-#define FIRST_RADIUS_AT_800 0.0034
 #define PPM_SPP_PER_PASS 8
 #define MAX_PASSES 100000
 
@@ -47,7 +46,7 @@ static PpmSettings photon_settings(const PathSettings *path, const Scene *scene,
     /* No more photons per pass than a grid takes: a pass then never stores too many. */
     double photons = fmin(PHOTONS_PER_PIXEL * width * height + 0.5, POINT_GRID_MAX_POINTS);
     PpmSettings ppm = {*path, (int)photons,
-                       ppm_first_radius(scene, FIRST_RADIUS_AT_800) * 800.0 / width, PPM_ALPHA,
+                       ppm_first_radius(scene, PPM_FIRST_RADIUS_AT_800) * 800.0 / width, PPM_ALPHA,
                        spp, passes, 0.0};
     ppm.path.mirror_light = PHOTON_MIRROR_LIGHT;
     return ppm;

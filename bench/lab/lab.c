@@ -30,7 +30,6 @@
 /* Chapter 8's photons per pass and first radius for an image 800 pixels wide, as
  * chapters/ch08_photon_map.c sets them: they scale with the image (docs/chapter8.md). */
 #define PHOTONS_PER_PIXEL 0.5
-#define FIRST_RADIUS_AT_800 0.0032
 
 typedef struct {
     int chapter;
@@ -43,7 +42,7 @@ typedef struct {
     int mirror_given;  /* chapter 7's mirror light follows the depth unless given */
     double sigma;      /* >= 0: every Oren-Nayar material's roughness; < 0: the scene's */
     int photons;       /* per pass; 0: PHOTONS_PER_PIXEL per pixel */
-    double radius;     /* the first radius; 0: FIRST_RADIUS_AT_800 scaled */
+    double radius;     /* the first radius; 0: PPM_FIRST_RADIUS_AT_800 scaled */
     double alpha;      /* of the radius schedule */
     char program[64];  /* the chapter program, named in messages */
 } LabSettings;
@@ -417,7 +416,7 @@ int lab_configure(Lab *lab, const char *text)
         if (t->photons == 0)
             t->photons = (int)(PHOTONS_PER_PIXEL * lab->width * lab->height + 0.5);
         if (t->radius == 0.0)
-            t->radius = ppm_first_radius(&lab->scene, FIRST_RADIUS_AT_800) * 800.0 / lab->width;
+            t->radius = ppm_first_radius(&lab->scene, PPM_FIRST_RADIUS_AT_800) * 800.0 / lab->width;
     }
     choose_estimator(lab);
     lab->configured = 1;
