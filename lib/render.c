@@ -8,14 +8,9 @@ Vec3 render_sample(const Scene *scene, const ImageSettings *image, int col, int 
 {
 #if CHAPTER >= 2
     uint64_t pixel = (uint64_t)row * (uint64_t)image->width + (uint64_t)col;
-    int first_stratum = 0;
-    if (pixel_uses_subpixels(image->sampling)) {
-        Rng pixel_rng = rng_for_sample(image->seed, pixel, PIXEL_STREAM);
-        first_stratum = pixel_first_stratum(&pixel_rng, image->spp);
-    }
     Rng generator = rng_for_sample(image->seed, pixel, (uint64_t)sample), *rng = &generator;
     double u, v;
-    pixel_position(image->sampling, sample, image->spp, first_stratum, rng, &u, &v);
+    pixel_position(image->sampling, sample, image->spp, rng, &u, &v);
 #else
     Rng *rng = NULL;
     double u = 0.5, v = 0.5; /* the pixel's centre */
