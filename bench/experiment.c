@@ -109,7 +109,7 @@ static int emitting_triangles(const Scene *scene)
 {
     int count = 0;
     for (int i = 0; i < scene->triangle_count; i++)
-        count += material_emits(&scene->materials[scene->triangles[i].material]);
+        count += vec3_max_component(scene->materials[scene->triangles[i].material].emission) > 0.0;
     return count;
 }
 
@@ -118,7 +118,7 @@ static const char *dark_light(const Scene *scene)
 {
     for (int i = 0; i < scene->triangle_count; i++) {
         const Material *m = &scene->materials[scene->triangles[i].material];
-        if (m->kind == MATERIAL_LIGHT && !material_emits(m))
+        if (m->kind == MATERIAL_LIGHT && !(vec3_max_component(m->emission) > 0.0))
             return m->name;
     }
     return NULL;

@@ -1,10 +1,9 @@
 /* bvh.h (chapter 1): a bounding volume hierarchy, so a ray tests a few primitives, not all.
  *
- * A binary tree of boxes: each node's box holds its primitives; a node of more than one
- * primitive splits them in two by the surface area heuristic. A ray visits a node only
- * if it meets its box, the nearer child first, and skips a box it enters beyond the
- * nearest hit found so far. The boxes are widened by their own rounding, so the tree
- * changes how fast a hit is found, never which (docs/chapter1.md, section 6).
+ * A binary tree of boxes, each holding its node's primitives, split in two by the surface
+ * area heuristic. A ray visits a node only if it meets its box, the nearer child first,
+ * and skips a box it enters beyond the nearest hit so far. Boxes are widened by their
+ * own rounding: the tree changes how fast a hit is found, never which.
  */
 #ifndef BVH_H
 #define BVH_H

@@ -1,9 +1,8 @@
 /* camera.h (chapter 1): rays from the eye through the image plane (report §3.3, §4.1).
  *
- * The scene gives the eye and three corners of the image plane. The point (u, v) in
- * [0, 1)^2 of pixel (col, row) of a W x H image, row 0 at the top, is
- *     BL + (col + u) / W (BR - BL) + (1 - (row + v) / H) (TL - BL),
- * and its camera ray runs from the eye through it.
+ * The scene gives the eye and three corners of the image plane; the camera ray of point
+ * (u, v) in [0, 1)^2 of pixel (col, row) of a W x H image, row 0 at the top, runs from the
+ * eye through BL + (col + u) / W (BR - BL) + (1 - (row + v) / H) (TL - BL).
  */
 #ifndef CAMERA_H
 #define CAMERA_H

@@ -37,10 +37,13 @@ static inline int material_is_diffuse(const Material *m)
     return m->kind == MATERIAL_LAMBERT;
 #endif
 }
+#if CHAPTER >= 3
 
+/* Whether it is an area light (area_light.h). */
 static inline int material_emits(const Material *m)
 {
     return m->emission.x > 0.0 || m->emission.y > 0.0 || m->emission.z > 0.0;
 }
+#endif
 
 #endif

@@ -1,11 +1,10 @@
 /* ray.h (chapter 1): a ray x(t) = origin + t dir (eq. 20), and how to start one on a
  * surface without hitting that surface again.
  *
- * dir is unit length, so t is a distance. A hit point is put back on its surface from
- * the surface's own numbers (scene.h), so it lies off it by a few ulps of those numbers
- * and of its own coordinates, wherever the ray came from. A new ray starts RAY_OFFSET
- * times that magnitude off the surface, along the normal, to the side it travels into:
- * nothing absolute, nothing from the rest of the scene (docs/chapter1.md).
+ * dir is unit length, so t is a distance. A hit point, put back on its surface from the
+ * surface's own numbers (scene.h), lies off it by a few ulps of those numbers and of its
+ * own coordinates. A new ray starts RAY_OFFSET times that magnitude off the surface, to
+ * the side it travels into: nothing absolute, nothing from the rest of the scene.
  */
 #ifndef RAY_H
 #define RAY_H

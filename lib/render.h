@@ -21,8 +21,7 @@ typedef struct Rng Rng; /* chapter 2's random numbers (rng.h): Whitted's estimat
 #include "sobol.h" /* PIXEL_PROGRESSIVE's positions */
 #endif
 
-/* Rays traced, by purpose: one camera ray per sample; bounce rays, every ray a path
- * continues with; shadow rays, visibility tests towards a light. */
+/* Rays traced, by purpose: camera, bounce (a path continues), shadow (towards a light). */
 typedef struct {
     uint64_t camera, bounce, shadow;
 } RayCounts;

@@ -57,8 +57,7 @@ typedef struct {
     Vec3 normal;  /* unit geometric normal of the front side (outward on spheres) */
     int material;
     int triangle; /* index of the triangle hit, or -1 for a sphere */
-    double scale; /* what the point's error along the normal is relative to besides its
-                     own coordinates: the surface's numbers (ray.h) */
+    double scale; /* the surface's numbers behind the point's error (ray.h) */
 } Hit;
 
 /* The primitives the hierarchy is built over (bvh.h). */
@@ -85,12 +84,11 @@ int scene_prepare(Scene *scene);
 int scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit);
 
 /* Whether anything blocks the segment from surface point `from` (normal from_normal)
- * to point `to` on a surface with normal to_normal. Both ends are moved off their
- * surfaces by the segment's largest coordinate (ray.h), so neither end's own surface
- * blocks. */
+ * to point `to` on a surface with normal to_normal; both ends are moved off their
+ * surfaces (ray.h), so neither end's own surface blocks. */
 int scene_occluded(const Scene *scene, Vec3 from, Vec3 from_normal, Vec3 to, Vec3 to_normal);
-
 #if CHAPTER >= 3
+
 /* The area lights' list, built by scene_prepare() and freed by scene_free()
  * (area_light.c). Returns 0, or -1 when memory runs out. */
 int area_lights_list(Scene *scene);

@@ -2,11 +2,9 @@
  * (report §3.5.2, eq. 2), and total internal reflection.
  *
  *     t = eta d + (eta cos_i - cos_t) n,   eta = n_i / n_t,   cos_t = sqrt(1 - eta^2 sin_i^2)
- * with n the unit normal on the incident side. Going from the denser medium there is no
- * real cos_t beyond the critical angle theta_c = arcsin(n_t / n_i). Erratum: the report
- * writes arcsin(n_i / n_t). From SNELL_GRAZING_MARGIN below sin_t = 1 the incidence
- * counts as total internal reflection, since a direction built at the critical angle
- * is rounded either side of it (docs/chapter1.md).
+ * with n the unit normal on the incident side. From the denser medium there is no real
+ * cos_t beyond the critical angle arcsin(n_t / n_i) (erratum: the report inverts the
+ * ratio), nor within SNELL_GRAZING_MARGIN of it, where rounding could fall either side.
  */
 #ifndef SNELL_H
 #define SNELL_H

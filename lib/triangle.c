@@ -1,5 +1,5 @@
-/* triangle.c (chapter 1): a triangle's edges, normal and area, and its points. The
- * intersection test is in triangle.h, inline. */
+/* triangle.c (chapter 1): a triangle's edges, normal and area. The intersection test is
+ * in triangle.h, inline. */
 #include "triangle.h"
 
 Triangle triangle_make(Vec3 v0, Vec3 v1, Vec3 v2, int material)
@@ -15,9 +15,4 @@ Triangle triangle_make(Vec3 v0, Vec3 v1, Vec3 v2, int material)
     tri.longest_edge = max2(vec3_max_abs(tri.e1), vec3_max_abs(tri.e2));
     tri.material = material;
     return tri;
-}
-
-Vec3 triangle_point(const Triangle *tri, double u, double v)
-{
-    return vec3_add_scaled(vec3_add_scaled(tri->v0, tri->e1, u), tri->e2, v);
 }

@@ -52,8 +52,13 @@ static inline double triangle_intersect(const Triangle *tri, Ray ray, double tmi
     int inside = (u >= -slack) & (u <= 1.0 + slack) & (v >= -slack) & (u + v <= 1.0 + slack);
     return (inside & (t > tmin) & (t < tmax)) ? t : INFINITY;
 }
+#if CHAPTER >= 3
 
-/* The point T(u, v) of eq. 16. */
-Vec3 triangle_point(const Triangle *triangle, double u, double v);
+/* The point T(u, v) of eq. 16: where a lamp is sampled (area_light.h). */
+static inline Vec3 triangle_point(const Triangle *tri, double u, double v)
+{
+    return vec3_add_scaled(vec3_add_scaled(tri->v0, tri->e1, u), tri->e2, v);
+}
+#endif
 
 #endif

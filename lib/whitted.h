@@ -1,12 +1,10 @@
 /* whitted.h (chapter 1): Whitted ray tracing (report §2.1, Figure 1).
  *
- * From the eye, a ray tree: at a diffuse surface the ray ends and the surface is shaded
- * by one shadow ray to each point light (hard shadows),
- *     L = sum over lights of  rho/pi I cos(theta) / d^2 V;
- * a mirror reflects the ray; glass splits it into a reflected and a refracted ray
- * weighted by Schlick's R and 1 - R; an emitter seen from its front adds its radiance.
- * No interreflection, so no colour bleeding and no soft shadows. A path of the tree has
- * at most max_depth rays.
+ * From the eye, a ray tree of at most max_depth rays a path: a diffuse surface is shaded
+ * by one shadow ray to each point light, L = sum rho/pi I cos(theta) / d^2 V (hard
+ * shadows); a mirror reflects the ray; glass splits it into a reflected and a refracted
+ * ray weighted by Schlick's R and 1 - R; an emitter seen from its front adds its
+ * radiance. No interreflection: no colour bleeding, no soft shadows.
  */
 #ifndef WHITTED_H
 #define WHITTED_H

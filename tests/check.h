@@ -7,7 +7,7 @@
 #ifndef CHECK_H
 #define CHECK_H
 
-#include "ray.h"
+#include "triangle.h"
 #include "test_random.h"
 
 #define assert_close(a, b, tol) \
@@ -31,6 +31,12 @@ static inline void test_frame(Vec3 n, Vec3 *t, Vec3 *b)
 static inline Vec3 test_from_frame(Vec3 local, Vec3 t, Vec3 b, Vec3 n)
 {
     return vec3_add(vec3_add(vec3_scale(t, local.x), vec3_scale(b, local.y)), vec3_scale(n, local.z));
+}
+
+/* The point at barycentric (u, v) of a triangle: v0 + u e1 + v e2 (eq. 16). */
+static inline Vec3 point_on_triangle(const Triangle *tri, double u, double v)
+{
+    return vec3_add_scaled(vec3_add_scaled(tri->v0, tri->e1, u), tri->e2, v);
 }
 
 /* The ray from `origin` through `target`. */

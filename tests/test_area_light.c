@@ -376,10 +376,25 @@ static void test_light_list(void **state)
     scene_free(&scene);
 }
 
+/* triangle_point(u, v) is eq. 16: the vertices at (0,0), (1,0), (0,1), the centroid
+ * at (1/3, 1/3). */
+static void test_point(void **state)
+{
+    Vec3 a = vec3(1, 2, 3), b = vec3(4, -2, 0), c = vec3(-1, 0, 6);
+    Triangle tri = triangle_make(a, b, c, 0);
+    Vec3 centroid = vec3_scale(vec3_add(vec3_add(a, b), c), 1.0 / 3.0);
+    Vec3 points[4] = {triangle_point(&tri, 0, 0), triangle_point(&tri, 1, 0),
+                      triangle_point(&tri, 0, 1), triangle_point(&tri, 1.0 / 3, 1.0 / 3)};
+    Vec3 expected[4] = {a, b, c, centroid};
+    for (int i = 0; i < 4; i++)
+        assert_close(vec3_length(vec3_sub(points[i], expected[i])), 0, 1e-14);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_light_list),
+        cmocka_unit_test(test_point),
         cmocka_unit_test(test_sampling_is_uniform_by_area),
         cmocka_unit_test(test_wrong_sampler_is_rejected),
         cmocka_unit_test(test_sample_fields),

@@ -175,7 +175,7 @@ static const Triangle *lamp_triangle(const Scene *scene, int k)
 {
     int lamps[64], count = 0;
     for (int t = 0; t < scene->triangle_count && count < 64; t++)
-        if (material_emits(&scene->materials[scene->triangles[t].material]))
+        if (scene->materials[scene->triangles[t].material].kind == MATERIAL_LIGHT)
             lamps[count++] = t;
     assert_true(count > 0);
     return &scene->triangles[lamps[k % count]];
@@ -197,7 +197,7 @@ static void test_room_bounce_and_shadow_rays(void **state)
             if (!scene_intersect(&scene, ray, INFINITY, &hit))
                 break;
             Vec3 n = vec3_dot(hit.normal, ray.dir) > 0.0 ? vec3_neg(hit.normal) : hit.normal;
-            Vec3 lamp = triangle_point(lamp_triangle(&scene, i), 0.5 * test_uniform(&rng),
+            Vec3 lamp = point_on_triangle(lamp_triangle(&scene, i), 0.5 * test_uniform(&rng),
                                        0.5 * test_uniform(&rng));
             double segment = fmax(vec3_max_abs(hit.point), vec3_max_abs(lamp));
             Vec3 start = ray_offset_origin(hit.point, n, vec3_sub(lamp, hit.point), segment);
@@ -233,7 +233,7 @@ static void grazing_rays(const Scene *scene, double angle_min, double angle_max,
             v = 1.0 - u;
         if (i % 12 == 3)
             u = (double)(i / 12 % 2); /* at a vertex, a corner of the box */
-        Vec3 point = triangle_point(tri, u, v);
+        Vec3 point = point_on_triangle(tri, u, v);
         Vec3 t, b;
         test_frame(tri->normal, &t, &b);
         double phi = 2 * PI * test_uniform(&rng);

@@ -37,7 +37,7 @@ static Vec3 random_direction_along(TestRandom *rng, Vec3 normal)
 static Vec3 random_point_on(const Triangle *tri, TestRandom *rng)
 {
     double a = sqrt(test_uniform(rng)), b = test_uniform(rng);
-    return triangle_point(tri, a * (1 - b), a * b);
+    return point_on_triangle(tri, a * (1 - b), a * b);
 }
 
 static int add_material(Scene *scene, MaterialKind kind, double emission)

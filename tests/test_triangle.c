@@ -42,20 +42,6 @@ static void test_make(void **state)
     assert_close(vec3_dot(odd.normal, vec3_sub(c, a)), 0, 1e-13);
 }
 
-/* triangle_point(u, v) is eq. 16: the vertices at (0,0), (1,0), (0,1), the centroid
- * at (1/3, 1/3). */
-static void test_point(void **state)
-{
-    Vec3 a = vec3(1, 2, 3), b = vec3(4, -2, 0), c = vec3(-1, 0, 6);
-    Triangle tri = triangle_make(a, b, c, 0);
-    Vec3 centroid = vec3_scale(vec3_add(vec3_add(a, b), c), 1.0 / 3.0);
-    Vec3 points[4] = {triangle_point(&tri, 0, 0), triangle_point(&tri, 1, 0),
-                      triangle_point(&tri, 0, 1), triangle_point(&tri, 1.0 / 3, 1.0 / 3)};
-    Vec3 expected[4] = {a, b, c, centroid};
-    for (int i = 0; i < 4; i++)
-        assert_close(vec3_length(vec3_sub(points[i], expected[i])), 0, 1e-14);
-}
-
 /* A ray straight down onto the triangle at height 2 hits at t = 2, from the front and
  * from the back alike (two-sided surfaces), and exactly at the aimed point. */
 static void test_hit_both_sides(void **state)
@@ -65,7 +51,7 @@ static void test_hit_both_sides(void **state)
     Ray from_back = {vec3(1, 1, 0), vec3(0, 0, 1)};
     assert_close(hit(&tri, from_front), 2, 1e-15);
     assert_close(hit(&tri, from_back), 2, 1e-15);
-    Vec3 target = triangle_point(&tri, 0.2, 0.3);
+    Vec3 target = point_on_triangle(&tri, 0.2, 0.3);
     Ray oblique = ray_through(vec3(-3, 5, 9), target);
     double t = hit(&tri, oblique);
     assert_close(vec3_length(vec3_sub(ray_at(oblique, t), target)), 0, 1e-14);
@@ -106,8 +92,8 @@ static void test_vertex_and_edge(void **state)
     TestRandom rng = test_random(5, 0, 0);
     Vec3 a = vec3(0.3, -1.7, 2.2), b = vec3(2.9, 0.4, 1.1), c = vec3(-0.6, 1.3, 3.7);
     Triangle tri = triangle_make(a, b, c, 0);
-    Vec3 boundary[] = {a, b, c, triangle_point(&tri, 0.5, 0), triangle_point(&tri, 0, 0.25),
-                       triangle_point(&tri, 0.6, 0.4)};
+    Vec3 boundary[] = {a, b, c, point_on_triangle(&tri, 0.5, 0), point_on_triangle(&tri, 0, 0.25),
+                       point_on_triangle(&tri, 0.6, 0.4)};
     for (int k = 0; k < 1000; k++)
         for (int i = 0; i < 6; i++) {
             Vec3 origin = vec3_add_scaled(boundary[i], random_unit_vector(&rng), 5.0);
@@ -255,7 +241,6 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_make),
-        cmocka_unit_test(test_point),
         cmocka_unit_test(test_hit_both_sides),
         cmocka_unit_test(test_miss),
         cmocka_unit_test(test_parallel),

@@ -104,7 +104,7 @@ static void grade_triangle(Grading *g)
         if (margin < 1e-3)
             continue;
         int inside = a > 0.0 && b > 0.0 && a + b < 1.0;
-        Vec3 target = triangle_point(&tri, a, b);
+        Vec3 target = vec3_add_scaled(vec3_add_scaled(tri.v0, tri.e1, a), tri.e2, b);
         Vec3 origin = vec3_add_scaled(target, random_unit_vector(&rng), 1.0 + 3.0 * test_uniform(&rng));
         Vec3 to_target = vec3_sub(target, origin);
         double distance = vec3_length(to_target);
