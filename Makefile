@@ -21,6 +21,9 @@
 #   make bench            the speed benchmark (a benchmark, not a test)
 #   make gallery          rewrite build/figures/index.html from the figures there
 #   make browser-test     open that page in headless Chromium and check every image loads
+#   make lab              the lab: build/lab/index.html, every chapter live in the browser
+#                         (docs/lab.md); lab-test (in headless Chromium), lab-bench,
+#                         lab-references (the page's references, from the cache)
 #   make clean
 #
 # The lesson and the bench. lib/ is the lesson: what the chapters teach. bench/ measures
@@ -66,7 +69,7 @@ DEPS_OK     := $(BUILD)/.deps-ok
 # ---- which chapter introduces each file -------------------------------------------------
 LESSON   := $(wildcard lib/*.c lib/*.h chapters/*.c tests/*.c tests/*.h)
 BENCH    := $(wildcard bench/*.c bench/*.h bench/tests/*.c bench/tests/*.h bench/fuzz/*.c \
-                      bench/exercise/*.c bench/exercise/*.h)
+                      bench/exercise/*.c bench/exercise/*.h bench/lab/*.c bench/lab/*.h)
 SOURCES  := $(LESSON) $(BENCH)
 TAGS     := $(shell awk 'FNR == 1 && match($$0, /^\/\* [^ ]+ \((bench, )?chapter [0-9]+\)/) { \
                 t = substr($$0, RSTART, RLENGTH); sub(/.*chapter /, "", t); gsub(/[^0-9]/, "", t); \
@@ -309,11 +312,13 @@ test: all check-sources
 # `make browser-test` opens it in headless Chromium. DIFFS: the folder with the
 # diff-chapterN.diff files to show.
 DIFFS   ?= $(BUILD)
+# The lab's page (make lab) as the gallery links to it, relative to the figures folder.
+LAB_LINK = $(shell realpath -m --relative-to=$(FIGURES) $(BUILD)/lab/index.html)
 .PHONY: gallery browser-test
 $(GALLERY): $(BUILD)/chapter$(FINAL)/bench/gallery_main.o $(BUILD)/chapter$(FINAL)/libmc.a
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 gallery: $(GALLERY)
-	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK)
 figures:
 	@start=$$(date +%s); started=$$(date '+%Y-%m-%d %H:%M:%S %z'); \
 	$(MAKE) --no-print-directory -j$$(nproc) $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) || exit 1; \
@@ -325,9 +330,121 @@ figures:
 	echo "make figures: $$seconds s"
 	@$(MAKE) --no-print-directory exercise-solutions
 	@for n in $(CHAPTERS); do $(MAKE) --no-print-directory diff-chapter$$n > /dev/null || exit 1; done
-	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS)
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK)
 browser-test: $(GALLERY)
 	sh bench/browser_gallery.sh $(FIGURES)
+
+# ---- the lab (docs/lab.md) ---------------------------------------------------------------
+# build/lab/: the final chapter's lesson (lib/, as it is) and the lab's C (bench/lab/)
+# compiled to WebAssembly by Debian's emscripten (installed on demand) into one script
+# with the module inside it (SINGLE_FILE), which the page runs in web workers started
+# from Blobs, and the page itself: it opens from disk. The lab's programs are linked with
+# the recorder's wrappers (bench/lab/record.h: --wrap for every __wrap_NAME it defines);
+# the chapter programs are not. lab-native is the same C built natively, for the tests
+# and the benchmark; lab-reference (beside build/reference, whose cache it reads) writes
+# the references the page can load. NODE_PATH: emscripten's tools need Debian's node
+# modules also where `node` is not Debian's. Threads in WebAssembly would need a page
+# served with cross-origin isolation: the module has none (-pthread is left out), the
+# page's workers are its threads. -msimd128: the compiler may use WebAssembly's 128-bit
+# vectors (browsers since 2021), as GCC uses SSE2 natively; -flto: it may inline across
+# files, the wrapped calls excepted (the linker keeps them calls; make lab-test checks the
+# records). docs/lab.md: what each buys.
+LAB           := $(BUILD)/lab
+LAB_EMCC       = NODE_PATH=/usr/share/nodejs emcc
+LAB_EMCC_FLAGS = $(filter-out -pthread,$(REQUIRED)) -DCHAPTER=$(FINAL) -Ilib -Ibench $(PKG_CFLAGS) -O3 -msimd128 -flto -MMD -MP
+LAB_LIB       := $(call upto,$(FINAL),$(LIB_SOURCES))
+LAB_BENCH     := bench/scene_file.c bench/material_names.c bench/renderer.c bench/image.c \
+                 bench/atomic_file.c bench/stats.c bench/ppm.c
+LAB_C         := bench/lab/json.c bench/lab/record.c bench/lab/lab.c
+LAB_PAGE      := $(addprefix $(LAB)/,index.html lab.js pool.js plot.js inspector.js)
+LAB_WRAPS      = $(shell grep -o '__wrap_[a-z_]*' bench/lab/record.c | sort -u | sed 's/__wrap_/--wrap=/' | paste -sd, -)
+PAREN         := (
+LAB_EXPORTS    = $(shell grep -o '^[A-Za-z].*[ *]lab_[a-z_]*$(PAREN)' bench/lab/lab.h | grep -o 'lab_[a-z_]*' | sed 's/^/_/' | paste -sd, -),_malloc,_free
+LAB_OBJS      := $(patsubst %.c,$(LAB)/wasm/%.o,$(LAB_LIB) $(LAB_BENCH) $(LAB_C))
+LAB_NATIVE    := $(LAB)/lab-native
+LAB_REFERENCE := $(BUILD)/lab-reference
+
+.PHONY: lab lab-test lab-bench lab-references
+$(LAB)/.emscripten: | $(DEPS_OK)
+	@sh .ci/install-deps emscripten nodejs
+	@mkdir -p $(@D) && touch $@
+
+$(LAB)/wasm/%.o: %.c | $(LAB)/.emscripten
+	@mkdir -p $(@D)
+	$(LAB_EMCC) $(LAB_EMCC_FLAGS) -c $< -o $@
+
+# stb_image_write's code, which Debian ships as a library, compiled from its header here.
+$(LAB)/wasm/bench/image.o: LAB_EMCC_FLAGS += -DSTB_IMAGE_WRITE_IMPLEMENTATION
+
+$(LAB)/wasm/lab_module.js: $(LAB_OBJS) bench/lab/record.c bench/lab/lab.h
+	$(LAB_EMCC) -O3 -msimd128 -flto $(LAB_OBJS) -Wl,$(LAB_WRAPS) -sEXPORTED_FUNCTIONS=$(LAB_EXPORTS) \
+	    -sEXPORTED_RUNTIME_METHODS=UTF8ToString -sALLOW_MEMORY_GROWTH=1 -sSINGLE_FILE=1 \
+	    -sENVIRONMENT=web,worker -sMODULARIZE=1 -sEXPORT_NAME=createLabModule -o $@
+
+$(LAB)/embed: bench/lab/embed.c | $(DEPS_OK)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) $< $(LDFLAGS) -o $@
+
+$(LAB)/lab_worker.js: $(LAB)/embed $(LAB)/wasm/lab_module.js bench/lab/worker.js
+	$(LAB)/embed LAB_WORKER $(LAB)/wasm/lab_module.js bench/lab/worker.js > $@.tmp && mv $@.tmp $@
+
+# The scenes, and each chapter's program and default scene as its source declares them.
+$(LAB)/lab_data.js: $(LAB)/embed $(wildcard scenes/*.scene) $(PROGRAMS) bench/lab/lab.c
+	{ $(LAB)/embed LAB_SCENES $(wildcard scenes/*.scene) && \
+	  last=$$(sed -n 's/^#define LAB_CHAPTERS \([0-9]*\)/\1/p' bench/lab/lab.c) && \
+	  printf 'var LAB_CHAPTERS = [\n' && \
+	  for p in $(PROGRAMS); do n=$$(basename $$p | sed 's/^ch0*\([0-9]*\)_.*/\1/'); \
+	      [ $$n -le $$last ] || continue; \
+	      scene=$$(sed -n 's/.*\.scene = "scenes\/\([^"]*\)".*/\1/p' $$p | head -n 1); \
+	      printf '{"number": %s, "program": "%s", "scene": "%s"},\n' $$n $$(basename $$p .c) $$scene; \
+	  done && printf '];\n'; } > $@.tmp && mv $@.tmp $@
+
+$(LAB)/%: bench/lab/%
+	@mkdir -p $(@D)
+	cp $< $@
+
+lab: $(LAB_PAGE) $(LAB)/lab_data.js $(LAB)/lab_worker.js $(LAB_NATIVE)
+	@mkdir -p $(LAB)/references
+	@{ printf 'var LAB_REFERENCES = ['; for f in $(LAB)/references/*-*.js; do \
+	      [ -e "$$f" ] && printf '"%s",' "$$(basename $$f)"; done; printf '];\n'; } \
+	    > $(LAB)/references/index.js
+	@echo "the lab: $(LAB)/index.html (open it from disk); $$(ls $(LAB)/references | grep -c -- '-.*\.js$$') references"
+
+$(LAB_REFERENCE): $(BUILD)/chapter$(FINAL)/bench/lab/lab_reference.o $(BUILD)/chapter$(FINAL)/libmc.a
+	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
+
+# References for the page (bench/lab/lab_reference.c): the room at depth 8 (chapters 2-5,
+# Schlick's and the exact Fresnel) and 64 (6-8), each at the widths LAB_SIZES, with the
+# samples the chapter programs give them, so that what `make figures` cached is found
+# (a reference not cached is rendered: minutes at 800 pixels).
+LAB_SIZES ?= 256 $(if $(QUICK),200,800)
+LAB_REFERENCE_SETTINGS := "--depth 8 --reference-spp 64" "--depth 8 --fresnel exact --reference-spp 128" \
+                          "--depth 64 --reference-spp 128"
+lab-references: $(LAB_REFERENCE) $(REFERENCE_BIN)
+	@for size in $(LAB_SIZES); do for settings in $(LAB_REFERENCE_SETTINGS); do \
+	    $(LAB_REFERENCE) --quiet --size $$size $$settings --out $(LAB)/references || exit 1; \
+	done; done
+	@$(MAKE) --no-print-directory lab
+
+# The page in headless Chromium against the native programs (bench/lab/browser_lab.js).
+lab-test: lab $(CHAPTER_BINS) $(REFERENCE_BIN) $(LAB_REFERENCE)
+	@sh .ci/install-deps chromium nodejs
+	node bench/lab/browser_lab.js $(LAB) $(BUILD) $(BUILD)/lab-test
+
+$(LAB_NATIVE): $(patsubst %.c,$(BUILD)/chapter$(FINAL)/%.o,$(LAB_C) bench/lab/lab_native.c) $(BUILD)/chapter$(FINAL)/libmc.a
+	@mkdir -p $(@D)
+	$(CC) $^ $(LDFLAGS) -Wl,$(LAB_WRAPS) $(LIBS) -o $@
+
+# The same without the wrappers (each __real_NAME is NAME, so no call is noted), for the
+# benchmark: what the recorder costs natively when it is linked in but not recording.
+$(LAB_NATIVE)-unwrapped: $(patsubst %.c,$(BUILD)/chapter$(FINAL)/%.o,$(LAB_C) bench/lab/lab_native.c) $(BUILD)/chapter$(FINAL)/libmc.a
+	$(CC) $^ $(LDFLAGS) -Wl,$(subst --wrap=,--defsym=__real_,$(shell echo '$(LAB_WRAPS)' | sed 's/--wrap=\([a-z_]*\)/--wrap=\1=\1/g')) $(LIBS) -o $@
+
+# The lab's benchmark (bench/lab/lab_bench.js): WebAssembly's speed per core against the
+# native build's, the first image's time, the main thread's longest tasks.
+lab-bench: lab $(LAB_NATIVE)-unwrapped
+	@sh .ci/install-deps chromium nodejs
+	node bench/lab/lab_bench.js $(LAB) $(BUILD)/lab-bench
 
 sanitize:
 	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize \

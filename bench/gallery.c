@@ -580,7 +580,60 @@ static int write_table(Writer *w, const char *name)
     return 0;
 }
 
-static void write_image(Writer *w, const char *name)
+/* The fragment that follows `name` (length bytes) among the "NAME FRAGMENT" pairs of
+ * `pairs`, and its length in *length; NULL when the name is not there. */
+static const char *paired(const char *pairs, const char *name, size_t *length)
+{
+    while (pairs && *pairs) {
+        size_t span = strcspn(pairs, " ");
+        const char *value = pairs + span + strspn(pairs + span, " ");
+        size_t value_span = strcspn(value, " ");
+        if (span == *length && strncmp(pairs, name, span) == 0 && value_span > 0) {
+            *length = value_span;
+            return value;
+        }
+        pairs = value + value_span;
+        pairs += strspn(pairs, " ");
+    }
+    return NULL;
+}
+
+/* The width of the chapter's panels: of its first PFM; 0 without one. */
+static int panel_width(const Writer *w, const char *prefix)
+{
+    for (int i = 0; i < w->files.count; i++) {
+        const char *name = w->files.names[i];
+        char path[4200];
+        int width, height;
+        if (strncmp(name, prefix, strlen(prefix)) == 0 && ends_with(name, ".pfm") &&
+            join(path, sizeof path, w->page->figures, name) == 0) {
+            pfm_size(path, &width, &height);
+            return width;
+        }
+    }
+    return 0;
+}
+
+/* " live in the lab": a link to the lab with the figure's settings (gallery.h). */
+static void write_lab_link(Writer *w, const GalleryChapter *chapter, const char *name)
+{
+    size_t length = strlen(name) - 4; /* without ".png" */
+    const char *fragment = paired(chapter->lab, name, &length);
+    if (!w->page->lab || !fragment)
+        return;
+    char prefix[16];
+    chapter_prefix(prefix, chapter->number);
+    int width = panel_width(w, prefix);
+    fputs(" <a class=\"lab\" href=\"", w->out);
+    html_text(w->out, w->page->lab);
+    fputc('#', w->out);
+    html(w->out, fragment, length);
+    if (width > 0)
+        fprintf(w->out, "&amp;size=%d", width);
+    fputs("\">live in the lab</a>", w->out);
+}
+
+static void write_image(Writer *w, const GalleryChapter *chapter, const char *name)
 {
     FILE *out = w->out;
     char path[4200];
@@ -600,6 +653,7 @@ static void write_image(Writer *w, const char *name)
     html_text(out, name);
     if (width > 0)
         fprintf(out, " (%d x %d)", width, height);
+    write_lab_link(w, chapter, name);
     fputs("</figcaption></figure>\n", out);
 }
 
@@ -634,7 +688,7 @@ static int write_kind(Writer *w, const GalleryChapter *chapter, FileKind kind,
                     kind == FILE_OTHER ? "<ul class=\"files\">\n" : "");
         if (kind == FILE_FIGURE || kind == FILE_PLOT ||
             (kind == FILE_EXERCISE && ends_with(name, ".png"))) {
-            write_image(w, name);
+            write_image(w, chapter, name);
         } else if (kind == FILE_TABLE) {
             if (write_table(w, name) != 0)
                 return -1;

@@ -18,7 +18,9 @@
  *   chNN_exercise*.png, .txt  the solution's exercise pictures and verdicts (README.md, "Do
  *               the chapters yourself"), under their own heading;
  *   any other   linked (the panels' PFM radiance, ...).
- * A chapter without any file is listed with a note that it is not rendered yet.
+ * A chapter without any file is listed with a note that it is not rendered yet. A
+ * figure links to the lab (bench/lab/), when the page knows where it is, with the
+ * settings that render that figure live.
  *
  * run.txt in the folder, written by `make figures`, records the run as key=value lines:
  * started, finished, seconds, threads, quick (1 for QUICK figures; the page is then marked
@@ -41,6 +43,9 @@ typedef struct {
                                separated by spaces; NULL for none */
     const char *figures;    /* names (without ".png") of every figure it writes, separated
                                by spaces: one missing is shown as not rendered */
+    const char *lab;        /* each figure's settings in the lab (docs/lab.md) as pairs
+                               "NAME FRAGMENT", separated by spaces, e.g. "ch03_figure11
+                               chapter=3&M=1&b.M=30"; NULL for none */
 } GalleryChapter;
 
 typedef struct {
@@ -50,6 +55,9 @@ typedef struct {
     const GalleryChapter *chapters;
     int chapter_count;
     time_t made; /* when the page is made, as shown in its header */
+    const char *lab; /* the lab's page, relative to the figures folder; NULL: no links to it.
+                        A figure with settings in the lab links to it with them, and with
+                        the width of its chapter's panels (size=W, from their PFMs) */
 } GalleryPage;
 
 /* Write the page as figures/index.html, whole or not at all (atomic_file.h). Returns 0,

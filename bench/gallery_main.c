@@ -5,7 +5,7 @@
  * figure of the report it reproduces (the texts below), and prints "wrote PATH".
  * `make figures` runs it at the end; `make gallery` runs it alone.
  *
- *   gallery [--out DIR] [--diffs DIR] [--help]
+ *   gallery [--out DIR] [--diffs DIR] [--lab URL] [--help]
  */
 #include <stdio.h>
 #include <string.h>
@@ -21,7 +21,8 @@ static const GalleryChapter CHAPTERS[] = {
      "ray on, reflected or refracted, recursively. Nothing is random, so there is no noise, "
      "but the shadows are hard and no light travels from one wall to another.",
      "the report's Figure 1 (the room by Whitted ray tracing)", NULL,
-     "ch01_figure1"},
+     "ch01_figure1",
+     "ch01_figure1 chapter=1"},
     {2, "Monte Carlo integration of diffuse light",
      "A diffuse surface now reflects light arriving from every direction: each bounce picks "
      "one direction at random, with the cosine-weighted density of the Lambert BRDF, and a "
@@ -31,14 +32,17 @@ static const GalleryChapter CHAPTERS[] = {
      "the report's Figure 2 (the room by Monte Carlo ray tracing) and Figure 8 (1 against "
      "4 samples per pixel)",
      NULL,
-     "ch02_figure2 ch02_figure8 ch02_subpixels_vs_random"},
+     "ch02_figure2 ch02_figure8 ch02_subpixels_vs_random",
+     "ch02_figure2 chapter=2&spp=64 ch02_figure8 chapter=2&spp=1&b.spp=4 "
+     "ch02_subpixels_vs_random chapter=2&spp=4&b.sampling=random"},
     {3, "Shadow rays",
      "Instead of waiting for a random path to hit the small ceiling light, every diffuse hit "
      "sends M shadow rays to random points on the area light and adds what they see "
      "(the report's eq. 21). The tables measure what each extra shadow ray costs in time and "
      "what it buys in error; a sweep over M shows where more rays stop paying.",
      "the report's Figure 11 (1 against 30 shadow rays)", NULL,
-     "ch03_figure11 ch03_figure8"},
+     "ch03_figure11 ch03_figure8",
+     "ch03_figure11 chapter=3&M=1&spp=4&b.M=30 ch03_figure8 chapter=3&spp=1&b.spp=4"},
     {4, "Fresnel glass and ray depth",
      "Glass bends light by Snell's law, reflects all of it beyond the critical angle, and "
      "otherwise splits it between reflection and refraction by the Fresnel equations, exactly "
@@ -47,14 +51,17 @@ static const GalleryChapter CHAPTERS[] = {
      "the report's Figure 9 (ray depth 3 against 8), and Schlick against exact Fresnel: both "
      "curves over the angle, and their time and error in the room",
      "ch04_fresnel_curve",
-     "ch04_figure9 ch04_figure9_crop ch04_fresnel_curve"},
+     "ch04_figure9 ch04_figure9_crop ch04_fresnel_curve",
+     "ch04_figure9 chapter=4&depth=3&b.depth=8 ch04_figure9_crop chapter=4&depth=3&b.depth=8 "
+     "ch04_fresnel_curve chapter=4&fresnel=schlick&b.fresnel=exact&reference=exact&fairness=time"},
     {5, "The Oren-Nayar reflector",
      "A rough surface is modelled as many tiny Lambertian facets whose slopes spread by a "
      "roughness sigma (the report's eqs. 13-14, corrected). Lit from "
      "the eye, a Lambertian sphere darkens towards its rim while a rough one looks flat; a "
      "sweep over sigma goes from Lambert (sigma = 0) to very rough.",
      "the report's Figure 10 (Oren-Nayar against Lambertian)", NULL,
-     "ch05_figure10 ch05_sigma_sweep"},
+     "ch05_figure10 ch05_sigma_sweep",
+     "ch05_figure10 chapter=5 ch05_sigma_sweep chapter=5&sigma=0&b.sigma=1"},
     {6, "Russian roulette",
      "Paths end at random instead of at a fixed depth: at each diffuse bounce a path survives "
      "with probability alpha and its weight is divided by alpha, so the estimate stays "
@@ -62,7 +69,8 @@ static const GalleryChapter CHAPTERS[] = {
      "brightest wall the variance is infinite; the sweep shows which alpha gives the most "
      "accuracy per second.",
      "the report's Figure 12 (alpha = 0.01 against 0.5)", NULL,
-     "ch06_figure12"},
+     "ch06_figure12",
+     "ch06_figure12 chapter=6&rr=0.01&b.rr=0.5"},
     {7, "The final image and the benchmarks",
      "Everything together: sub-pixel sampling, shadow rays, Fresnel glass and Russian "
      "roulette render the report's final image, with the levers that spend the samples "
@@ -73,7 +81,9 @@ static const GalleryChapter CHAPTERS[] = {
      "slope of -1/2.",
      "the report's Figure 7 (the final image) and Table 1 (the benchmarks)",
      "ch07_convergence",
-     "ch07_figure7_captioned ch07_convergence"},
+     "ch07_figure7_captioned ch07_convergence",
+     "ch07_figure7_captioned chapter=7 "
+     "ch07_convergence chapter=6&M=1&rr=0.25&spp=64&b.M=30&fairness=time"},
     {8, "Photon-mapped caustics",
      "Light focused by the glass sphere onto the floor (a caustic) is found by a path tracer "
      "only by chance, as bright speckles. Photons are traced from the light instead, those "
@@ -82,7 +92,9 @@ static const GalleryChapter CHAPTERS[] = {
      "beyond the report (its section 5 names photon mapping as future work): the room "
      "without speckles, at equal time against chapter 7",
      NULL,
-     "ch08_equal_time ch08_caustic_crop ch08_error_plot"},
+     "ch08_equal_time ch08_caustic_crop ch08_error_plot",
+     "ch08_equal_time chapter=7&b.chapter=8&fairness=time ch08_caustic_crop chapter=7&b.chapter=8&fairness=time "
+     "ch08_error_plot chapter=7&b.chapter=8&fairness=time"},
 };
 
 static void usage(FILE *out)
@@ -93,16 +105,19 @@ static void usage(FILE *out)
           "options:\n"
           "  --out   DIR  the figures folder; the page goes there (default build/figures)\n"
           "  --diffs DIR  folder with diff-chapterN.txt or .diff (default: the --out folder)\n"
+          "  --lab   URL  the lab's page, relative to the --out folder: each figure links to\n"
+          "               it with its settings (default: no links)\n"
           "  --help       this help\n",
           out);
 }
 
 int main(int argc, char **argv)
 {
-    const char *out = "build/figures", *diffs = NULL;
+    const char *out = "build/figures", *diffs = NULL, *lab = NULL;
     for (int i = 1; i < argc; i++) {
         const char **value = strcmp(argv[i], "--out") == 0     ? &out
                              : strcmp(argv[i], "--diffs") == 0 ? &diffs
+                             : strcmp(argv[i], "--lab") == 0   ? &lab
                                                                : NULL;
         if (strcmp(argv[i], "--help") == 0) {
             usage(stdout);
@@ -133,7 +148,7 @@ int main(int argc, char **argv)
         }
     }
     GalleryPage page = {"Monte Carlo ray tracer: every figure", out, diffs ? diffs : out,
-                        CHAPTERS, (int)(sizeof CHAPTERS / sizeof CHAPTERS[0]), time(NULL)};
+                        CHAPTERS, (int)(sizeof CHAPTERS / sizeof CHAPTERS[0]), time(NULL), lab};
     char error[4400];
     if (gallery_write(&page, error, sizeof error) != 0) {
         fprintf(stderr, "gallery: %s\n", error);

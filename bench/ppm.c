@@ -107,8 +107,7 @@ int ppm_photon_map(PhotonMap *map, const Scene *scene, const PhotonMapSettings *
     return status;
 }
 
-/* Two independent 64-bit seeds for pass `pass`: its camera samples and its photons. */
-static void pass_seeds(uint64_t seed, int pass, uint64_t *image_seed, uint64_t *photon_seed)
+void ppm_pass_seeds(uint64_t seed, int pass, uint64_t *image_seed, uint64_t *photon_seed)
 {
     Rng rng = rng_for_sample(seed, 0x70686f746f6eULL /* "photon" */, (uint64_t)pass);
     uint64_t high = rng_next(&rng);
@@ -125,7 +124,7 @@ static int render_pass(const Scene *scene, const RenderSettings *whole,
                        RayCounts *photon_rays, int *stored)
 {
     uint64_t image_seed, photon_seed;
-    pass_seeds(whole->image.seed, pass, &image_seed, &photon_seed);
+    ppm_pass_seeds(whole->image.seed, pass, &image_seed, &photon_seed);
     PhotonMapSettings photons = {settings->photons, PHOTON_CAUSTIC, settings->path.fresnel,
                                  photon_seed};
     PhotonMapSettings split_photons = photons;

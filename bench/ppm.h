@@ -41,6 +41,10 @@ typedef struct {
 int ppm_photon_map(PhotonMap *map, const Scene *scene, const PhotonMapSettings *settings,
                    double radius, int threads, RayCounts *counts);
 
+/* Two independent 64-bit seeds for pass `pass` (from 1) of a render of seed `seed`: its
+ * camera samples (unless PIXEL_PROGRESSIVE continues the render's own) and its photons. */
+void ppm_pass_seeds(uint64_t seed, int pass, uint64_t *image_seed, uint64_t *photon_seed);
+
 /* Render with `render`'s size, threads, seed and progress (its spp and sampling are
  * those of each pass: settings->spp, and render->sampling; PIXEL_PROGRESSIVE continues
  * each pixel's one sequence from pass to pass). A SIGINT stops after the

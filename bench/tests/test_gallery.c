@@ -12,7 +12,8 @@
  *   - a chapter without files has its section and says it is not rendered yet;
  *   - figures are shown, panels (a PFM of the same size beside them) only linked, the
  *     solution's exercise pictures and verdicts under their own heading after the plots;
- *   - text from files is escaped, and the page has no script.
+ *   - text from files is escaped, and the page has no script;
+ *   - a figure links to the lab with its settings where the page knows the lab.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -33,11 +34,11 @@
 static char fixture[2048];
 
 static const GalleryChapter CHAPTERS[] = {
-    {1, "First", "What the first teaches.", "Figure 1", NULL, "ch01_figure1"},
+    {1, "First", "What the first teaches.", "Figure 1", NULL, "ch01_figure1", NULL},
     {2, "Second", "What the second teaches.", "Figure 2", "ch02_plot",
-     "ch02_figure2 ch02_plot ch02_figure8"},
-    {3, "Third, not rendered", "What the third teaches.", "Figure 3", NULL, NULL},
-    {4, "Fourth", "What the fourth teaches.", "Figure 4", NULL, NULL},
+     "ch02_figure2 ch02_plot ch02_figure8", NULL},
+    {3, "Third, not rendered", "What the third teaches.", "Figure 3", NULL, NULL, NULL},
+    {4, "Fourth", "What the fourth teaches.", "Figure 4", NULL, NULL, NULL},
 };
 #define CHAPTER_COUNT 4
 
@@ -128,13 +129,11 @@ static void make_fixture(void)
                                     "+int y < 1;\n");
 }
 
-/* The page written from the fixture, as a string to free. */
-static char *make_page(void)
+/* The page written from the fixture as `page` says, as a string to free. */
+static char *written(const GalleryPage *page)
 {
-    make_fixture();
-    GalleryPage page = {"Test gallery", fixture, fixture, CHAPTERS, CHAPTER_COUNT, 0};
     char error[4400] = "";
-    int status = gallery_write(&page, error, sizeof error);
+    int status = gallery_write(page, error, sizeof error);
     if (status != 0)
         fail_msg("gallery_write: %s", error);
     char path[4200];
@@ -146,6 +145,14 @@ static char *make_page(void)
     fclose(file);
     buffer[length] = '\0';
     return strdup(buffer);
+}
+
+/* The page written from the fixture, as a string to free. */
+static char *make_page(void)
+{
+    make_fixture();
+    GalleryPage page = {"Test gallery", fixture, fixture, CHAPTERS, CHAPTER_COUNT, 0, NULL};
+    return written(&page);
 }
 
 /* HTML text back to plain text: the five escapes gallery.c writes. */
@@ -391,7 +398,7 @@ static void test_text_is_escaped_and_no_script(void **state)
 static void test_no_run_and_errors(void **state)
 {
     empty_fixture();
-    GalleryPage page = {"Test gallery", fixture, NULL, CHAPTERS, CHAPTER_COUNT, 0};
+    GalleryPage page = {"Test gallery", fixture, NULL, CHAPTERS, CHAPTER_COUNT, 0, NULL};
     char error[4400] = "";
     assert_int_equal(gallery_write(&page, error, sizeof error), 0);
     char path[4200];
@@ -408,6 +415,39 @@ static void test_no_run_and_errors(void **state)
     assert_non_null(strstr(error, "build/no such folder"));
 }
 
+/* Where the page knows the lab, a figure with settings there links to it with them and
+ * with the width of its chapter's panels (chapter 1's PFM is 6 wide; chapter 2 has none);
+ * a figure without settings, or a page without the lab, has no such link. */
+static void test_figures_link_to_the_lab(void **state)
+{
+    make_fixture();
+    GalleryChapter chapters[CHAPTER_COUNT];
+    memcpy(chapters, CHAPTERS, sizeof chapters);
+    chapters[0].lab = "ch01_figure1 chapter=1&M=2";
+    chapters[1].lab = "ch02_figure8 chapter=2&spp=9  ch02_plot chapter=2&b.spp=4";
+    GalleryPage page = {"Test gallery", fixture, fixture, chapters, CHAPTER_COUNT, 0, "../lab/index.html"};
+    char *text = written(&page);
+    const char *one = strstr(text, "<img src=\"ch01_figure1.png\""), *plot = strstr(text, "<img src=\"ch02_plot.png\"");
+    const char *figure = strstr(text, "<img src=\"ch02_figure2.png\"");
+    assert_non_null(one);
+    assert_non_null(plot);
+    assert_non_null(figure);
+    const char *link = "<a class=\"lab\" href=\"../lab/index.html#chapter=1&amp;M=2&amp;size=6\">live in the lab</a>";
+    assert_true(in_range(one, strstr(one, "</figure>"), link));
+    assert_true(in_range(plot, strstr(plot, "</figure>"),
+                         "<a class=\"lab\" href=\"../lab/index.html#chapter=2&amp;b.spp=4\">live in the lab</a>"));
+    assert_false(in_range(figure, strstr(figure, "</figure>"), "live in the lab"));
+    int links = 0;
+    for (const char *at = text; (at = strstr(at, "live in the lab")) != NULL; at++)
+        links++;
+    assert_int_equal(links, 2);
+    free(text);
+    page.lab = NULL;
+    text = written(&page);
+    assert_null(strstr(text, "live in the lab"));
+    free(text);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -417,6 +457,7 @@ int main(void)
         cmocka_unit_test(test_layout),
         cmocka_unit_test(test_text_is_escaped_and_no_script),
         cmocka_unit_test(test_no_run_and_errors),
+        cmocka_unit_test(test_figures_link_to_the_lab),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

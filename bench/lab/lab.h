@@ -1,0 +1,71 @@
+/* lab.h (bench, chapter 8): the lab's renderer, the part of its page that is C.
+ *
+ * One chapter's estimator (1 to 8) with that chapter's settings, on a scene read from
+ * text, rendered a band of rows at a time for one step: a step is one sample of every
+ * pixel (chapters 1-7), or one pass of progressive photon mapping (chapter 8, its
+ * mean over the pass's samples rounded as ppm.h's pass image is). Whoever takes the
+ * steps of a pixel in order and averages them as renderer.h does (Welford's update)
+ * gets the chapter program's image, bit for bit, with any number of workers. Built to
+ * WebAssembly for the page (bench/lab/lab.js) and natively (lab_native.c), both linked
+ * with the recorder (record.h) that notes a sample's path for the inspector.
+ */
+#ifndef LAB_H
+#define LAB_H
+
+#include "render.h"
+
+typedef struct Lab Lab;
+
+/* A lab with no scene; NULL when memory runs out. */
+Lab *lab_new(void);
+void lab_free(Lab *lab);
+
+/* The message of the last call that failed. */
+const char *lab_error(const Lab *lab);
+
+/* Read the scene from `length` bytes of text, `name` standing for its file in
+ * messages, which are the scene reader's ("NAME:LINE: what is wrong"). Returns 0, or -1.
+ * The lab's settings are kept; configure again before rendering. */
+int lab_load_scene(Lab *lab, const char *text, int length, const char *name);
+
+/* Settings as "key=value" words, separated by spaces or '&' (docs/lab.md lists them):
+ * chapter=N first sets that chapter's defaults, the rest override them; a key the
+ * chapter does not have yet is an error. Also checks that the scene has the light the
+ * chapter needs, with the chapter program's message. Returns 0, or -1. */
+int lab_configure(Lab *lab, const char *settings);
+
+/* The settings configured, every one the chapter has, as JSON: {"chapter":7,"size":256,
+ * "spp":64,...} with the names and values lab_configure takes. NULL on failure. */
+const char *lab_settings(Lab *lab);
+
+int lab_width(const Lab *lab);
+int lab_height(const Lab *lab);
+
+/* The steps of the render configured: samples per pixel, passes (chapter 8), 1 for
+ * Whitted's deterministic image. */
+int lab_steps(const Lab *lab);
+
+/* Step `step` (from 0) of rows row0 .. row0 + rows - 1 into out[3 * (r * width + c)],
+ * r counted from row0: the sample's radiance (NaN or infinite as the estimator returned
+ * it), or in chapter 8 the pass's pixel. Returns 0, or -1 (out of memory, rows outside
+ * the image). */
+int lab_render_band(Lab *lab, int step, int row0, int rows, double *out);
+
+/* Rays traced by the last lab_render_band: 0 camera, 1 bounce, 2 shadow, 3 photon
+ * rays (of the pass's photon maps, chapter 8, counted by the band that built them). */
+double lab_rays(const Lab *lab, int kind);
+
+/* Samples first .. first + count - 1 of pixel (col, row), each path recorded
+ * (record.h), as JSON: {"col":C,"row":R,"paths":[{"sample":S,...}, ...]}. NULL on
+ * failure (lab_error). The text stays valid until the next call. */
+const char *lab_record(Lab *lab, int col, int row, int first, int count);
+
+/* The scene for drawing its plan: camera, materials, triangles, spheres, point lights,
+ * as JSON; NULL on failure. Valid until the next call. */
+const char *lab_scene(Lab *lab);
+
+/* The 64-bit hash of the scene's bytes (scene_file.h), as 16 hex digits: the page uses
+ * it to find the reference of this scene. */
+const char *lab_scene_hash(Lab *lab);
+
+#endif

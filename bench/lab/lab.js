@@ -1,0 +1,622 @@
+/* lab.js (bench, chapter 8): the lab's page: settings, panels, references, the scene
+ * editor, and what the tests ask (labTest). docs/lab.md.
+ *
+ * The page's state is its address's fragment, "#chapter=3&M=1&b.M=30&fairness=samples":
+ * keys without a prefix are panel A's settings (lab.h's, and scene=NAME), "b." ones
+ * panel B's (B starts as A, or from A's size, seed and scene where b.chapter differs),
+ * and layout, fairness, workers, reference (exact|schlick: the reference both panels are
+ * measured against), pixel=COL,ROW and paths=K for the inspector. The gallery links its
+ * figures here that way.
+ */
+"use strict";
+
+const $ = function (id) { return document.getElementById(id); };
+
+/* The settings a panel's form offers: key, the chapter that introduces it, and the
+ * choices of a list (lab.c checks every value). */
+const FIELDS = [
+    {key: "chapter", chapter: 1, label: "chapter"},
+    {key: "scene", chapter: 1, label: "scene"},
+    {key: "size", chapter: 1, label: "width"},
+    {key: "spp", chapter: 2, label: "spp"},
+    {key: "passes", chapter: 8, label: "passes"},
+    {key: "sampling", chapter: 2, label: "pixel sampling",
+     choices: [["subpixels", 2], ["random", 2], ["stratified", 7], ["progressive", 8]]},
+    {key: "depth", chapter: 1, label: "depth"},
+    {key: "seed", chapter: 1, label: "seed"},
+    {key: "M", chapter: 3, label: "shadow rays M"},
+    {key: "fresnel", chapter: 4, label: "Fresnel", choices: [["schlick", 4], ["exact", 4]]},
+    {key: "sigma", chapter: 5, label: "Oren\u2013Nayar \u03c3"},
+    {key: "rr", chapter: 6, label: "roulette \u03b1 (or bounded)"},
+    {key: "mis", chapter: 7, label: "MIS", choices: [["0", 7], ["1", 7]]},
+    {key: "mirror", chapter: 7, label: "mirror light K"},
+    {key: "guide", chapter: 7, label: "sphere guide"},
+    {key: "photons", chapter: 8, label: "photons per pass"},
+    {key: "radius", chapter: 8, label: "first radius"},
+    {key: "alpha", chapter: 8, label: "radius \u03b1"},
+];
+
+/* The report's comparisons as fragments. */
+const PRESETS = [
+    ["", "(your own settings)"],
+    ["chapter=3&M=1&spp=4&b.M=30&fairness=samples", "1 against 30 shadow rays (Figure 11)"],
+    ["chapter=4&fresnel=schlick&b.fresnel=exact&reference=exact&fairness=time", "Schlick against exact Fresnel"],
+    ["chapter=6&rr=0.25&b.rr=0.75&spp=64&fairness=time", "roulette \u03b1 = 0.25 against 0.75"],
+    ["chapter=7&spp=256&b.chapter=8&b.passes=32&fairness=time", "chapter 7 against chapter 8, equal time"],
+];
+
+const PANEL_COLOURS = {a: "#d23030", b: "#2f6fd0"};
+
+const scenes = {};      /* name: its text as the page has it (edited, or as in scenes/) */
+const references = {};  /* file name: {image, mse, relMse, spp} once loaded */
+const referenceWaiters = {};
+const page = {layout: "one", fairness: "samples", reference: "", workers: 0, paths: 8};
+const longTasks = [];   /* main-thread tasks over 50 ms (PerformanceObserver): {start, duration} */
+let jobs = 0;
+let pool = null, helper = null, inspector = null, inspected = null;
+
+function chapterInfo(number) {
+    return LAB_CHAPTERS.filter(function (c) { return c.number === number; })[0];
+}
+
+/* ---- panels -------------------------------------------------------------------------- */
+
+function newPanel(name) {
+    const element = $("panel-" + name);
+    return {name: name, element: element, chapter: LAB_CHAPTERS[LAB_CHAPTERS.length - 1].number,
+            scene: "", overrides: {}, render: null, info: null, plan: null, error: "",
+            image: element.querySelector("canvas.image"),
+            overlay: element.querySelector("canvas.overlay"),
+            stats: element.querySelector(".stats"), form: element.querySelector(".settings")};
+}
+
+const panels = {a: newPanel("a"), b: newPanel("b")};
+
+function activePanels() {
+    return page.layout === "two" ? [panels.a, panels.b] : [panels.a];
+}
+
+function setChapter(panel, number) {
+    panel.chapter = number;
+    panel.scene = chapterInfo(number).scene;
+    const kept = {};
+    for (const key of ["size", "seed"])
+        if (key in panel.overrides)
+            kept[key] = panel.overrides[key];
+    panel.overrides = kept;
+}
+
+/* The settings text for lab_configure. */
+function settingsText(panel) {
+    const words = ["chapter=" + panel.chapter, "program=" + chapterInfo(panel.chapter).program];
+    for (const key in panel.overrides)
+        words.push(key + "=" + panel.overrides[key]);
+    return words.join(" ");
+}
+
+/* The form of a panel: the fields its chapter has, each showing the value in force
+ * (an empty field is the chapter program's default, shown greyed). */
+function buildForm(panel) {
+    const form = panel.form, effective = panel.info ? panel.info.settings : {};
+    form.textContent = "";
+    for (const field of FIELDS) {
+        if (field.chapter > panel.chapter) continue;
+        const label = document.createElement("label");
+        label.textContent = field.label + " ";
+        let input;
+        if (field.key === "chapter" || field.key === "scene" || field.choices) {
+            input = document.createElement("select");
+            const choices = field.key === "chapter"
+                ? LAB_CHAPTERS.map(function (c) { return [String(c.number), c.number + ": " + c.program]; })
+                : field.key === "scene" ? Object.keys(scenes).map(function (s) { return [s, s]; })
+                : field.choices.filter(function (c) { return c[1] <= panel.chapter; })
+                    .map(function (c) { return [c[0], c[0]]; });
+            for (const choice of choices) {
+                const option = document.createElement("option");
+                option.value = choice[0];
+                option.textContent = choice[1];
+                input.appendChild(option);
+            }
+            input.value = field.key === "chapter" ? String(panel.chapter)
+                : field.key === "scene" ? panel.scene
+                : String(field.key in panel.overrides ? panel.overrides[field.key] : effective[field.key]);
+        } else {
+            input = document.createElement("input");
+            input.value = field.key in panel.overrides ? panel.overrides[field.key] : "";
+            const value = effective[field.key];
+            input.placeholder = typeof value === "number" && !Number.isInteger(value) ? String(Number(value.toPrecision(4)))
+                              : value === undefined ? "" : String(value);
+        }
+        input.name = field.key;
+        input.onchange = function () { formChanged(panel, field.key, input.value); };
+        label.appendChild(input);
+        form.appendChild(label);
+    }
+}
+
+function formChanged(panel, key, value) {
+    if (key === "chapter")
+        setChapter(panel, Number(value));
+    else if (key === "scene")
+        panel.scene = value;
+    else if (value === "")
+        delete panel.overrides[key];
+    else
+        panel.overrides[key] = value;
+    $("preset").value = "";
+    writeFragment();
+    restart();
+}
+
+/* ---- references (make lab-references; docs/lab.md) ------------------------------------ */
+
+/* Called by a reference's script: meta {file, spp, mse, rel_mse}, the image as base64 of
+ * little-endian floats, rows from the top. */
+window.labReference = function (meta, data) {
+    const bytes = Uint8Array.from(atob(data), function (c) { return c.charCodeAt(0); });
+    references[meta.file] = {image: new Float32Array(bytes.buffer), mse: meta.mse,
+                             relMse: meta.rel_mse, spp: meta.spp};
+    (referenceWaiters[meta.file] || []).forEach(function (resolve) { resolve(references[meta.file]); });
+};
+
+/* The reference file for a panel's render: the scene's hash, the image's size, the
+ * depth and the Fresnel mode (the page's reference= choice, else the panel's own). */
+function referenceName(info) {
+    const s = info.settings;
+    if (s.chapter < 2 || (s.sigma !== undefined && s.sigma !== "scene")) return null;
+    const fresnel = page.reference || s.fresnel || "schlick";
+    return info.hash + "-" + info.width + "x" + info.height + "-d" + s.depth + "-" + fresnel + ".js";
+}
+
+function loadReference(name) {
+    if (!name || LAB_REFERENCES.indexOf(name) < 0) return Promise.resolve(null);
+    if (references[name]) return Promise.resolve(references[name]);
+    return new Promise(function (resolve) {
+        (referenceWaiters[name] = referenceWaiters[name] || []).push(resolve);
+        if (referenceWaiters[name].length > 1) return;
+        const script = document.createElement("script");
+        script.src = "references/" + name;
+        script.onerror = function () { resolve(null); };
+        document.head.appendChild(script);
+    });
+}
+
+/* ---- rendering ----------------------------------------------------------------------- */
+
+function restart() {
+    clearTimeout(restart.timer);
+    restart.timer = setTimeout(startRenders, 30);
+}
+
+let generation = 0; /* of startRenders: an older start that answers late is dropped */
+
+function startRenders() {
+    const mine = ++generation;
+    pool.mode = page.fairness;
+    pool.run([]);
+    inspector.clear();
+    const starting = activePanels().map(function (panel) {
+        panel.render = null;
+        panel.error = "";
+        const setup = {key: "job" + (++jobs), sceneName: panel.scene, sceneText: scenes[panel.scene],
+                       settings: settingsText(panel)};
+        return helper.ask("scene", setup).then(function (answer) {
+            panel.info = answer.info;
+            panel.plan = JSON.parse(answer.json);
+            panel.render = new Render(setup, answer.info);
+            panel.image.width = answer.info.width;
+            panel.image.height = answer.info.height;
+            const scale = Math.max(1, Math.ceil(640 / answer.info.width));
+            panel.overlay.width = answer.info.width * scale;
+            panel.overlay.height = answer.info.height * scale;
+            panel.image.getContext("2d").clearRect(0, 0, panel.image.width, panel.image.height);
+            buildForm(panel);
+            return loadReference(referenceName(answer.info)).then(function (reference) {
+                if (reference && reference.image.length === panel.render.mean.length)
+                    panel.render.setReference(reference);
+                return panel.render;
+            });
+        }, function (error) {
+            panel.error = error.message;
+            panel.info = null;
+            buildForm(panel);
+            showStats(panel);
+            return null;
+        });
+    });
+    Promise.all(starting).then(function (renders) {
+        if (mine !== generation) return;
+        if (!inspector.record && panels.a.plan) {
+            inspector.plan = panels.a.plan;
+            inspector.drawPlan();
+        }
+        /* After the next frame: the page laid out and painted with its new forms first, so
+         * that no long task of the main thread falls into the render. */
+        requestAnimationFrame(function () {
+            setTimeout(function () {
+                if (mine === generation) pool.run(renders.filter(function (r) { return r; }));
+            }, 0);
+        });
+        if (page.pixel && panels.a.render) {
+            inspect(panels.a, page.pixel[0], page.pixel[1]);
+            page.pixel = null;
+        }
+    });
+}
+
+/* sRGB codes of a radiance, as bench/image.c's image_tonemap. */
+function tonemap(value, exposure) {
+    const v = exposure * value;
+    if (!(v > 0)) return 0;
+    if (v >= 1) return 255;
+    const encoded = v <= 0.0031308 ? 12.92 * v : 1.055 * Math.pow(v, 1 / 2.4) - 0.055;
+    return Math.floor(255 * encoded + 0.5);
+}
+
+/* Draw the bands whose pixels changed (all of them with `all`), in the frame's budget of
+ * milliseconds: the rest wait for the next frame, so that the page stays responsive. */
+function drawBands(panel, all, budget) {
+    const render = panel.render, exposure = Math.pow(2, Number($("exposure").value));
+    const context = panel.image.getContext("2d"), start = performance.now();
+    if (!render.imageData)
+        render.imageData = context.createImageData(render.width, render.bandRows);
+    const data = render.imageData, pixels = data.data;
+    if (all)
+        for (let band = 0; band < render.bands; band++) render.dirty.add(band);
+    for (const band of render.dirty) {
+        if (!all && performance.now() - start > budget) break;
+        render.dirty.delete(band);
+        const row0 = band * render.bandRows, rows = Math.min(render.bandRows, render.height - row0);
+        for (let i = 0; i < render.width * rows; i++) {
+            const p = row0 * render.width + i;
+            for (let c = 0; c < 3; c++)
+                pixels[4 * i + c] = render.count[p] ? tonemap(render.mean[3 * p + c], exposure) : 0;
+            pixels[4 * i + 3] = 255;
+        }
+        context.putImageData(data, 0, row0, 0, 0, render.width, rows);
+    }
+}
+
+/* The panel's error now: against the reference, or the standard error of its samples. */
+function currentError(panel) {
+    const render = panel.render;
+    if (render.reference) {
+        const error = render.referenceError();
+        return {value: error.rmse, rmse: error.rmse, relMse: error.relMse, text: "RMSE " + number(error.rmse, 4) + ", relative MSE " +
+                number(error.relMse, 4) + " against the reference (" + render.reference.spp + " spp)"};
+    }
+    const se = render.standardError();
+    if (render.info.settings.chapter === 1)
+        return {value: NaN, text: "Whitted's image is deterministic: no noise to measure"};
+    return {value: se, text: isNaN(se) ? "error: waiting for two samples in every pixel"
+                                       : "standard error " + number(se, 4) + " (from the samples: no reference for these settings)"};
+}
+
+function showStats(panel) {
+    const stats = panel.stats, render = panel.render;
+    stats.className = panel.error ? "stats failed" : "stats";
+    if (panel.error || !render) {
+        stats.textContent = panel.error ? "cannot render: " + panel.error : "starting\u2026";
+        return;
+    }
+    const chapter8 = render.info.settings.chapter === 8, done = render.stepsDone();
+    const rays = render.rays[0] + render.rays[1] + render.rays[2] + render.rays[3];
+    const wall = render.wallSeconds(), error = currentError(panel);
+    panel.measured = error;
+    stats.textContent =
+        (chapter8 ? "passes " + number(done, 3) + " of " + render.steps + " (" +
+                    number(done * render.info.settings.spp, 4) + " spp)"
+                  : "spp " + number(done, 3) + " of " + render.steps) +
+        (render.stopped ? ", stopped at equal time" : render.finished ? ", done" : "") + "  " + wall.toFixed(2) + " s  " +
+        number(rays / wall / 1e6, 3) + " Mrays/s (" + number(rays / Math.max(render.seconds, 1e-9) / 1e6, 3) +
+        " per worker)\n" + error.text;
+    if (!isNaN(error.value) && error.value > 0) {
+        const last = render.history[render.history.length - 1];
+        if (!last || last[0] !== render.seconds)
+            render.history.push([render.seconds, wall, error.value]);
+    }
+}
+
+function drawPlot() {
+    const series = activePanels().filter(function (p) { return p.render; }).map(function (panel) {
+        const s = panel.render.info.settings;
+        return {label: panel.name.toUpperCase() + ": " + settingsText(panel).replace(/ program=\S+/, "") +
+                       (panel.render.reference ? " (RMSE)" : " (standard error)"),
+                colour: PANEL_COLOURS[panel.name],
+                points: panel.render.history.map(function (h) { return [h[0], h[2]]; })};
+    });
+    drawLogLogPlot($("plot"), series, {x: "processor seconds (all workers)", y: "error"});
+}
+
+let lastStats = 0;
+function frame(now) {
+    const started = performance.now();
+    for (const panel of activePanels())
+        if (panel.render && panel.render.dirty.size)
+            drawBands(panel, false, 8);
+    if (now - lastStats > 250) {
+        lastStats = now;
+        activePanels().forEach(showStats);
+        drawPlot();
+    }
+    frame.longest = Math.max(frame.longest || 0, performance.now() - started);
+    requestAnimationFrame(frame);
+}
+
+/* ---- the inspector ------------------------------------------------------------------- */
+
+function inspect(panel, col, row) {
+    if (!panel.render) return;
+    $("inspector-hint").textContent = "recording\u2026";
+    inspected = panel;
+    for (const other of activePanels())
+        if (other !== panel)
+            other.overlay.getContext("2d").clearRect(0, 0, other.overlay.width, other.overlay.height);
+    inspector.elements.overlay = panel.overlay;
+    const count = panel.render.info.settings.chapter === 1 ? 1 : page.paths; /* deterministic */
+    return helper.ask("record", panel.render.setup, {col: col, row: row, first: 0, count: count})
+        .then(function (answer) {
+            inspector.show(JSON.parse(answer.json), panel.plan, panel.render.width, panel.render.height);
+            $("inspector-hint").textContent = "panel " + panel.name.toUpperCase() + ": samples 0 to " +
+                (count - 1) + " of pixel (" + col + ", " + row + "); click a row or step through its vertices";
+            return answer.json;
+        }, function (error) {
+            $("inspector-hint").textContent = "cannot record: " + error.message;
+        });
+}
+
+function overlayClicked(panel, event) {
+    if (!panel.render) return;
+    const box = panel.overlay.getBoundingClientRect();
+    const col = Math.floor((event.clientX - box.left) / box.width * panel.render.width);
+    const row = Math.floor((event.clientY - box.top) / box.height * panel.render.height);
+    if (col >= 0 && col < panel.render.width && row >= 0 && row < panel.render.height)
+        inspect(panel, col, row);
+}
+
+/* ---- the scene editor ---------------------------------------------------------------- */
+
+function showScene() {
+    $("scene-text").value = scenes[$("scene-name").value];
+    $("scene-error").textContent = "";
+}
+
+/* Check the edited text as the chapter program would read it, then render with it. */
+function applyScene() {
+    const name = $("scene-name").value, text = $("scene-text").value;
+    const setup = {key: "check" + (++jobs), sceneName: name, sceneText: text, settings: settingsText(panels.a)};
+    return helper.ask("scene", setup).then(function () {
+        $("scene-error").textContent = "";
+        scenes[name] = text;
+        for (const panel of activePanels())
+            panel.scene = name;
+        restart();
+        return "";
+    }, function (error) {
+        $("scene-error").textContent = error.message;
+        return error.message;
+    });
+}
+
+/* ---- the address's fragment ---------------------------------------------------------- */
+
+function readFragment(fragment) {
+    const pairs = fragment.replace(/^#/, "").split("&").filter(Boolean).map(function (pair) {
+        const equals = pair.indexOf("=");
+        return [decodeURIComponent(pair.slice(0, equals)), decodeURIComponent(pair.slice(equals + 1))];
+    });
+    const a = {}, b = {};
+    page.layout = "one";
+    page.reference = "";
+    for (const [key, value] of pairs) {
+        if (key.indexOf("b.") === 0) { b[key.slice(2)] = value; page.layout = "two"; }
+        else if (key === "layout" || key === "fairness" || key === "reference") page[key] = value;
+        else if (key === "workers") page.workers = Number(value);
+        else if (key === "paths") page.paths = Number(value);
+        else if (key === "pixel") page.pixel = value.split(",").map(Number);
+        else a[key] = value;
+    }
+    applySettings(panels.a, a);
+    const base = b.chapter && b.chapter !== a.chapter
+        ? {size: a.size, seed: a.seed, scene: a.scene} : Object.assign({}, a);
+    applySettings(panels.b, Object.assign(base, b));
+}
+
+function applySettings(panel, settings) {
+    setChapter(panel, Number(settings.chapter) || LAB_CHAPTERS[LAB_CHAPTERS.length - 1].number);
+    for (const key in settings) {
+        if (settings[key] === undefined || key === "chapter") continue;
+        if (key === "scene") {
+            if (settings.scene in scenes) panel.scene = settings.scene;
+        } else {
+            panel.overrides[key] = settings[key];
+        }
+    }
+}
+
+function writeFragment() {
+    const words = [];
+    const add = function (prefix, panel) {
+        words.push(prefix + "chapter=" + panel.chapter);
+        if (panel.scene !== chapterInfo(panel.chapter).scene) words.push(prefix + "scene=" + panel.scene);
+        for (const key in panel.overrides) words.push(prefix + key + "=" + encodeURIComponent(panel.overrides[key]));
+    };
+    add("", panels.a);
+    if (page.layout === "two") add("b.", panels.b);
+    words.push("fairness=" + page.fairness);
+    if (page.reference) words.push("reference=" + page.reference);
+    history.replaceState(null, "", "#" + words.join("&"));
+}
+
+function showPage() {
+    panels.b.element.hidden = page.layout !== "two";
+    $("layout").value = page.layout;
+    $("fairness").value = page.fairness;
+    $("workers").value = page.workers;
+    $("paths").value = page.paths;
+    buildForm(panels.a);
+    buildForm(panels.b);
+}
+
+/* ---- what the browser test asks (bench/lab/browser_lab.js) ---------------------------- */
+
+function base64(floats) {
+    const bytes = new Uint8Array(floats.buffer);
+    let text = "";
+    for (let i = 0; i < bytes.length; i += 0x8000)
+        text += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+    return btoa(text);
+}
+
+window.labTest = {
+    /* Render a scene of scenes/ with these settings on `workers` workers of their own, in
+     * bands of `bandRows` rows (default: the page's), each result delayed by up to
+     * `jitter` ms at random (so that they arrive out of order): the image (float32, rows
+     * from the top), the means as the page keeps them (float64), and each pixel's
+     * standard error, as base64. With `keep`, its workers live on until release() (the
+     * benchmark reads their threads' processor time). */
+    render: function (sceneName, settings, workers, bandRows, jitter, keep) {
+        const setup = {key: "test" + (++jobs), sceneName: sceneName, sceneText: scenes[sceneName],
+                       settings: settings};
+        return helper.ask("scene", setup).then(function (answer) {
+            return new Promise(function (resolve, reject) {
+                const render = new Render(setup, answer.info, bandRows);
+                const own = new Pool(workers, function () {
+                    if (!render.complete()) return;
+                    const image = Float32Array.from(render.mean), se = new Float32Array(render.mean.length);
+                    for (let i = 0; i < se.length; i++) {
+                        const n = render.count[Math.floor(i / 3)];
+                        se[i] = n > 1 ? Math.sqrt(render.m2[i] / (n - 1) / n) : 0;
+                    }
+                    if (keep) labTest.kept = own; else own.setWorkers(0);
+                    resolve({width: render.width, height: render.height, image: base64(image),
+                             means: base64(render.mean),
+                             stdError: base64(se), rays: render.rays, seconds: render.wallSeconds(),
+                             workerSeconds: render.seconds});
+                }, function (r, message) { own.setWorkers(0); reject(new Error(message)); });
+                own.jitter = jitter || 0;
+                own.run([render]);
+            });
+        });
+    },
+    record: function (sceneName, settings, col, row, first, count) {
+        const setup = {key: "test" + (++jobs), sceneName: sceneName, sceneText: scenes[sceneName],
+                       settings: settings};
+        return helper.ask("record", setup, {col: col, row: row, first: first, count: count})
+            .then(function (answer) { return answer.json; });
+    },
+    /* Put this text in the editor as scene NAME and apply it: the error shown, or "". */
+    editScene: function (name, text) {
+        $("scene-name").value = name;
+        $("scene-text").value = text;
+        return applyScene().then(function () { return $("scene-error").textContent; });
+    },
+    release: function () {
+        if (labTest.kept) labTest.kept.setWorkers(0);
+        labTest.kept = null;
+    },
+    inspect: function (panel, col, row) { return inspect(panels[panel], col, row); },
+    step: function (by) { inspector.step(by); },
+    state: function () {
+        return {
+            panels: activePanels().map(function (panel) {
+                const r = panel.render;
+                return {error: panel.error, stats: panel.stats.textContent,
+                        complete: !!(r && r.finished), steps: r ? r.steps : 0,
+                        done: r ? r.stepsDone() : 0, started: r ? r.started : null,
+                        finished: r ? r.finished : null, reference: !!(r && r.reference),
+                        rmse: panel.measured ? panel.measured.rmse : null,
+                        relMse: panel.measured ? panel.measured.relMse : null,
+                        history: r ? r.history.length : 0};
+            }),
+            inspector: {summary: $("path-summary").textContent, rows: $("path-table").rows.length,
+                        hint: $("inspector-hint").textContent},
+            longTasks: longTasks.slice(), longestFrame: frame.longest || 0,
+            workers: pool.workers.length,
+        };
+    },
+};
+
+/* ---- start --------------------------------------------------------------------------- */
+
+function start() {
+    if ("PerformanceObserver" in window &&
+        (PerformanceObserver.supportedEntryTypes || []).indexOf("longtask") >= 0)
+        new PerformanceObserver(function (list) {
+            list.getEntries().forEach(function (entry) {
+                longTasks.push({start: entry.startTime, duration: entry.duration});
+            });
+        }).observe({entryTypes: ["longtask"]});
+    Object.keys(LAB_SCENES).sort().forEach(function (name) { scenes[name] = LAB_SCENES[name]; });
+    for (const name in scenes) {
+        const option = document.createElement("option");
+        option.value = option.textContent = name;
+        $("scene-name").appendChild(option);
+    }
+    for (const preset of PRESETS) {
+        const option = document.createElement("option");
+        option.value = preset[0];
+        option.textContent = preset[1];
+        $("preset").appendChild(option);
+    }
+    page.workers = navigator.hardwareConcurrency || 2;
+    readFragment(location.hash || "#chapter=" + LAB_CHAPTERS[LAB_CHAPTERS.length - 1].number);
+    $("scene-name").value = panels.a.scene;
+    showScene();
+    showPage();
+    helper = new Helper();
+    pool = new Pool(page.workers, function (render) {
+        for (const panel of activePanels())
+            if (panel.render && panel.render.finished)
+                showStats(panel);
+    }, function (render, message) {
+        for (const panel of activePanels())
+            if (panel.render === render) {
+                panel.error = message;
+                showStats(panel);
+            }
+    });
+    inspector = new Inspector({overlay: panels.a.overlay, plan: $("plan"), table: $("path-table"),
+                               detail: $("vertex-detail"), summary: $("path-summary")});
+    for (const name of ["a", "b"])
+        panels[name].overlay.onclick = overlayClicked.bind(null, panels[name]);
+    $("layout").onchange = function () { page.layout = this.value; showPage(); writeFragment(); restart(); };
+    $("fairness").onchange = function () { page.fairness = this.value; writeFragment(); restart(); };
+    $("workers").onchange = function () {
+        page.workers = Math.max(1, Math.min(32, Number(this.value) || 1));
+        pool.setWorkers(page.workers);
+        restart();
+    };
+    $("preset").onchange = function () {
+        if (!this.value) return;
+        readFragment(this.value);
+        showPage();
+        writeFragment();
+        restart();
+    };
+    $("exposure").oninput = function () {
+        for (const panel of activePanels()) if (panel.render) drawBands(panel, true);
+    };
+    $("restart").onclick = restart;
+    $("paths").onchange = function () {
+        page.paths = Math.max(1, Math.min(64, Number(this.value) || 1));
+        if (inspector.record) inspect(inspected, inspector.record.col, inspector.record.row);
+    };
+    $("previous-path").onclick = function () { inspector.setPath(inspector.path - 1); };
+    $("next-path").onclick = function () { inspector.setPath(inspector.path + 1); };
+    $("previous-vertex").onclick = function () { inspector.step(-1); };
+    $("next-vertex").onclick = function () { inspector.step(1); };
+    $("scene-name").onchange = showScene;
+    $("apply-scene").onclick = applyScene;
+    $("revert-scene").onclick = function () {
+        const name = $("scene-name").value;
+        scenes[name] = LAB_SCENES[name];
+        showScene();
+        restart();
+    };
+    window.onhashchange = function () { readFragment(location.hash); showPage(); restart(); };
+    startRenders();
+    requestAnimationFrame(frame);
+}
+
+start();

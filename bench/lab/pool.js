@@ -1,0 +1,303 @@
+/* pool.js (bench, chapter 8): the lab's web workers, and the renders they share.
+ *
+ * A render is a job (a scene, its name and the settings of lab.h) cut into tasks: step
+ * s of a band of rows. Tasks go out step by step to whichever worker is free; their
+ * results come back in any order, and each band's steps are added to its pixels in
+ * order, by Welford's update exactly as bench/renderer.c adds a pixel's samples. So the
+ * image is the chapter program's, bit for bit where the WebAssembly arithmetic is the
+ * native one, for any number of workers. With two renders the pool shares the workers
+ * between them at equal samples (the one behind gets the next task) or at equal
+ * processor time (the one that has used less; when one has taken all its samples, the
+ * other stops there, at the same time).
+ */
+"use strict";
+
+let workerUrl = null;
+
+/* A worker running the module and worker.js, from a Blob (a page opened from disk may
+ * not start one from a file). */
+function newLabWorker() {
+    if (!workerUrl) {
+        const source = LAB_WORKER["lab_module.js"] + "\n" + LAB_WORKER["worker.js"];
+        workerUrl = URL.createObjectURL(new Blob([source], {type: "text/javascript"}));
+    }
+    return new Worker(workerUrl);
+}
+
+/* Pixels per task, about: a band of rows takes a few tens of milliseconds. */
+const TASK_SAMPLES = 8192;
+
+class Render {
+    /* setup: {key, sceneName, sceneText, settings}; info: lab_configure's (worker.js);
+     * bandRows: rows per task (by default, about TASK_SAMPLES samples' worth). */
+    constructor(setup, info, bandRows) {
+        this.setup = setup;
+        this.info = info;
+        this.width = info.width;
+        this.height = info.height;
+        this.steps = info.steps;
+        const pixels = this.width * this.height;
+        const perStep = info.settings.chapter === 8 ? info.settings.spp : 1;
+        this.bandRows = Math.max(1, Math.min(this.height,
+                                             bandRows || Math.round(TASK_SAMPLES / (this.width * perStep))));
+        this.bands = Math.ceil(this.height / this.bandRows);
+        this.mean = new Float64Array(3 * pixels);
+        this.m2 = new Float64Array(3 * pixels);
+        this.count = new Uint32Array(pixels);
+        this.added = new Int32Array(this.bands);   /* each band's next step to add */
+        this.waiting = new Map();                  /* results that came early */
+        this.issued = 0;                           /* tasks sent: step * bands + band */
+        this.inFlight = 0;
+        this.seconds = 0;                          /* workers' time on its finished tasks */
+        this.rays = [0, 0, 0, 0];
+        this.started = performance.now();
+        this.finished = null;
+        this.dirty = new Set();
+        this.error = null;
+        this.history = [];                         /* [processor seconds, wall seconds, error] */
+        this.empty = this.single = pixels;         /* pixels with no step, with fewer than two */
+        this.variance = 0;                         /* the sum of the pixels' squared standard errors */
+        this.reference = null;
+        this.spare = [];                           /* result buffers to give back to workers */
+    }
+
+    tasksLeft() {
+        return !this.error && !this.stopped && this.issued < this.steps * this.bands;
+    }
+
+    /* Stop here: the other panel, at equal time, has finished. */
+    stop() {
+        if (this.finished) return;
+        this.stopped = true;
+        this.finished = performance.now();
+    }
+
+    /* The next task, in step order. */
+    nextTask() {
+        const step = Math.floor(this.issued / this.bands), band = this.issued % this.bands;
+        this.issued++;
+        this.inFlight++;
+        const row0 = band * this.bandRows;
+        return {step: step, row0: row0, rows: Math.min(this.bandRows, this.height - row0)};
+    }
+
+    /* A band's result: kept until its turn, then added. */
+    accept(result) {
+        this.inFlight--;
+        this.seconds += result.seconds;
+        for (let k = 0; k < 4; k++)
+            this.rays[k] += result.rays[k];
+        const band = result.row0 / this.bandRows;
+        this.waiting.set(result.step * this.bands + band, result);
+        for (let next; (next = this.waiting.get(this.added[band] * this.bands + band));) {
+            this.waiting.delete(this.added[band] * this.bands + band);
+            this.add(next);
+            this.spare.push(next.values.buffer);
+            this.added[band]++;
+            this.dirty.add(band);
+        }
+        if (this.complete())
+            this.finished = performance.now();
+    }
+
+    /* Measure against this reference from now on: {image, mse, relMse} (bench/measure.h). */
+    setReference(reference) {
+        this.reference = reference;
+        this.squared = this.relative = 0;
+        for (let i = 0; i < this.mean.length; i++)
+            this.addDifference(i, 1);
+    }
+
+    /* Add (sign 1) or take out (-1) value i's squared difference from the reference. */
+    addDifference(i, sign) {
+        const r = this.reference.image[i], d = this.mean[i] - r;
+        this.squared += sign * d * d;
+        this.relative += sign * d * d / (r * r + 0.01);
+    }
+
+    /* Welford's update of each pixel with its value of this step (renderer.c's
+     * pixel_sum_add), a value that is not finite being dropped. The sums behind the
+     * errors follow each pixel's change, so that measuring costs nothing per pixel. */
+    add(result) {
+        const values = result.values, first = result.row0 * this.width, reference = this.reference;
+        for (let i = 0; i < result.rows * this.width; i++) {
+            const r = values[3 * i], g = values[3 * i + 1], b = values[3 * i + 2];
+            if (!(isFinite(r) && isFinite(g) && isFinite(b)))
+                continue;
+            const p = first + i, n = ++this.count[p];
+            if (n === 1) this.empty--;
+            if (n === 2) this.single--;
+            for (let c = 0; c < 3; c++) {
+                const k = 3 * p + c, value = values[3 * i + c], delta = value - this.mean[k];
+                if (reference) this.addDifference(k, -1);
+                if (n > 2) this.variance -= this.m2[k] / (n - 2) / (n - 1);
+                this.mean[k] += delta / n;
+                this.m2[k] += delta * (value - this.mean[k]);
+                if (n > 1) this.variance += this.m2[k] / (n - 1) / n;
+                if (reference) this.addDifference(k, 1);
+            }
+        }
+    }
+
+    complete() {
+        return this.added.every(function (step) { return step >= this.steps; }, this);
+    }
+
+    /* Steps every pixel has (fractional: the bands ahead count in part). */
+    stepsDone() {
+        let sum = 0;
+        for (let band = 0; band < this.bands; band++)
+            sum += this.added[band];
+        return sum / this.bands;
+    }
+
+    wallSeconds() {
+        return ((this.finished || performance.now()) - this.started) / 1000;
+    }
+
+    /* The RMS over pixels and channels of each pixel's standard error, sqrt(M2 / (n - 1)
+     * / n): what the error of the image is, if its estimator is unbiased. NaN until
+     * every pixel has two steps. */
+    standardError() {
+        return this.single > 0 ? NaN : Math.sqrt(Math.max(0, this.variance) / this.mean.length);
+    }
+
+    /* RMSE and relative MSE against the reference: the squared differences less the
+     * reference's own variance. NaN until every pixel has a step. */
+    referenceError() {
+        if (this.empty > 0)
+            return {rmse: NaN, relMse: NaN};
+        const mse = this.squared / this.mean.length - this.reference.mse;
+        return {rmse: mse > 0 ? Math.sqrt(mse) : 0,
+                relMse: this.relative / this.mean.length - this.reference.relMse};
+    }
+}
+
+class Pool {
+    /* onResult(render): called after each band is added; onError(render, text). */
+    constructor(count, onResult, onError) {
+        this.workers = [];
+        this.renders = [];
+        this.mode = "samples";
+        this.jitter = 0; /* ms: a test delays each result by up to this, at random */
+        this.onResult = onResult;
+        this.onError = onError;
+        this.setWorkers(count);
+    }
+
+    /* Start `count` workers afresh: the renders running are to be started again. */
+    setWorkers(count) {
+        for (const slot of this.workers)
+            slot.worker.terminate();
+        this.workers = [];
+        this.renders = [];
+        while (this.workers.length < count) {
+            const slot = {worker: newLabWorker(), key: "", render: null};
+            slot.worker.onmessage = this.message.bind(this, slot);
+            this.workers.push(slot);
+        }
+        this.schedule();
+    }
+
+    /* Render these renders from now on (the others stop: their results are ignored); their
+     * time starts now. */
+    run(renders) {
+        this.renders = renders;
+        for (const render of renders)
+            render.started = performance.now();
+        this.schedule();
+    }
+
+    /* The render that gets the next task: at equal samples the one behind in steps, at
+     * equal time the one with less processor time (its tasks in flight counted at its
+     * mean task's time). */
+    choose() {
+        let best = null, bestScore = Infinity;
+        for (const render of this.renders) {
+            if (!render.tasksLeft())
+                continue;
+            const done = render.issued - render.inFlight;
+            const score = this.mode === "time"
+                ? render.seconds + render.inFlight * (done > 0 ? render.seconds / done : 0)
+                : render.issued / render.bands;
+            if (score < bestScore)
+                best = render, bestScore = score;
+        }
+        return best;
+    }
+
+    schedule() {
+        for (const slot of this.workers) {
+            if (slot.render)
+                continue;
+            const render = this.choose();
+            if (!render)
+                return;
+            const task = render.nextTask();
+            task.type = "band";
+            task.job = render.setup.key;
+            task.buffer = render.spare.pop() || null; /* filled and sent back: less garbage */
+            if (slot.key !== render.setup.key) {
+                task.setup = render.setup;
+                slot.key = render.setup.key;
+            }
+            slot.render = render;
+            slot.worker.postMessage(task, task.buffer ? [task.buffer] : []);
+        }
+    }
+
+    message(slot, event) {
+        const message = event.data, render = slot.render;
+        slot.render = null;
+        if (this.jitter > 0 && message.type === "band") /* a test's: results out of order */
+            setTimeout(this.deliver.bind(this, render, message), Math.random() * this.jitter);
+        else
+            this.deliver(render, message);
+        if (message.type === "error")
+            slot.key = "";
+        this.schedule();
+    }
+
+    deliver(render, message) {
+        if (render && !render.stopped && this.renders.indexOf(render) >= 0 &&
+            message.job === render.setup.key) {
+            if (message.type === "band") {
+                render.accept(message);
+                if (render.finished && this.mode === "time") /* equal time reached */
+                    for (const other of this.renders)
+                        other.stop();
+                this.onResult(render);
+            } else {
+                render.error = message.message;
+                this.onError(render, message.message);
+            }
+        }
+    }
+}
+
+/* One more worker, for the page's questions: a scene and its settings checked, a plan,
+ * paths recorded. Answers come as promises. */
+class Helper {
+    constructor() {
+        this.worker = newLabWorker();
+        this.pending = new Map();
+        this.next = 1;
+        this.worker.onmessage = (event) => {
+            const message = event.data, waiting = this.pending.get(message.id);
+            this.pending.delete(message.id);
+            if (message.type === "error")
+                waiting.reject(new Error(message.message));
+            else
+                waiting.resolve(message);
+        };
+    }
+
+    ask(type, setup, fields) {
+        const id = this.next++;
+        const message = Object.assign({type: type, id: id, setup: setup}, fields || {});
+        return new Promise((resolve, reject) => {
+            this.pending.set(id, {resolve: resolve, reject: reject});
+            this.worker.postMessage(message);
+        });
+    }
+}
