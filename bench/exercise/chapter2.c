@@ -78,8 +78,9 @@ static void grade_cosine_pdf(Grading *g)
                              "cos(theta) / pi = %.4f): a missing 1 / pi; it integrates to pi, not "
                              "1", pdf, w.z, right);
             else
-                grading_fail(g, "the pdf is %.4f at cos(theta) = %.3f, where cos(theta) / pi = "
-                             "%.4f", pdf, w.z, right);
+                grading_fail(g, "the pdf is %.*f at cos(theta) = %.3f, where cos(theta) / pi = "
+                             "%.*f", grading_decimals(pdf, right), pdf, w.z,
+                             grading_decimals(pdf, right), right);
         }
     }
     grading_note(g, "%d random directions over the whole sphere against cos(theta) / pi above "
@@ -109,8 +110,9 @@ static void grade_lambert(Grading *g)
             snprintf(furnace, sizeof furnace, "a furnace box of rho = %.2f emitting 1 gives L = "
                      "%.2f where 1 / (1 - rho) = %.2f is exact", rho[c], 1.0 / (1.0 - albedo),
                      1.0 / (1.0 - rho[c]));
-        grading_fail(g, "f = %.4f for rho = %.2f, where rho / pi = %.4f: %s (%s)", got[c], rho[c],
-                     rho[c] / PI, furnace,
+        int decimals = grading_decimals(got[c], rho[c] / PI);
+        grading_fail(g, "f = %.*f for rho = %.2f, where rho / pi = %.*f: %s (%s)", decimals,
+                     got[c], rho[c], decimals, rho[c] / PI, furnace,
                      fabs(got[c] - rho[c]) < 1e-12 ? "a missing 1 / pi?"
                                                    : "f cos integrated over the hemisphere must be rho");
         return;
@@ -134,17 +136,17 @@ const Exercise exercises[] = {
      "u1, u2 in [0, 1): invert the CDFs P(theta) = sin^2(theta) and P(phi) = phi / (2 pi) (eq. "
      "12), so sin(theta) = sqrt(u1), cos(theta) = sqrt(1 - u1), phi = 2 pi u2. See "
      "docs/chapter2.md, section 2.",
-     "return vec3(0, 0, 1);", grade_cosine_sample, NULL},
+     "return vec3(0, 0, 1);", grade_cosine_sample, NULL, ""},
     {"2.2", "hemisphere_pdf_cosine",
      "Return the density in solid angle of the cosine sampler at the unit local direction "
      "w_local: cos(theta) / pi (cos(theta) = w_local.z) above the surface, 0 below. See "
      "docs/chapter2.md, section 2.",
-     "return 0.0;", grade_cosine_pdf, NULL},
+     "return 0.0;", grade_cosine_pdf, NULL, ""},
     {"2.3", "lambert_brdf",
      "Return the Lambertian BRDF of reflectance rho, f = rho / pi (eq. 8): the same for every "
      "pair of directions, so that f cos(theta) integrated over the hemisphere is rho. See "
      "docs/chapter2.md, section 1.",
-     "return vec3(0, 0, 0);", grade_lambert, NULL},
+     "return vec3(0, 0, 0);", grade_lambert, NULL, ""},
     {"2.4", "path_radiance",
      "The path tracer (eq. 1): from the camera ray, find each vertex (path_vertex); on the "
      "front of a surface add throughput times its emission; stop at a light or after "
@@ -152,6 +154,6 @@ const Exercise exercises[] = {
      "at a diffuse surface, path_specular otherwise), multiply the throughput by the weight "
      "it returns, count the bounce (counts->bounce) and spawn the next ray with ray_spawn. "
      "See docs/chapter2.md, section 3.",
-     "return vec3(0, 0, 0);", grade_path, &path_check},
+     "return vec3(0, 0, 0);", grade_path, &path_check, "2.1"},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

@@ -132,16 +132,16 @@ const Exercise exercises[] = {
      "Return Oren-Nayar's A = 1 - sigma^2 / (2 (sigma^2 + 0.33)) (eq. 14, corrected: the "
      "report leaves out the \"1 -\"), sigma the roughness in radians. See docs/chapter5.md, "
      "section 1.",
-     "return 0.0;", grade_a, NULL},
+     "return 0.0;", grade_a, NULL, ""},
     {"5.2", "oren_nayar_b",
      "Return Oren-Nayar's B = 0.45 sigma^2 / (sigma^2 + 0.09) (eq. 14), sigma in radians. See "
      "docs/chapter5.md, section 1.",
-     "return 0.0;", grade_b, NULL},
+     "return 0.0;", grade_b, NULL, ""},
     {"5.3", "oren_nayar_factor",
      "Return f / (rho / pi) = A + B max(0, cos(phi_i - phi_o)) sin(alpha) tan(beta) (eq. 13, "
      "with tan(beta), not the report's sin(beta)) for unit local directions wi, wo, alpha = "
      "max(theta_i, theta_o), beta = min, without trigonometry: max(0, x_i x_o + y_i y_o) / "
      "max(z_i, z_o) (A alone when that maximum is 0). See docs/chapter5.md, section 2.",
-     "return 0.0;", grade_factor, &rough_check},
+     "return 0.0;", grade_factor, &rough_check, "5.1 5.2"},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

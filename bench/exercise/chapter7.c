@@ -166,7 +166,7 @@ const Exercise exercises[] = {
      "against strategy g for one direction: (count_f pdf_f)^2 / ((count_f pdf_f)^2 + (count_g "
      "pdf_g)^2), 0 when count_f pdf_f is 0; the two strategies' weights sum to one. See "
      "docs/chapter7.md, section 2.",
-     "return 0.0;", grade_power, NULL},
+     "return 0.0;", grade_power, NULL, ""},
     {"7.2", "mirror_light_shadow_ray",
      "One shadow ray at the diffuse point x to the image of a lamp point y "
      "(area_light_sample) in `plane`: with h_x, h_y the heights of x and y above the plane "
@@ -177,6 +177,6 @@ const Exercise exercises[] = {
      "then value = Le f R cos(alpha) cos(beta) A / d^2 (R the mirror's reflectance), wi, "
      "and pdf = area_light_pdf(scene, d, cos(beta)). See docs/chapter7.md, section 3.",
      "ShadowRay ray = {vec3(0, 0, 0), vec3(0, 0, 0), 0.0};\nreturn ray;", grade_mirror_light,
-     NULL},
+     NULL, ""},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

@@ -131,11 +131,11 @@ const Exercise exercises[] = {
      "wo), Phi the photon's power) over the photons on this surface (normal . n >= "
      "PHOTON_NORMAL_COS) that arrived on its side (incoming . n > 0), divided by the disc's "
      "area pi r^2. See docs/chapter8.md, section 4.",
-     "return vec3(0, 0, 0);", grade_density, NULL},
+     "return vec3(0, 0, 0);", grade_density, NULL, ""},
     {"8.2", "ppm_radius",
      "Return pass j's radius in progressive photon mapping, r_j = r_1 sqrt(j^(alpha - 1)) "
      "with 0 < alpha < 1 (r_1 = first_radius), so that both the bias and the variance go to "
      "zero. See docs/chapter8.md, section 5.",
-     "return first_radius;", grade_radius, NULL},
+     "return first_radius;", grade_radius, NULL, ""},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

@@ -40,6 +40,8 @@ typedef struct {
                              neutral value */
     void (*grade)(Grading *g);
     const RenderCheck *render; /* its reference render, or NULL */
+    const char *uses;     /* the ids of the chapter's other exercises whose functions its
+                             grader's calls reach ("3.1 3.3"), or "" */
 } Exercise;
 
 /* Each chapter's table, bench/exercise/chapterN.c; the grader links one of them. */
@@ -48,6 +50,12 @@ extern const int exercise_count;
 
 /* The exercise of that id, or NULL. */
 const Exercise *exercise_find(const char *id);
+
+/* Grade exercise e: first every exercise it uses (e->uses, and theirs, in the order the
+ * code depends on them), then e itself. The first that fails is the verdict: a grader
+ * never blames an exercise for the mistake of one it calls ("exercise 2.1 (...), which
+ * path_radiance depends on, is wrong first: ..."). Run alike in the probe and the judge. */
+void exercise_grade(const Exercise *e, Grading *g);
 
 /* Each grader runs twice, in two processes. In the student's program (the probe, probe.c)
  * every value the student's code computes passes through ASK, which sends it to the
@@ -82,6 +90,9 @@ int grading_fail(Grading *g, const char *format, ...) __attribute__((format(prin
 
 /* Fails and returns 1 when `value` is NaN or infinite, naming `what` it is. */
 int grading_not_finite(Grading *g, double value, const char *what);
+
+/* How many decimals, at least 4, show a and b different (%.*f); 17 when none do. */
+int grading_decimals(double a, double b);
 
 /* A count with thousands separated: 1310 as "1,310". Returns text. */
 char *grading_count(double count, char *text, size_t size);
