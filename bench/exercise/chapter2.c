@@ -32,23 +32,9 @@ static void grade_cosine_sample(Grading *g)
         Rng rng = rng_for_sample(21, 1, (uint64_t)i);
         double u1, u2;
         rng_pair(&rng, &u1, &u2);
-        Vec3 w = ASK_VEC3(g, hemisphere_sample_cosine(u1, u2));
-        double length = vec3_length(w);
-        if (!(fabs(length - 1.0) < 1e-6) || !(w.z > 0.0)) {
-            warp_add(&warp, i, -1, 0, u1, u2, NAN, NAN);
-            continue;
-        }
-        int ring = (int)((1.0 - w.z) * RINGS);
-        double phi = atan2(w.y, w.x);
-        int sector = (int)((phi + PI) / (2.0 * PI) * SECTORS);
-        warp_add(&warp, i, ring < RINGS ? ring : RINGS - 1, sector < SECTORS ? sector : SECTORS - 1,
-                 u1, u2, w.x, w.y);
+        warp_add_hemisphere(&warp, i, u1, u2, ASK_VEC3(g, hemisphere_sample_cosine(u1, u2)));
     }
-    for (int r = 0; r < RINGS; r++) {
-        double top = 1.0 - (double)r / RINGS, bottom = 1.0 - (double)(r + 1) / RINGS;
-        for (int s = 0; s < SECTORS; s++)
-            warp.expected[r * SECTORS + s] = WARP_SAMPLES * (top * top - bottom * bottom) / SECTORS;
-    }
+    warp_expect_cosine(&warp, WARP_SAMPLES);
     grading_warp(g, &warp, "the hemisphere seen from above", LEVEL, 1,
                  "is cos(theta) = sqrt(1 - u1), sin(theta) = sqrt(u1) and phi = 2 pi u2 "
                  "(eq. 12, docs/chapter2.md)?");

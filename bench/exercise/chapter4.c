@@ -74,10 +74,13 @@ static void grade_polarised(Grading *g)
                 int d = grading_decimals(got_s, s) > grading_decimals(got_p, p)
                             ? grading_decimals(got_s, s)
                             : grading_decimals(got_p, p);
+                char off[120] = "";
+                if (d > 4)
+                    snprintf(off, sizeof off, " (off by %.2g and %.2g, where rounding stays "
+                             "within 1e-9)", got_s - s, got_p - p);
                 grading_fail(g, "at %d degrees from index %.2f into %.2f, R_s = %.*f and R_p = "
-                             "%.*f, where eqs. 4-5 give %.*f and %.*f (off by %.2g and %.2g; "
-                             "rounding allows 1e-9)%s", a, n_i, n_t, d, got_s, d, got_p, d, s,
-                             d, p, got_s - s, got_p - p,
+                             "%.*f, where eqs. 4-5 give %.*f and %.*f%s%s", a, n_i, n_t, d,
+                             got_s, d, got_p, d, s, d, p, off,
                              fabs(got_s - swapped_s) <= 1e-9 && fabs(got_p - swapped_p) <= 1e-9
                                  ? ": those of the same angles with n_i and n_t swapped"
                                  : "");
@@ -116,9 +119,8 @@ static void grade_unpolarised(Grading *g)
                              got, a, n_i, n_t, fabs(got - s) <= 1e-9 ? "s" : "p", want);
             else
                 grading_fail(g, "R = %.*f at %d degrees from index %.2f into %.2f, where (R_s + "
-                             "R_p) / 2 = %.*f (eq. 3; off by %.2g, rounding allows 1e-9)",
-                             grading_decimals(got, want), got, a, n_i, n_t,
-                             grading_decimals(got, want), want, got - want);
+                             "R_p) / 2 = %.*f (eq. 3)", grading_decimals(got, want), got, a, n_i,
+                             n_t, grading_decimals(got, want), want);
         }
     grading_note(g, "%d incidences against (R_s + R_p) / 2; the largest R returned %.4f", checked,
                  largest);

@@ -48,14 +48,16 @@ static void grade_coefficient(Grading *g, const char *name, double (*yours)(doub
         if (grading_not_finite(g, got, name) || fabs(got - want) <= 1e-12)
             continue;
         double degrees = sigma * PI / 180.0;
+        int decimals = grading_decimals(got, want);
         if (fabs(got - right(degrees)) <= 1e-12)
             grading_fail(g, "%s(%.2f) = %.6f, which is %s of %.2f degrees: sigma is in radians",
                          name, sigma, got, name, sigma);
         else if (misprint && nonzero)
-            grading_fail(g, "%s(%.2f) = %.6f where eq. 14 gives %.6f: %s", name, sigma, got, want,
-                         missing);
+            grading_fail(g, "%s(%.2f) = %.*f where eq. 14 gives %.*f: %s", name, sigma, decimals,
+                         got, decimals, want, missing);
         else
-            grading_fail(g, "%s(%.2f) = %.6f where eq. 14 gives %.6f%s", name, sigma, got, want,
+            grading_fail(g, "%s(%.2f) = %.*f where eq. 14 gives %.*f%s", name, sigma, decimals,
+                         got, decimals, want,
                          sigma == 0.0 ? " (at sigma = 0 the surface is Lambertian: A = 1, B = 0)"
                                       : "");
     }
@@ -94,9 +96,10 @@ static void grade_factor_closed_form(Grading *g)
             continue;
         double with_sin = right_a(sigma) +
                           right_b(sigma) * fmax(0.0, cos(pi_ - po)) * sin(alpha) * sin(beta);
-        grading_fail(g, "the factor is %.5f at sigma = %.2f, theta_i = %.1f, theta_o = %.1f "
-                     "degrees, cos(phi_i - phi_o) = %.2f, where eq. 13 gives %.5f%s", got, sigma,
-                     ti * 180.0 / PI, to * 180.0 / PI, cos(pi_ - po), want,
+        grading_fail(g, "the factor is %.*f at sigma = %.2f, theta_i = %.1f, theta_o = %.1f "
+                     "degrees, cos(phi_i - phi_o) = %.2f, where eq. 13 gives %.*f%s",
+                     grading_decimals(got, want), got, sigma, ti * 180.0 / PI, to * 180.0 / PI,
+                     cos(pi_ - po), grading_decimals(got, want), want,
                      fabs(got - with_sin) <= 1e-9 ? ": sin(beta) where tan(beta) belongs (the "
                                                     "report's misprint)" : "");
     }

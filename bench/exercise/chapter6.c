@@ -102,8 +102,9 @@ static void grade_survival(Grading *g)
             grading_fail(g, "survival %.3f for throughput (%.2f, %.2f, %.2f) is the channels' "
                          "mean; the largest channel bounds the weight", got, t.x, t.y, t.z);
         else
-            grading_fail(g, "survival %.4f for throughput (%.2f, %.2f, %.2f), where min(1, max "
-                         "component) = %.4f", got, t.x, t.y, t.z, want);
+            grading_fail(g, "survival %.*f for throughput (%.2f, %.2f, %.2f), where min(1, max "
+                         "component) = %.*f", grading_decimals(got, want), got, t.x, t.y, t.z,
+                         grading_decimals(got, want), want);
     }
 }
 

@@ -55,9 +55,10 @@ static void grade_power(Grading *g)
             grading_fail(g, "the weight is %.4f, without the sample counts (%d and %d): the power "
                          "heuristic weighs n_f p_f against n_g p_g, giving %.4f", wf, cf, cg, want);
         else
-            grading_fail(g, "the weight is %.4f for counts %d, %d and pdfs %.3f, %.3f, where "
-                         "(n_f p_f)^2 / ((n_f p_f)^2 + (n_g p_g)^2) = %.4f", wf, cf, cg, pf, pg,
-                         want);
+            grading_fail(g, "the weight is %.*f for counts %d, %d and pdfs %.3f, %.3f, where "
+                         "(n_f p_f)^2 / ((n_f p_f)^2 + (n_g p_g)^2) = %.*f",
+                         grading_decimals(wf, want), wf, cf, cg, pf, pg,
+                         grading_decimals(wf, want), want);
     }
     grading_note(g, "%d random counts and densities (some 0) against the closed form", checked);
 }

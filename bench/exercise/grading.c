@@ -264,6 +264,28 @@ void warp_add(Warp *warp, long index, int row, int col, double u1, double u2, do
     }
 }
 
+void warp_add_hemisphere(Warp *warp, long index, double u1, double u2, Vec3 local)
+{
+    if (!(fabs(vec3_length(local) - 1.0) < 1e-6) || !(local.z > 0.0)) {
+        warp_add(warp, index, -1, 0, u1, u2, NAN, NAN);
+        return;
+    }
+    int ring = (int)((1.0 - local.z) * warp->rows);
+    int sector = (int)((atan2(local.y, local.x) + PI) / (2.0 * PI) * warp->cols);
+    warp_add(warp, index, ring < warp->rows ? ring : warp->rows - 1,
+             sector < warp->cols ? sector : warp->cols - 1, u1, u2, local.x, local.y);
+}
+
+void warp_expect_cosine(Warp *warp, long samples)
+{
+    for (int r = 0; r < warp->rows; r++) {
+        double top = 1.0 - (double)r / warp->rows, bottom = 1.0 - (double)(r + 1) / warp->rows;
+        for (int s = 0; s < warp->cols; s++)
+            warp->expected[r * warp->cols + s] =
+                (double)samples * (top * top - bottom * bottom) / warp->cols;
+    }
+}
+
 /* A sample's colour: where it started on the square, as a 4 x 4 checkerboard of hues. */
 static Vec3 sample_colour(double u1, double u2)
 {
@@ -386,6 +408,25 @@ int grading_warp(Grading *g, const Warp *warp, const char *what, double level, i
         grading_fail(g, "%s of the samples fell %s, where the density is 0 (%s): %s",
                      grading_count(impossible, observed_text, sizeof observed_text),
                      warp->labels.impossible, verdict, hint);
+        return 0;
+    }
+    /* Every sample in one cell: the same direction or point whatever the numbers. */
+    int filled = 0, only = 0;
+    for (int i = 0; i < cells - 1; i++)
+        if (warp->observed[i] > 0.0) {
+            filled++;
+            only = i;
+        }
+    if (filled == 1 && warp->observed[only] > 1.0) {
+        int row = only / warp->cols;
+        const char *at = row == 0 ? warp->labels.first_row
+                                  : row == warp->rows - 1 ? warp->labels.last_row : "";
+        grading_fail(g, "all %s samples fell into one cell, %s %d of %d%s%s%s and %s %d of %d: "
+                     "does the result change with the random numbers at all? (%s): %s",
+                     grading_count(warp->observed[only], observed_text, sizeof observed_text),
+                     warp->labels.row_name, row + 1, warp->rows, *at ? " (" : "", at,
+                     *at ? ")" : "", warp->labels.col_name, only % warp->cols + 1, warp->cols,
+                     verdict, hint);
         return 0;
     }
     /* The row or column whose total is furthest from its expected total, in standard

@@ -136,6 +136,15 @@ void warp_free(Warp *warp);
 void warp_add(Warp *warp, long index, int row, int col, double u1, double u2, double x,
               double y);
 
+/* Sample `index`, the unit direction `local` of a hemisphere about z drawn from (u1, u2),
+ * into a warp test of rows rings of equal height (1 - z, row 0 at the pole) and cols
+ * sectors of phi; below the horizon, off the unit sphere or NaN into the impossible cell. */
+void warp_add_hemisphere(Warp *warp, long index, double u1, double u2, Vec3 local);
+
+/* Such a warp test's expected counts for `samples` drawn with density cos(theta) / pi:
+ * a ring between heights a < b holds b^2 - a^2 of them, each sector 1 / cols of that. */
+void warp_expect_cosine(Warp *warp, long samples);
+
 /* The chi-square test of the histogram at significance level `level`, Sidak-corrected
  * for `tests` such tests of the exercise; the picture OUT/exercise-ID-warp.png (samples
  * on the square, where they went, observed and expected counts); on failure the row or
