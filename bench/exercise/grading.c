@@ -89,7 +89,8 @@ static int grade_used(Grading *g, const Exercise *e, const Exercise *used)
     size_t length = strlen(part.numbers);
     if (length > 0 && part.numbers[length - 1] == '\n')
         part.numbers[length - 1] = '\0';
-    grading_note(g, "exercise %s: %s", used->id, part.numbers);
+    if (length > 1)
+        grading_note(g, "exercise %s: %s", used->id, part.numbers);
     return 0;
 }
 
