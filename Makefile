@@ -353,8 +353,8 @@ LAB           := $(BUILD)/lab
 LAB_EMCC       = NODE_PATH=/usr/share/nodejs emcc
 LAB_EMCC_FLAGS = $(filter-out -pthread,$(REQUIRED)) -DCHAPTER=$(FINAL) -Ilib -Ibench $(PKG_CFLAGS) -O3 -msimd128 -flto -MMD -MP
 LAB_LIB       := $(call upto,$(FINAL),$(LIB_SOURCES))
-LAB_BENCH     := bench/scene_file.c bench/material_names.c bench/renderer.c bench/image.c \
-                 bench/atomic_file.c bench/stats.c bench/ppm.c
+LAB_BENCH     := bench/scene_file.c bench/material_names.c bench/renderer.c bench/sample_order.c \
+                 bench/image.c bench/atomic_file.c bench/stats.c bench/ppm.c
 LAB_C         := bench/lab/json.c bench/lab/record.c bench/lab/lab.c
 LAB_PAGE      := $(addprefix $(LAB)/,index.html lab.js pool.js plot.js inspector.js)
 LAB_WRAPS      = $(shell grep -o '__wrap_[a-z_]*' bench/lab/record.c | sort -u | sed 's/__wrap_/--wrap=/' | paste -sd, -)

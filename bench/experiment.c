@@ -18,6 +18,9 @@
 #if CHAPTER >= 7
 #include "sphere_guide.h"
 #endif
+#if CHAPTER >= 8
+#include "path_final.h"
+#endif
 
 /* The bytes of the scene file as read by experiment_load_scene: the scene is read once
  * (a pipe or a FIFO can be read only once), and these bytes name its references and are
@@ -254,7 +257,32 @@ Image experiment_plot(const Plot *plot, int width, int height)
         cli_fail(1, "out of memory for a %d x %d plot", width, height);
     return image;
 }
+
+void experiment_write_plot(const Options *options, const char *name, const Plot *plot,
+                           int width, int height, const char *caption)
+{
+    Image image = experiment_plot(plot, width, height);
+    experiment_write_figure(options, name, &image, &caption, 1, 1.0);
+    image_free(&image);
+}
 #endif
+
+void experiment_write_crops(const Options *options, const char *name, const Image *images,
+                            const char *const *captions, int count, int left, int top,
+                            int side, int scale)
+{
+    Image crops[8] = {{0, 0, NULL}};
+    if (count > 8)
+        cli_fail(1, "%d crops in one figure (at most 8)", count);
+    for (int i = 0; i < count; i++) {
+        crops[i] = image_crop(&images[i], left, top, side, scale);
+        if (!crops[i].pixels)
+            cli_fail(1, "out of memory for a crop");
+    }
+    experiment_write_figure(options, name, crops, captions, count, PANEL_EXPOSURE);
+    for (int i = 0; i < count; i++)
+        image_free(&crops[i]);
+}
 
 void experiment_write_table(const Options *options, const char *name, const TableRow *rows,
                             int count)
@@ -264,6 +292,15 @@ void experiment_write_table(const Options *options, const char *name, const Tabl
     snprintf(file_name, sizeof file_name, "%s.csv", name);
     experiment_path(options, file_name, path, sizeof path);
     announce(table_write_csv(path, rows, count), path);
+}
+
+void experiment_write_numbers(const Options *options, const char *name, const char *header,
+                              const double *values, int rows, int columns, const int *decimals)
+{
+    char file_name[256], path[4400];
+    snprintf(file_name, sizeof file_name, "%s.csv", name);
+    experiment_path(options, file_name, path, sizeof path);
+    announce(table_write_numbers_csv(path, header, values, rows, columns, decimals), path);
 }
 
 TableRow experiment_row(const char *panel, const char *settings, const RenderResult *result)
@@ -708,6 +745,78 @@ PathSettings experiment_final_estimator(const Options *options, const MirrorPlan
 }
 #endif
 
+#if CHAPTER >= 8
+void experiment_render_ppm(const Options *options, const char *name, const Scene *scene,
+                           const RenderSettings *settings, const PpmSettings *ppm,
+                           PpmResult *result)
+{
+    render_install_interrupt();
+    if (ppm_render(scene, settings, ppm, result) != 0)
+        cli_fail(1, "out of memory rendering %d x %d with photons", settings->image.width,
+                 settings->image.height);
+    if (name && result->render.interrupted)
+        experiment_write_panel(options, name, &result->render);
+    experiment_exit_if_interrupted(&result->render, NULL);
+}
+
+BiasVariance experiment_seeds(const Options *options, const Scene *scene, const PathSettings *path,
+                              const PpmSettings *ppm, int spp, int seeds,
+                              const Reference references[2], const unsigned char *left_out)
+{
+    const Image *reference = &references[0].image;
+    SeedImages images;
+    if (seed_images_begin(&images, reference->width, reference->height, left_out) != 0)
+        cli_fail(1, "out of memory for the table");
+    for (int k = 0; k < seeds; k++) {
+        Options seeded = *options;
+        seeded.seed = options->seed + (uint64_t)k;
+        seeded.quiet = 1;
+        RenderSettings settings = experiment_render_settings(
+            &seeded, scene, spp, ppm ? PIXEL_PROGRESSIVE : PIXEL_STRATIFIED, "table");
+        if (ppm) {
+            PpmResult result;
+            experiment_render_ppm(options, NULL, scene, &settings, ppm, &result);
+            seed_images_add(&images, &result.render.image, result.render.seconds,
+                            result.cpu_seconds, reference);
+            ppm_result_free(&result);
+        } else {
+            RenderResult result;
+            double cpu = stats_cpu_now();
+            experiment_render(scene, &settings, path_final_radiance, path, &result);
+            cpu = stats_cpu_now() - cpu;
+            experiment_exit_if_interrupted(&result, NULL);
+            seed_images_add(&images, &result.image, result.seconds, cpu, reference);
+            render_result_free(&result);
+        }
+    }
+    BiasVariance error;
+    seed_images_finish(&images, reference, &references[1].image, &error);
+    return error;
+}
+
+void experiment_write_error_table(const Options *options, const char *name,
+                                  const SettingError *rows, int count)
+{
+    char file_name[256], path[4400];
+    bias_variance_print(stdout, rows, count);
+    snprintf(file_name, sizeof file_name, "%s.csv", name);
+    experiment_path(options, file_name, path, sizeof path);
+    announce(bias_variance_write_csv(path, rows, count), path);
+}
+
+void describe_ppm(const PpmSettings *ppm, const PpmResult *result, char *text, size_t size)
+{
+    char photons[32];
+    if (ppm->photons >= 10000)
+        snprintf(photons, sizeof photons, "%dk", (ppm->photons + 500) / 1000);
+    else
+        snprintf(photons, sizeof photons, "%d", ppm->photons);
+    snprintf(text, size, "%d x %d spp, M=%d mirror-light@%d, %s photons, r %.3g to %.3g",
+             result->passes, ppm->spp, ppm->path.shadow_rays, ppm->path.mirror_light, photons,
+             ppm->radius, result->radius);
+}
+#endif
+
 void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size)
 {
     if (isnan(row->rmse))
@@ -715,6 +824,20 @@ void experiment_caption(const TableRow *row, const char *title, char *caption, s
     else
         snprintf(caption, size, "%s\n%s\n%.2f s, RMSE %.4f", title, row->settings,
                  row->seconds, row->rmse);
+}
+
+void experiment_write_panels(const Options *options, const char *name, const Image *images,
+                             const TableRow *rows, const char *const *titles, int count)
+{
+    char captions[8][512];
+    const char *list[8];
+    if (count > 8)
+        cli_fail(1, "%d panels in one figure (at most 8)", count);
+    for (int i = 0; i < count; i++) {
+        experiment_caption(&rows[i], titles[i], captions[i], sizeof captions[i]);
+        list[i] = captions[i];
+    }
+    experiment_write_figure(options, name, images, list, count, PANEL_EXPOSURE);
 }
 #endif /* CHAPTER >= 2 */
 

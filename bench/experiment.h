@@ -22,6 +22,10 @@
 #if CHAPTER >= 4
 #include "plot.h"
 #endif
+#if CHAPTER >= 8
+#include "bias_variance.h"
+#include "ppm.h"
+#endif
 
 typedef enum { NEEDS_POINT_LIGHT, NEEDS_AREA_LIGHT } LightNeed;
 
@@ -75,9 +79,20 @@ void experiment_write_image(const Options *options, const char *name, const Imag
 void experiment_write_figure(const Options *options, const char *name, const Image *panels,
                              const char *const *captions, int count, double exposure);
 
+/* The figure NAME of the `count` images cropped alike: the square of side `side` whose
+ * top-left pixel is (left, top), moved inside each image if it pokes out, enlarged
+ * `scale` times (image_crop). */
+void experiment_write_crops(const Options *options, const char *name, const Image *images,
+                            const char *const *captions, int count, int left, int top,
+                            int side, int scale);
+
 /* Print the table and write it as NAME.csv. */
 void experiment_write_table(const Options *options, const char *name, const TableRow *rows,
                             int count);
+
+/* Write a table of numbers as NAME.csv (table_write_numbers_csv). */
+void experiment_write_numbers(const Options *options, const char *name, const char *header,
+                              const double *values, int rows, int columns, const int *decimals);
 
 /* A table row with the cost columns of a render filled in and no error measured. */
 TableRow experiment_row(const char *panel, const char *settings, const RenderResult *result);
@@ -92,9 +107,14 @@ void experiment_write_panel(const Options *options, const char *name, const Rend
 void experiment_exit_if_interrupted(const RenderResult *result, const char *saved);
 
 #if CHAPTER >= 4
-/* The plot drawn on a width x height image (exit 1 without the font or memory); show
- * it with experiment_write_figure. */
+/* The plot drawn on a width x height image (exit 1 without the font or memory), to show
+ * as a panel of a figure (experiment_write_figure). */
 Image experiment_plot(const Plot *plot, int width, int height);
+
+/* The plot drawn on a width x height image, written as the figure NAME.png with its
+ * caption (exit 1 without the font or memory). */
+void experiment_write_plot(const Options *options, const char *name, const Plot *plot,
+                           int width, int height, const char *caption);
 #endif
 
 #if CHAPTER >= 2
@@ -150,11 +170,42 @@ int experiment_infinite_variance(const Scene *scene, const PathSettings *path);
 PathSettings experiment_final_estimator(const Options *options, const MirrorPlanes *mirrors);
 #endif
 
+#if CHAPTER >= 8
+/* Render with photons (ppm_render), or exit as experiment_render does. Interrupted, the
+ * panel NAME (if not NULL) is saved with the passes completed, if there is one, and the
+ * program exits (experiment_write_panel). */
+void experiment_render_ppm(const Options *options, const char *name, const Scene *scene,
+                           const RenderSettings *settings, const PpmSettings *ppm,
+                           PpmResult *result);
+
+/* One setting rendered with `seeds` seeds (options->seed + k, quietly) and its error split
+ * into bias and variance against the two references (bias_variance.h), without the
+ * pixels marked in left_out: chapter 7's final estimator `path` at `spp` samples per
+ * pixel on stratified sub-pixels and pairs (ppm NULL), or the photon map `ppm`, its
+ * passes continuing one another's samples. */
+BiasVariance experiment_seeds(const Options *options, const Scene *scene, const PathSettings *path,
+                              const PpmSettings *ppm, int spp, int seeds,
+                              const Reference references[2], const unsigned char *left_out);
+
+/* Print the table of settings and their errors (bias_variance.h) and write it as NAME.csv. */
+void experiment_write_error_table(const Options *options, const char *name,
+                                  const SettingError *rows, int count);
+
+/* The photon map's settings and what it rendered as text, e.g. "12 x 8 spp, M=1
+ * mirror-light@1, 320k photons, r 0.05 to 0.012". */
+void describe_ppm(const PpmSettings *ppm, const PpmResult *result, char *text, size_t size);
+#endif
+
 /* The settings as text for tables and captions, e.g. "depth=16 M=1 schlick rr=0.25". */
 void describe_path(const PathSettings *settings, char *text, int size);
 
 /* A figure caption from a table row: its settings, then time and error. */
 void experiment_caption(const TableRow *row, const char *title, char *caption, size_t size);
+
+/* The figure NAME of `count` panels (at most 8), each captioned by its title and its
+ * table row (experiment_caption). */
+void experiment_write_panels(const Options *options, const char *name, const Image *images,
+                             const TableRow *rows, const char *const *titles, int count);
 #endif /* CHAPTER >= 2 */
 
 #endif

@@ -39,6 +39,24 @@ void image_free(Image *image)
     *image = (Image){0, 0, NULL};
 }
 
+/* value clamped to [low, high]. */
+static int clamp_int(int value, int low, int high)
+{
+    return value < low ? low : value > high ? high : value;
+}
+
+Image image_crop(const Image *image, int left, int top, int side, int scale)
+{
+    side = clamp_int(side, 1, image->width < image->height ? image->width : image->height);
+    left = clamp_int(left, 0, image->width - side);
+    top = clamp_int(top, 0, image->height - side);
+    Image crop = image_new(side * scale, side * scale);
+    for (int y = 0; y < crop.height; y++)
+        for (int x = 0; x < crop.width; x++)
+            image_set(&crop, x, y, image_get(image, left + x / scale, top + y / scale));
+    return crop;
+}
+
 /* The tone map: v = clamp(exposure * L, 0, 1) (NaN counts as 0), then the sRGB curve,
  * rounded to the nearest of the 256 codes. */
 uint8_t image_tonemap(double value, double exposure)

@@ -43,6 +43,12 @@ static inline void image_set(Image *image, int col, int row, Vec3 value)
     p[2] = (float)value.z;
 }
 
+/* The square of side `side` (at least 1, at most the image's smaller side) whose top-left
+ * pixel is (left, top), moved inside the image where it pokes out, each pixel repeated
+ * `scale` times across and down: a crop enlarged without blurring. pixels == NULL when
+ * memory runs out. */
+Image image_crop(const Image *image, int left, int top, int side, int scale);
+
 /* The tone map above, for one channel value, to an 8-bit sRGB code. */
 uint8_t image_tonemap(double value, double exposure);
 

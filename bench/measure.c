@@ -93,6 +93,65 @@ static double image_mean_of(const Image *image)
     return sum / pixels;
 }
 
+int measure_most_efficient(const TableRow *rows, int count)
+{
+    int best = -1;
+    for (int i = 0; i < count; i++)
+        if (!rows[i].infinite_variance && !isnan(rows[i].efficiency) &&
+            (best < 0 || rows[i].efficiency > rows[best].efficiency))
+            best = i;
+    return best;
+}
+
+int measure_clearly_lower(const TableRow *a, const TableRow *b)
+{
+    double se_a = a->runs > 1 ? a->rel_mse_spread / sqrt(a->runs) : 0.0;
+    double se_b = b->runs > 1 ? b->rel_mse_spread / sqrt(b->runs) : 0.0;
+    return b->rel_mse - a->rel_mse > 2.0 * sqrt(se_a * se_a + se_b * se_b);
+}
+
+double measure_z(double a, double a_error, double b, double b_error)
+{
+    return (a - b) / sqrt(a_error * a_error + b_error * b_error);
+}
+
+double measure_changed_fraction(const Image *a, const Image *b)
+{
+    long pixels = (long)a->width * a->height, changed = 0;
+    for (long i = 0; i < pixels; i++)
+        changed += a->pixels[3 * i] != b->pixels[3 * i] || a->pixels[3 * i + 1] != b->pixels[3 * i + 1] ||
+                   a->pixels[3 * i + 2] != b->pixels[3 * i + 2];
+    return (double)changed / pixels;
+}
+
+void measure_window_mean(const Image *image, const Image *std_error, int col, int row, int half,
+                         double *mean, double *mean_std_error)
+{
+    double sum = 0.0, variance = 0.0;
+    int n = 0;
+    for (int r = row - half; r <= row + half; r++)
+        for (int c = col - half; c <= col + half; c++) {
+            int cc = c < 0 ? 0 : c >= image->width ? image->width - 1 : c;
+            int rc = r < 0 ? 0 : r >= image->height ? image->height - 1 : r;
+            double se = vec3_average(image_get(std_error, cc, rc));
+            sum += vec3_average(image_get(image, cc, rc));
+            variance += se * se;
+            n++;
+        }
+    *mean = sum / n;
+    *mean_std_error = sqrt(variance) / n;
+}
+
+void measure_channel_means(const Image *image, double means[3])
+{
+    double sum[3] = {0, 0, 0};
+    long pixels = (long)image->width * image->height;
+    for (long i = 0; i < 3 * pixels; i++)
+        sum[i % 3] += image->pixels[i];
+    for (int c = 0; c < 3; c++)
+        means[c] = sum[c] / pixels;
+}
+
 void measure_image_mean(const Image *image, const Image *average_std_error, double *mean,
                         double *mean_std_error)
 {

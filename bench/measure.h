@@ -93,6 +93,32 @@ int measure_error_estimate(const Image *image, const Image *reference,
 /* Root mean square over all pixels and channels. */
 double measure_rms(const Image *image);
 
+/* The row of the highest efficiency among those of finite variance whose efficiency was
+ * measured, or -1 if there is none: the most efficient setting that can be ranked. */
+int measure_most_efficient(const TableRow *rows, int count);
+
+/* Whether a's mean relative MSE is lower than b's by more than twice the standard error of
+ * their difference (each mean's is its runs' spread / sqrt(runs); 0 for one run): a
+ * difference the runs' spread cannot explain. */
+int measure_clearly_lower(const TableRow *a, const TableRow *b);
+
+/* How many standard errors a lies from b, both measured: (a - b) / sqrt(a_error^2 +
+ * b_error^2). */
+double measure_z(double a, double a_error, double b, double b_error);
+
+/* The fraction of the pixels of a that differ from b's (same size) in some channel. */
+double measure_changed_fraction(const Image *a, const Image *b);
+
+/* The mean brightness (the mean of the three channels) of the pixels within `half` pixels
+ * of (col, row) across and down, a window moved inside the image where it pokes out
+ * (edge pixels repeated), and its standard error from the pixels' own, per channel in
+ * std_error (their channel mean taken as the pixel's: see measure_image_mean). */
+void measure_window_mean(const Image *image, const Image *std_error, int col, int row, int half,
+                         double *mean, double *mean_std_error);
+
+/* The mean of each channel over the image's pixels. */
+void measure_channel_means(const Image *image, double means[3]);
+
 /* The image's mean: over pixels of each pixel's channel mean m_i = (R + G + B) / 3,
  * which is the mean over all pixels and channels; and its standard error. Pixels are
  * independent, so with s_i the standard error of m_i,

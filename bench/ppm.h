@@ -15,6 +15,11 @@
 #include "photon_estimate.h"
 #include "renderer.h"
 
+/* The first radius on an 800-pixel-wide image, as a fraction of the view's width where
+ * the camera looks (ppm_first_radius), scaled by 800 / width for other widths: chapter
+ * 8's, the lab's and the tests' (docs/chapter8.md: how it was chosen). */
+#define PPM_FIRST_RADIUS_AT_800 0.0034
+
 typedef struct {
     PathSettings path;    /* the path tracer's settings (its fresnel also for photons) */
     int photons;          /* emitted per pass */

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "atomic_file.h"
+#include "sample_order.h"
 
 typedef struct {
     const Scene *scene;
@@ -19,6 +20,7 @@ typedef struct {
     Estimator estimate;
     const void *estimator_settings;
     PixelSum *pixels;
+    SampleOrder order; /* which sample each pass takes of each pixel */
     int first_sample, pass;
     atomic_int next_row;
     atomic_long rows_done;   /* over all passes, for the progress display */
@@ -167,8 +169,10 @@ static void render_row(Worker *worker, int row)
     RayCounts rays = {0, 0, 0};
     uint64_t samples = 0, nonfinite = 0;
     for (int col = 0; col < image->width; col++) {
-        Vec3 radiance = render_sample(job->scene, image, col, row, job->first_sample + job->pass,
-                                      job->estimate, job->estimator_settings, &rays);
+        int sample = job->first_sample +
+                     sample_order_sample(&job->order, (uint64_t)row * image->width + col, job->pass);
+        Vec3 radiance = render_sample(job->scene, image, col, row, sample, job->estimate,
+                                      job->estimator_settings, &rays);
         samples++;
         if (!vec3_is_finite(radiance)) {
             nonfinite++;
@@ -246,7 +250,10 @@ int render_from(const Scene *scene, const RenderSettings *settings, int first_sa
         return -1;
     }
 
-    Job job = {scene, settings, estimate, estimator_settings, pixels, first_sample, 0, 0, 0, stats_now()};
+    Job job = {.scene = scene, .settings = settings, .estimate = estimate,
+               .estimator_settings = estimator_settings, .pixels = pixels,
+               .order = sample_order_make(&settings->image), .first_sample = first_sample,
+               .start_time = stats_now()};
     for (int i = 0; i < r.threads; i++)
         workers[i] = (Worker){&job, i, {0, 0, 0}, 0, 0};
     for (job.pass = 0; job.pass < settings->image.spp && !render_interrupted(); job.pass++) {

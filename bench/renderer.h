@@ -1,13 +1,13 @@
 /* renderer.h (bench, chapter 1): the whole image, on every core: each pixel the mean of
  * its samples (render_sample, lib/render.h), with its standard error.
  *
- * Samples are taken in passes (pass s takes sample s of every pixel), each pass split
- * among threads by rows; a pixel's samples are accumulated in order, so the image is
- * the same bit for bit for any thread count. Per pixel the running mean and M2 (the
- * summed squared deviations) follow Welford's update, delta = x - mean, mean +=
- * delta / n, M2 += delta (x - mean), which loses no digits where the sum of squares
- * would. A non-finite sample is dropped and counted. SIGINT stops a render after the
- * rows in progress, still normalised pixel by pixel.
+ * Pass j takes one sample of every pixel (sample j, or on sub-pixels the one
+ * sample_order.h chooses, so that a stopped render is unbiased), split among threads by
+ * rows; a pixel's samples are accumulated in order, so the image is the same bit for bit
+ * for any thread count. Per pixel the running mean and M2 (the summed squared deviations)
+ * follow Welford's update, delta = x - mean, mean += delta / n, M2 += delta (x - mean),
+ * which loses no digits where the sum of squares would. A non-finite sample is dropped
+ * and counted. SIGINT stops a render after the rows in progress, still normalised.
  */
 #ifndef RENDERER_H
 #define RENDERER_H
@@ -60,7 +60,8 @@ int render(const Scene *scene, const RenderSettings *settings, Estimator estimat
            const void *estimator_settings, RenderResult *result);
 
 /* Render samples first_sample .. first_sample + spp - 1 of every pixel (render: from 0),
- * as one of several renders that continue each other (PIXEL_PROGRESSIVE). */
+ * as one of several renders that continue each other (PIXEL_PROGRESSIVE; on sub-pixels,
+ * first_sample + the sample sample_order.h chooses). */
 int render_from(const Scene *scene, const RenderSettings *settings, int first_sample,
                 Estimator estimate, const void *estimator_settings, RenderResult *result);
 

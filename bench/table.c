@@ -130,3 +130,17 @@ int table_write_csv(const char *path, const TableRow *rows, int count)
     }
     return atomic_close(&file, 0);
 }
+
+int table_write_numbers_csv(const char *path, const char *header, const double *values, int rows,
+                            int columns, const int *decimals)
+{
+    AtomicFile file;
+    if (atomic_open(&file, path) != 0)
+        return -1;
+    fprintf(file.file, "%s\n", header);
+    for (int r = 0; r < rows; r++)
+        for (int c = 0; c < columns; c++)
+            fprintf(file.file, "%.*f%c", decimals[c], values[r * columns + c],
+                    c + 1 < columns ? ',' : '\n');
+    return atomic_close(&file, 0);
+}

@@ -59,6 +59,12 @@ void table_print(FILE *out, const TableRow *rows, int count);
 /* Write the rows as CSV through an atomic file. Returns 0, or -1 with errno set. */
 int table_write_csv(const char *path, const TableRow *rows, int count);
 
+/* A table of numbers as CSV through an atomic file: the header line, then `rows` lines of
+ * `columns` values (values[r * columns + c]), column c with decimals[c] decimals.
+ * Returns 0, or -1 with errno set. */
+int table_write_numbers_csv(const char *path, const char *header, const double *values, int rows,
+                            int columns, const int *decimals);
+
 /* Mrays/s of a row. */
 double table_mrays_per_second(const TableRow *row);
 

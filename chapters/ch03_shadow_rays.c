@@ -1,27 +1,11 @@
 /* ch03_shadow_rays.c (chapter 3): shadow rays (report §3.7, eq. 21; Figure 11).
  *
- * New concepts (lib/): area_light (uniform sampling of the lights' area, and the
- * direct light of eq. 21 with M shadow rays), path_direct (the path tracer with them).
- *
- * The experiment:
- *   - Figure 11: 1 vs 30 shadow rays per diffuse hit, with time and error for each;
- *   - Figure 8 again (1 vs 4 samples per pixel on sub-pixels), the way the report
- *     rendered it: with a shadow ray at every diffuse hit. Chapter 2's Figure 8 finds
- *     light only by hitting the lamp and is mostly black speckle; this is the first
- *     chapter that can draw the report's;
- *   - a sweep of M (0, i.e. chapter 2's estimator, then 1 to 30) on a smaller image
- *     (a quarter of --size), each at the same samples per pixel, showing where more
- *     shadow rays stop paying for themselves: the error keeps falling, but the time
- *     grows about linearly in M, so efficiency = 1 / (relMSE x time) peaks early.
- * Every M estimates the same image (path.h), so one reference serves them all.
- *
- * What can limit the gain: in the report's room, the mirror wall, the mirror sphere and
- * the glass sphere reflect and focus the lamp onto the walls (caustics). No shadow ray
- * can find that light, since it would have to pass through a mirror; paths find it only
- * by hitting the lamp after a mirror or glass bounce, rarely and brightly: the white
- * speckles left in both panels. More shadow rays smooth the shadows (look under the
- * box) but not the speckles. The program says what it measured: whether M=30 lowered
- * M=1's error by more than the runs' spread can explain.
+ * New concepts (lib/): area_light (uniform sampling of the lights' area, and the direct
+ * light of eq. 21 with M shadow rays), path_direct (the path tracer with them). The
+ * experiment (docs/chapter3.md): Figure 11, 1 against 30 shadow rays; Figure 8 as the
+ * report rendered it, with shadow rays; a sweep of M from 0 (chapter 2's estimator) to 30
+ * on a quarter-size image, where more shadow rays stop paying, and what it measured, in
+ * words. Every M estimates the same image, so one reference serves them all.
  */
 #include <stdio.h>
 
@@ -51,26 +35,13 @@ static void reference_for(const Options *options, const Scene *scene, Reference 
     experiment_path_reference(options, scene, &with_shadow_ray, NULL, 0.0, reference);
 }
 
-/* Whether a's mean relative MSE is lower than b's by more than twice the standard error
- * of their difference (each mean's is its runs' spread / sqrt(runs)). The relative
- * error, because the RMSE of a small image is mostly the edges of the lamp (radiance
- * 25), which no number of shadow rays changes. */
-static int clearly_lower(const TableRow *a, const TableRow *b)
-{
-    double se_a = a->runs > 1 ? a->rel_mse_spread / sqrt(a->runs) : 0.0;
-    double se_b = b->runs > 1 ? b->rel_mse_spread / sqrt(b->runs) : 0.0;
-    return b->rel_mse - a->rel_mse > 2.0 * sqrt(se_a * se_a + se_b * se_b);
-}
-
 /* What the sweep measured, in words computed from it. */
 static void print_conclusions(const TableRow sweep[SWEEP_COUNT])
 {
-    int best = 0;
-    for (int i = 1; i < SWEEP_COUNT; i++)
-        if (sweep[i].efficiency > sweep[best].efficiency)
-            best = i;
-    printf("measured: the most efficient setting is M=%d (M=0, chapter 2's estimator, "
-           "included).\n", SWEEP[best]);
+    int best = measure_most_efficient(sweep, SWEEP_COUNT);
+    if (best >= 0)
+        printf("measured: the most efficient setting is M=%d (M=0, chapter 2's estimator, "
+               "included).\n", SWEEP[best]);
     double ratio = sweep[1].efficiency / sweep[0].efficiency;
     if (ratio > 1.0)
         printf("  one shadow ray reaches the error of M=0 in %.1f times less time.\n", ratio);
@@ -78,7 +49,9 @@ static void print_conclusions(const TableRow sweep[SWEEP_COUNT])
         printf("  one shadow ray was not more efficient than M=0 here (efficiency ratio %.2f).\n",
                ratio);
     const TableRow *one = &sweep[1], *most = &sweep[SWEEP_COUNT - 1];
-    if (clearly_lower(most, one))
+    /* The relative error, because the RMSE of a small image is mostly the edges of the
+     * lamp (radiance 25), which no number of shadow rays changes. */
+    if (measure_clearly_lower(most, one))
         printf("  M=%d lowered the error of M=1 measurably (relative MSE %.4g +- %.2g against "
                "%.4g +- %.2g), at %.1f times the time.\n", SWEEP[SWEEP_COUNT - 1],
                most->rel_mse, most->rel_mse_spread, one->rel_mse, one->rel_mse_spread,
@@ -87,8 +60,9 @@ static void print_conclusions(const TableRow sweep[SWEEP_COUNT])
         printf("  M=%d did not lower the error of M=1 measurably (relative MSE %.4g +- %.2g "
                "against %.4g +- %.2g), at %.1f times the time:\n  the error that remains is "
                "not the direct light that shadow rays estimate (it can be the lamp's own\n  "
-               "edges seen from the camera, or the lamp seen in a mirror or through glass).\n", SWEEP[SWEEP_COUNT - 1], most->rel_mse, most->rel_mse_spread,
-               one->rel_mse, one->rel_mse_spread, most->seconds / one->seconds);
+               "edges seen from the camera, or the lamp seen in a mirror or through glass).\n",
+               SWEEP[SWEEP_COUNT - 1], most->rel_mse, most->rel_mse_spread, one->rel_mse,
+               one->rel_mse_spread, most->seconds / one->seconds);
 }
 
 int main(int argc, char **argv)
@@ -106,39 +80,29 @@ int main(int argc, char **argv)
     Reference reference;
     reference_for(&options, &scene, &reference);
 
-    TableRow rows[2];
-    Image images[2];
-    char captions[2][256];
-    const int figure_m[2] = {1, 30};
+    TableRow rows[4];
+    Image images[4];
+    const int figure_m[2] = {1, 30}, figure8_spp[2] = {1, 4};
+    const char *titles[] = {"Figure 11, left", "Figure 11, right",
+                            "Figure 8, left, as the report: with shadow rays",
+                            "Figure 8, right, as the report: with shadow rays"};
     for (int i = 0; i < 2; i++) {
-        char name[64], title[64];
+        char name[64];
         snprintf(name, sizeof name, "ch03_figure11_m%d", figure_m[i]);
-        snprintf(title, sizeof title, "Figure 11, %s", i == 0 ? "left" : "right");
         rows[i] = render_m(&options, &scene, &reference, figure_m[i], options.spp,
                            PIXEL_SUBPIXELS, name, &images[i]);
-        experiment_caption(&rows[i], title, captions[i], sizeof captions[i]);
     }
-    const char *figure_captions[] = {captions[0], captions[1]};
-    experiment_write_figure(&options, "ch03_figure11", images, figure_captions, 2, PANEL_EXPOSURE);
-    image_free(&images[0]);
-    image_free(&images[1]);
-
-    TableRow figure8_rows[2];
-    const int figure8_spp[2] = {1, 4};
+    experiment_write_panels(&options, "ch03_figure11", images, rows, titles, 2);
     for (int i = 0; i < 2; i++) {
-        char name[64], title[96];
+        char name[64];
         snprintf(name, sizeof name, "ch03_figure8_%dspp", figure8_spp[i]);
-        snprintf(title, sizeof title, "Figure 8, %s, as the report: with shadow rays",
-                 i == 0 ? "left" : "right");
-        figure8_rows[i] = render_m(&options, &scene, &reference, 1, figure8_spp[i],
-                                   PIXEL_SUBPIXELS, name, &images[i]);
-        experiment_caption(&figure8_rows[i], title, captions[i], sizeof captions[i]);
+        rows[2 + i] = render_m(&options, &scene, &reference, 1, figure8_spp[i], PIXEL_SUBPIXELS,
+                               name, &images[2 + i]);
     }
-    experiment_write_figure(&options, "ch03_figure8", images, figure_captions, 2, PANEL_EXPOSURE);
-    TableRow table[4] = {rows[0], rows[1], figure8_rows[0], figure8_rows[1]};
-    experiment_write_table(&options, "ch03_table", table, 4);
-    image_free(&images[0]);
-    image_free(&images[1]);
+    experiment_write_panels(&options, "ch03_figure8", &images[2], &rows[2], &titles[2], 2);
+    experiment_write_table(&options, "ch03_table", rows, 4);
+    for (int i = 0; i < 4; i++)
+        image_free(&images[i]);
     measure_reference_free(&reference);
 
     /* The sweep, on a quarter-size image with a reference of its own. */

@@ -2,20 +2,10 @@
  *
  * New concepts (lib/): oren_nayar (eqs. 13-14 with their corrections:
  * A = 1 - sigma^2 / (2 (sigma^2 + 0.33)), and tan(beta) where the report has sin(beta)).
- *
- * The experiment, on scenes/oren_nayar.scene: a rough sphere (material `rough`) beside a
- * Lambertian sphere of the same colour, lit from the viewer's direction.
- *   - Figure 10: the two spheres. A Lambertian sphere lit from the eye darkens towards
- *     its rim (its radiance follows cos theta); a rough one looks flat, because near the
- *     rim the facets that face the viewer also face the light (retro-reflection);
- *   - a sweep of the roughness sigma of `rough` (0, 0.25, 0.5, 1 rad) on a quarter-size
- *     image, each against a reference of its own;
- *   - the number that says "flat": each sphere's brightness at 80% of its radius from
- *     its centre (left and right, averaged) over the brightness at its centre, measured
- *     on the references. At sigma = 0 Oren-Nayar is Lambert and the two agree; the rough
- *     sphere's ratio rises with sigma. Beside them, what eq. 13 predicts for a light
- *     exactly at the eye and no light from the walls (both directions at theta, with
- *     sin theta = 0.8): cos theta (A + B sin theta tan theta) / A.
+ * The experiment (docs/chapter5.md), on scenes/oren_nayar.scene, a rough sphere beside a
+ * Lambertian one lit from the viewer: Figure 10; a sweep of sigma on a quarter-size image;
+ * and the number that says "flat", each sphere's brightness at 80% of its radius over
+ * that at its centre, on the references, beside eq. 13's for a light at the eye.
  */
 #include <stdio.h>
 
@@ -23,6 +13,7 @@
 #include "oren_nayar.h"
 #include "path_direct.h"
 #include "scene_file.h"
+#include "view.h"
 
 static const double SIGMAS[] = {0.0, 0.25, 0.5, 1.0};
 enum { SIGMA_COUNT = sizeof SIGMAS / sizeof SIGMAS[0] };
@@ -49,49 +40,17 @@ static TableRow render_panel(const Options *options, const Scene *scene,
                                settings_text, reference, image);
 }
 
-/* Where world point p appears in a width x height image, as a continuous pixel position
- * (pixel (c, r) covers [c, c+1) x [r, r+1)). The ray from the eye to p meets the image
- * plane at BL + a (BR - BL) + b (TL - BL); camera.h maps that to col = a W,
- * row = (1 - b) H. a and b solve the 2 x 2 system of dot products with the plane's
- * sides (which need not be perpendicular). */
-static void project(const Camera *camera, int width, int height, Vec3 p, double *col, double *row)
-{
-    Vec3 normal = vec3_cross(camera->right, camera->up);
-    Vec3 to_point = vec3_sub(p, camera->eye);
-    double t = vec3_dot(normal, vec3_sub(camera->bottom_left, camera->eye)) /
-               vec3_dot(normal, to_point);
-    Vec3 q = vec3_sub(vec3_add_scaled(camera->eye, to_point, t), camera->bottom_left);
-    double rr = vec3_dot(camera->right, camera->right), uu = vec3_dot(camera->up, camera->up);
-    double ru = vec3_dot(camera->right, camera->up);
-    double qr = vec3_dot(q, camera->right), qu = vec3_dot(q, camera->up);
-    double determinant = rr * uu - ru * ru;
-    double a = (qr * uu - qu * ru) / determinant, b = (qu * rr - qr * ru) / determinant;
-    *col = a * width;
-    *row = (1.0 - b) * height;
-}
-
 typedef struct {
     double value, error; /* a brightness or a ratio, and its standard error */
 } Measured;
 
-/* The mean radiance (average of the channels) over the pixels within `half` pixels of
- * position (col, row), clamped to the image, with its standard error. */
+/* The reference's brightness (the mean of the channels) within `half` pixels of (col, row). */
 static Measured brightness(const Reference *reference, double col, double row, int half)
 {
-    const Image *image = &reference->image;
-    int c0 = (int)col, r0 = (int)row;
-    double sum = 0.0, variance = 0.0;
-    int n = 0;
-    for (int r = r0 - half; r <= r0 + half; r++)
-        for (int c = c0 - half; c <= c0 + half; c++) {
-            int cc = c < 0 ? 0 : c >= image->width ? image->width - 1 : c;
-            int rc = r < 0 ? 0 : r >= image->height ? image->height - 1 : r;
-            double se = vec3_average(image_get(&reference->std_error, cc, rc));
-            sum += vec3_average(image_get(image, cc, rc));
-            variance += se * se;
-            n++;
-        }
-    return (Measured){sum / n, sqrt(variance) / n};
+    Measured m;
+    measure_window_mean(&reference->image, &reference->std_error, (int)col, (int)row, half,
+                        &m.value, &m.error);
+    return m;
 }
 
 /* Brightness at RIM_FRACTION of the sphere's radius, left and right of its centre
@@ -105,9 +64,9 @@ static Measured rim_to_centre(const Scene *scene, const Reference *reference, co
     Vec3 sideways = vec3_sub(camera->right, vec3_scale(sight, vec3_dot(camera->right, sight)));
     Vec3 offset = vec3_scale(vec3_normalize(sideways), RIM_FRACTION * sphere->radius);
     double col, row, left_col, left_row, right_col, right_row;
-    project(camera, width, height, sphere->center, &col, &row);
-    project(camera, width, height, vec3_sub(sphere->center, offset), &left_col, &left_row);
-    project(camera, width, height, vec3_add(sphere->center, offset), &right_col, &right_row);
+    view_position(camera, width, height, sphere->center, &col, &row);
+    view_position(camera, width, height, vec3_sub(sphere->center, offset), &left_col, &left_row);
+    view_position(camera, width, height, vec3_add(sphere->center, offset), &right_col, &right_row);
     double radius_pixels = fabs(right_col - left_col) / (2.0 * RIM_FRACTION);
     int half = (int)(radius_pixels / 10.0); /* a window small beside the sphere */
     Measured centre = brightness(reference, col, row, half);
@@ -174,10 +133,8 @@ int main(int argc, char **argv)
     Image image;
     TableRow row = render_panel(&options, &scene, &reference, file_sigma, PIXEL_SUBPIXELS,
                                 "ch05_rough_and_lambert", &image);
-    char caption[256];
-    experiment_caption(&row, "Figure 10: Oren-Nayar | Lambert", caption, sizeof caption);
-    const char *figure_captions[] = {caption};
-    experiment_write_figure(&options, "ch05_figure10", &image, figure_captions, 1, PANEL_EXPOSURE);
+    const char *figure_title[] = {"Figure 10: Oren-Nayar | Lambert"};
+    experiment_write_panels(&options, "ch05_figure10", &image, &row, figure_title, 1);
     experiment_write_table(&options, "ch05_table", &row, 1);
     image_free(&image);
     measure_reference_free(&reference);
@@ -186,26 +143,23 @@ int main(int argc, char **argv)
     Options sweep_options = experiment_quarter_size(&options);
     TableRow rows[SIGMA_COUNT];
     Image images[SIGMA_COUNT];
-    char captions[SIGMA_COUNT][256];
+    char titles[SIGMA_COUNT][64];
+    const char *title_list[SIGMA_COUNT];
     Measured rough_ratio[SIGMA_COUNT], lambert_ratio[SIGMA_COUNT];
     for (int i = 0; i < SIGMA_COUNT; i++) {
         scene.materials[rough].sigma = SIGMAS[i];
         reference_for(&sweep_options, &scene, SIGMAS[i], &reference);
-        char name[64], title[64];
+        char name[64];
         snprintf(name, sizeof name, "ch05_sigma%g", SIGMAS[i]);
-        snprintf(title, sizeof title, "sigma = %g rad", SIGMAS[i]);
+        snprintf(titles[i], sizeof titles[i], "sigma = %g rad", SIGMAS[i]);
+        title_list[i] = titles[i];
         rows[i] = render_panel(&sweep_options, &scene, &reference, SIGMAS[i], PIXEL_RANDOM,
                                name, &images[i]);
-        experiment_caption(&rows[i], title, captions[i], sizeof captions[i]);
         rough_ratio[i] = rim_to_centre(&scene, &reference, rough_sphere);
         lambert_ratio[i] = rim_to_centre(&scene, &reference, lambert_sphere);
         measure_reference_free(&reference);
     }
-    const char *sweep_captions[SIGMA_COUNT];
-    for (int i = 0; i < SIGMA_COUNT; i++)
-        sweep_captions[i] = captions[i];
-    experiment_write_figure(&options, "ch05_sigma_sweep", images, sweep_captions, SIGMA_COUNT,
-                            PANEL_EXPOSURE);
+    experiment_write_panels(&options, "ch05_sigma_sweep", images, rows, title_list, SIGMA_COUNT);
     printf("\nsweep of sigma at %d pixels wide:\n", sweep_options.size);
     experiment_write_table(&options, "ch05_sigma_sweep", rows, SIGMA_COUNT);
 

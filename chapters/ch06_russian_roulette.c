@@ -1,29 +1,11 @@
 /* ch06_russian_roulette.c (chapter 6): Russian roulette (report §2.2, §4.7; Figure 12).
  *
- * New concepts (lib/): roulette (a path survives each diffuse hit with probability
- * alpha, its weight divided by alpha; alpha is the SURVIVAL probability, the report's
- * erratum), path_roulette (the report's path tracer: shadow rays and roulette).
- *
- * The experiment:
- *   - Figure 12: alpha = 0.01 vs 0.5;
- *   - a sweep of alpha on a smaller image (a quarter of --size, 16 spp): the image's
- *     mean radiance stays the same within its standard error (roulette is unbiased)
- *     while time and variance move; the efficiency column says which alpha is best.
- * With roulette, paths may be long: the depth limit is set high (64) so that it almost
- * never acts and the estimate is of the full rendering equation.
- *
- * The sweep's last row is roulette with bounded weights (roulette.h), the survival
- * probability taken from the path's throughput, q = min(1, max T), as pbrt and smallpt
- * do: no constant to choose, and the weights never grow, so its variance is finite for
- * any reflectance. The program prints its efficiency against the best constant alpha.
- *
- * A catch the sweep shows: a surviving path's weight grows by rho / alpha per diffuse
- * bounce, so the variance is finite only for alpha > rho^2 (tests/test_path.c). Below
- * that (here: rho^2 of the brightest diffuse surface), the mean is still right in
- * expectation, but a run of finite length usually falls short of it (it has not met
- * the rare, huge samples that make up the difference) and its standard error is not
- * to be trusted: such rows are marked. The reference (bench/reference.c) uses
- * bounded weights, whose variance is finite.
+ * New concepts (lib/): roulette (a path survives each diffuse hit with probability alpha,
+ * its weight divided by alpha: alpha is the SURVIVAL probability, the report's erratum),
+ * path_roulette (the report's path tracer). The experiment (docs/chapter6.md): Figure 12,
+ * alpha = 0.01 against 0.5; a sweep of alpha and bounded weights on a quarter-size image,
+ * the image's mean staying the reference's while time and variance move. Below alpha =
+ * rho^2 of the brightest surface the variance is infinite: such rows are marked, not ranked.
  */
 #include <stdio.h>
 
@@ -45,7 +27,8 @@ static void settings_text_for(const Options *options, double alpha, char *text, 
 static TableRow measure_alpha(const Options *options, const Scene *scene,
                               const Reference *reference, double alpha, RenderResult *result)
 {
-    PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays, .rr_survival = alpha};
+    PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays,
+                         .rr_survival = alpha};
     char name[64], settings_text[96];
     if (alpha > 0.0) {
         snprintf(name, sizeof name, "sweep, alpha=%g", alpha);
@@ -90,19 +73,17 @@ int main(int argc, char **argv)
     const double figure_alpha[2] = {0.01, 0.5};
     TableRow rows[2];
     Image images[2];
-    char captions[2][256];
     for (int i = 0; i < 2; i++) {
         char name[64], settings_text[96];
         snprintf(name, sizeof name, "ch06_figure12_alpha%g", figure_alpha[i]);
         settings_text_for(&options, figure_alpha[i], settings_text, sizeof settings_text);
-        PathSettings path = {.max_depth = options.depth, .shadow_rays = options.shadow_rays, .rr_survival = figure_alpha[i]};
-        rows[i] = experiment_path_row(&options, &scene, path_roulette_radiance, &path, options.spp, PIXEL_SUBPIXELS, name,
-                                      settings_text, &reference, &images[i]);
-        experiment_caption(&rows[i], i == 0 ? "Figure 12, left" : "Figure 12, right",
-                           captions[i], sizeof captions[i]);
+        PathSettings path = {.max_depth = options.depth, .shadow_rays = options.shadow_rays,
+                             .rr_survival = figure_alpha[i]};
+        rows[i] = experiment_path_row(&options, &scene, path_roulette_radiance, &path, options.spp,
+                                      PIXEL_SUBPIXELS, name, settings_text, &reference, &images[i]);
     }
-    const char *figure_captions[] = {captions[0], captions[1]};
-    experiment_write_figure(&options, "ch06_figure12", images, figure_captions, 2, PANEL_EXPOSURE);
+    const char *titles[] = {"Figure 12, left", "Figure 12, right"};
+    experiment_write_panels(&options, "ch06_figure12", images, rows, titles, 2);
     experiment_write_table(&options, "ch06_table", rows, 2);
     image_free(&images[0]);
     image_free(&images[1]);
@@ -122,7 +103,7 @@ int main(int argc, char **argv)
         sweep[i] = measure_alpha(&sweep_options, &scene, &reference, SWEEP[i], &result);
         double mean, error;
         measure_image_mean(&result.image, &result.average_std_error, &mean, &error);
-        double z = (mean - reference_mean) / sqrt(error * error + reference_error * reference_error);
+        double z = measure_z(mean, error, reference_mean, reference_error);
         char label[32] = "bounded weights";
         if (SWEEP[i] > 0.0)
             snprintf(label, sizeof label, "alpha = %g", SWEEP[i]);
@@ -144,11 +125,7 @@ int main(int argc, char **argv)
            "bright path is missing from them).\n", finite_far, finite, infinite_short,
            infinite);
     experiment_write_table(&options, "ch06_sweep", sweep, SWEEP_COUNT);
-    int best = -1;
-    for (int i = 0; i < SWEEP_COUNT; i++)
-        if (!sweep[i].infinite_variance && !isnan(sweep[i].efficiency) &&
-            (best < 0 || sweep[i].efficiency > sweep[best].efficiency))
-            best = i;
+    int best = measure_most_efficient(sweep, SWEEP_COUNT);
     if (best == SWEEP_COUNT - 1)
         printf("most efficient of the settings of finite variance (the others cannot be "
                "ranked): bounded weights\n");
@@ -156,13 +133,11 @@ int main(int argc, char **argv)
         printf("most efficient of the settings of finite variance (the others cannot be "
                "ranked): alpha = %g\n", SWEEP[best]);
     /* Against the best constant alpha of finite variance (alpha = 1 always is). */
-    int best_alpha = SWEEP_COUNT - 2;
-    for (int i = 0; i < SWEEP_COUNT - 1; i++)
-        if (!sweep[i].infinite_variance && sweep[i].efficiency > sweep[best_alpha].efficiency)
-            best_alpha = i;
-    printf("bounded weights (q = min(1, max throughput)): %.2f times the efficiency of the best"
-           " constant alpha of finite variance (%g)\n",
-           sweep[SWEEP_COUNT - 1].efficiency / sweep[best_alpha].efficiency, SWEEP[best_alpha]);
+    int best_alpha = measure_most_efficient(sweep, SWEEP_COUNT - 1);
+    if (best_alpha >= 0)
+        printf("bounded weights (q = min(1, max throughput)): %.2f times the efficiency of the "
+               "best constant alpha of finite variance (%g)\n",
+               sweep[SWEEP_COUNT - 1].efficiency / sweep[best_alpha].efficiency, SWEEP[best_alpha]);
 
     measure_reference_free(&reference);
     scene_free(&scene);

@@ -1,65 +1,25 @@
-/* ch07_final.c (chapter 7): the final image and the benchmarks (report §4.2, §4.8, §5; Figure 7,
- * Table 1).
+/* ch07_final.c (chapter 7): the final image and the benchmarks (report §4.2, §4.8, §5;
+ * Figure 7, Table 1).
  *
- * New concepts (lib/): ways to spend the samples where the error is: mis (multiple
- * importance sampling of the lamps), mirror_light (the lamp's image in the mirror wall
- * as a light of its own), direct_light (both, at a diffuse vertex), sphere_guide
- * (bounces aimed at the mirror and glass spheres, for their caustics), sobol (stratified
- * pairs of numbers across a pixel's samples), and path_final, the path tracer with them
- * all; from chapter 6, roulette with bounded weights. The bench renders on every core
- * (--threads), what the report's discussion asks for first: its final image took 311
- * minutes on one thread.
- *
- * The experiment:
- *   - Figure 7: the room with everything on (sub-pixels, shadow rays, glass with
- *     Fresnel reflectance, Russian roulette; Oren-Nayar where a scene uses it), and
- *     with the levers below: one shadow ray, bounded-weight roulette (unless --rr is
- *     given), the mirror's image of the lamp at every diffuse hit, bounces aimed at
- *     the spheres, and the stratified pairs of sobol.h (--strata off: independent
- *     numbers);
- *   - the levers, one by one, at equal samples on a quarter-size image: the report's
- *     estimator of this chapter's old default (M=4, alpha=0.75), then M=1, bounded
- *     weights, mis, the mirror light, the sphere guide and the stratified pairs, each
- *     with its time, error and efficiency.
- *     Where the error is (measured per path): in the room most of it is light found
- *     only by hitting the lamp after a mirror or the glass (caustics), the mirror
- *     wall's share the largest; shadow rays already find the lamp directly well, so
- *     mis, which adds BRDF sampling where light sampling is poor, changes almost
- *     nothing here (the lamp is seen from afar), while the mirror light removes the
- *     mirror wall's share and the sphere guide most of the glass sphere's (at
- *     256 x 256, 64 spp, it halves the squared error that is left);
- *   - Table 1: the report's six settings (samples per pixel, shadow rays, roulette
- *     alpha) at full size, each with its time, rays, error against the reference and
- *     efficiency, beside the minutes the report measured;
- *   - a convergence plot: for the five estimators of Table 1, the error against the
- *     time as the samples double, log-log, on a quarter-size image.
- * Every setting estimates the same image (roulette, shadow rays, mis and the mirror
- * light are unbiased, and the depth limit of 64 is never reached in practice), so one
- * reference serves all.
- *
- * Watch the roulette constant. A surviving path's weight grows by rho / alpha at each
- * diffuse bounce, so its variance is finite only when alpha > rho^2 (tests/test_path.c).
- * The room's white walls have rho^2 = 0.56: Table 1's alpha = 0.25 and 0.01 are below
- * that, their error is dominated by rare very bright samples ("fireflies") and falls
- * slower than 1/sqrt(time) on the convergence plot. The final image uses alpha = 0.75,
- * above the brightest surface's rho^2 = 0.64.
+ * New concepts (lib/): mis, mirror_light (the lamp's image in the mirror wall as a light),
+ * direct_light (both, at a diffuse vertex), sphere_guide (bounces aimed at the spheres),
+ * sobol (stratified pairs across a pixel's samples), path_final (all of them, roulette with
+ * bounded weights). The experiment (docs/chapter7.md): Figure 7 with every lever on; the
+ * levers one by one on a quarter-size image; Table 1 beside the report's minutes; the
+ * convergence plot of Table 1's estimators. Every setting estimates one image.
  */
 #include <stdio.h>
-#include <string.h>
 
+#include "convergence.h"
 #include "experiment.h"
 #include "path_final.h"
 #include "path_roulette.h"
-#include "plot.h"
 #include "sphere_guide.h"
 
-typedef struct {
+static const struct {
     int spp, shadow_rays;
-    double rr;
-    double report_minutes;
-} Table1Setting;
-
-static const Table1Setting TABLE1[] = {
+    double rr, report_minutes;
+} TABLE1[] = {
     {16, 1, 0.25, 7}, {16, 30, 0.25, 132}, {1, 20, 0.25, 5},
     {4, 20, 0.25, 23}, {4, 20, 0.01, 5},   {4, 20, 0.9, 51},
 };
@@ -98,8 +58,7 @@ static TableRow render_path(const Options *options, const Scene *scene, const Re
     snprintf(settings_text, sizeof settings_text, "%d spp, %s%s", spp, description, note);
     PixelSampling sampling = options->strata ? PIXEL_STRATIFIED : PIXEL_SUBPIXELS;
     return experiment_path_row(options, scene, path_final_radiance, path, spp, sampling, name,
-                               settings_text, reference,
-                               image);
+                               settings_text, reference, image);
 }
 
 /* One of the report's settings (M shadow rays, constant alpha) as a table row. */
@@ -107,12 +66,12 @@ static TableRow render_setting(const Options *options, const Scene *scene,
                                const Reference *reference, int spp, int shadow_rays, double rr,
                                const char *name, const char *note, Image *image)
 {
-    PathSettings path = {.max_depth = options->depth, .shadow_rays = shadow_rays, .fresnel = options->fresnel, .rr_survival = rr};
+    PathSettings path = {.max_depth = options->depth, .shadow_rays = shadow_rays,
+                         .fresnel = options->fresnel, .rr_survival = rr};
     char settings_text[96];
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d, rr=%g%s", spp, shadow_rays, rr, note);
     return experiment_path_row(options, scene, path_roulette_radiance, &path, spp, PIXEL_SUBPIXELS,
-                               name, settings_text,
-                               reference, image);
+                               name, settings_text, reference, image);
 }
 
 static void final_image(const Options *options, const Scene *scene, const Reference *reference,
@@ -122,16 +81,12 @@ static void final_image(const Options *options, const Scene *scene, const Refere
     PathSettings path = experiment_final_estimator(options, mirrors);
     TableRow row = render_path(options, scene, reference, &path, options->spp, "ch07_figure7",
                                options->strata ? " strata" : "", &image);
-    char caption[512];
-    experiment_caption(&row, options->strata
-                                 ? "Figure 7: final image, with chapter 7's levers (bounded-weight"
-                                   " roulette, the mirror's image of the lamp, the sphere guide,"
-                                   " stratified pairs)"
-                                 : "Figure 7: final image, with chapter 7's levers (bounded-weight"
-                                   " roulette, the mirror's image of the lamp, the sphere guide)",
-                       caption, sizeof caption);
-    const char *captions[] = {caption};
-    experiment_write_figure(options, "ch07_figure7_captioned", &image, captions, 1, PANEL_EXPOSURE);
+    char title[256];
+    snprintf(title, sizeof title, "Figure 7: final image, with chapter 7's levers (bounded-weight "
+             "roulette, the mirror's image of the lamp, the sphere guide%s)",
+             options->strata ? ", stratified pairs" : "");
+    const char *titles[] = {title};
+    experiment_write_panels(options, "ch07_figure7_captioned", &image, &row, titles, 1);
     experiment_write_table(options, "ch07_figure7", &row, 1);
     image_free(&image);
 }
@@ -210,72 +165,50 @@ static void levers(const Options *options, const Scene *scene, const MirrorPlane
     measure_reference_free(&reference);
 }
 
-/* Error against time as the samples double, for each estimator; CSV and plot. */
+/* Error against time as the samples double, for each estimator; its table, what it
+ * measured, and the plot. */
 static void convergence(const Options *options, const Scene *scene)
 {
     Options small = experiment_quarter_size(options);
     Reference reference;
     reference_for(&small, scene, &reference);
-    double seconds[ESTIMATOR_COUNT][CONVERGENCE_STEPS], rmse[ESTIMATOR_COUNT][CONVERGENCE_STEPS];
-    double low[ESTIMATOR_COUNT][CONVERGENCE_STEPS], high[ESTIMATOR_COUNT][CONVERGENCE_STEPS];
     TableRow rows[ESTIMATOR_COUNT * CONVERGENCE_STEPS];
-    PlotSeries series[ESTIMATOR_COUNT + 1];
     char labels[ESTIMATOR_COUNT][48];
+    const char *label_list[ESTIMATOR_COUNT];
+    Vec3 colours[ESTIMATOR_COUNT];
     for (int e = 0; e < ESTIMATOR_COUNT; e++) {
         for (int step = 0; step < CONVERGENCE_STEPS; step++) {
             char name[64];
             snprintf(name, sizeof name, "%s, %d spp", ESTIMATORS[e].colour_name, 1 << step);
-            TableRow *row = &rows[e * CONVERGENCE_STEPS + step];
-            *row = render_setting(&small, scene, &reference, 1 << step, ESTIMATORS[e].shadow_rays,
-                                  ESTIMATORS[e].rr, name, "", NULL);
-            seconds[e][step] = row->seconds;
-            rmse[e][step] = row->rmse;
-            /* The error bar: one standard deviation of the runs' RMSE either side. */
-            double spread = isnan(row->rmse_spread) ? 0.0 : row->rmse_spread;
-            low[e][step] = row->rmse - spread;
-            high[e][step] = row->rmse + spread;
+            rows[e * CONVERGENCE_STEPS + step] =
+                render_setting(&small, scene, &reference, 1 << step, ESTIMATORS[e].shadow_rays,
+                               ESTIMATORS[e].rr, name, "", NULL);
         }
         snprintf(labels[e], sizeof labels[e], "M=%d, rr=%g", ESTIMATORS[e].shadow_rays,
                  ESTIMATORS[e].rr);
-        series[e] = (PlotSeries){.label = labels[e], .x = seconds[e], .y = rmse[e],
-                                 .y_low = low[e], .y_high = high[e], .count = CONVERGENCE_STEPS,
-                                 .colour = ESTIMATORS[e].colour, .markers = 1,
-                                 .infinite_variance = rows[e * CONVERGENCE_STEPS].infinite_variance};
+        label_list[e] = labels[e];
+        colours[e] = ESTIMATORS[e].colour;
     }
     printf("\nconvergence at %d pixels wide, 1 to %d spp:\n", small.size, 1 << (CONVERGENCE_STEPS - 1));
     experiment_write_table(options, "ch07_convergence", rows, ESTIMATOR_COUNT * CONVERGENCE_STEPS);
     printf("measured: does the mean RMSE fall at every doubling, and its log-log slope "
            "against time\n(an estimator of finite variance follows -1/2):\n");
     for (int e = 0; e < ESTIMATOR_COUNT; e++) {
-        int falls = 1;
-        for (int step = 1; step < CONVERGENCE_STEPS; step++)
-            falls = falls && rmse[e][step] < rmse[e][step - 1];
-        double slope = log(rmse[e][CONVERGENCE_STEPS - 1] / rmse[e][0]) /
-                       log(seconds[e][CONVERGENCE_STEPS - 1] / seconds[e][0]);
+        const TableRow *series = &rows[e * CONVERGENCE_STEPS];
         printf("  %-14s %-30s slope %+.2f%s\n", labels[e],
-               falls ? "falls at every doubling," : "does not fall at every doubling,", slope,
-               series[e].infinite_variance ? "   (infinite variance)" : "");
+               convergence_falls(series, CONVERGENCE_STEPS) ? "falls at every doubling,"
+                                                            : "does not fall at every doubling,",
+               convergence_slope(series, CONVERGENCE_STEPS),
+               series[0].infinite_variance ? "   (infinite variance)" : "");
     }
-
-    /* A guide of slope -1/2 (error ~ 1/sqrt(time), what an estimator of finite variance
-     * follows) over the last estimator's times, twice its first error so that both
-     * lines show: compare slopes. */
-    const int last = ESTIMATOR_COUNT - 1, final_step = CONVERGENCE_STEPS - 1;
-    double guide_x[2] = {seconds[last][0], seconds[last][final_step]};
-    double guide_y[2] = {2.0 * rmse[last][0], 2.0 * rmse[last][0] * sqrt(guide_x[0] / guide_x[1])};
-    series[ESTIMATOR_COUNT] = (PlotSeries){.label = "slope -1/2", .x = guide_x, .y = guide_y,
-                                           .count = 2, .colour = {0.45, 0.45, 0.45}, .dashed = 1};
-    Plot plot = {{"time (s)", PLOT_LOG, 0.0, 0.0, 0.0}, {"RMSE", PLOT_LOG, 0.0, 0.0, 0.0},
-                 series, ESTIMATOR_COUNT + 1, 0.0};
-    Image image = experiment_plot(&plot, 720, 480);
+    ConvergencePlot plot;
+    convergence_plot(&plot, rows, ESTIMATOR_COUNT, CONVERGENCE_STEPS, label_list, colours);
     char caption[256];
     snprintf(caption, sizeof caption,
              "RMSE against render time as the samples double, 1 to %d spp, %d pixels wide; "
              "each point the mean of %d runs, its bar their standard deviation",
              1 << (CONVERGENCE_STEPS - 1), small.size, small.runs);
-    const char *captions[] = {caption};
-    experiment_write_figure(options, "ch07_convergence", &image, captions, 1, 1.0);
-    image_free(&image);
+    experiment_write_plot(options, "ch07_convergence", &plot.plot, 720, 480, caption);
     measure_reference_free(&reference);
 }
 

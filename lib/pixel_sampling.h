@@ -1,10 +1,10 @@
 /* pixel_sampling.h (chapter 2): where in its pixel each sample looks (report §3.3.1).
  *
  * PIXEL_RANDOM: a uniform point of the pixel ("ray randomization"). PIXEL_SUBPIXELS:
- * the report's sub-pixels, n = spp cells of equal area, one sample in each, at a
- * uniform point of its cell (jittered). A pixel visits its cells from its own random
- * first cell with a golden-ratio stride, so every sample is uniform over the pixel and
- * any first k samples average to an unbiased estimate (docs/chapter2.md).
+ * the report's sub-pixels, n = spp cells of equal area; sample s of n looks through cell
+ * s, at a uniform point of it (jittered), so the n samples together take one cell each
+ * and each estimates its cell's mean. A render stopped before all n must take them in
+ * an order that leaves it unbiased: the bench's renderer does (docs/chapter2.md).
  */
 #ifndef PIXEL_SAMPLING_H
 #define PIXEL_SAMPLING_H
@@ -36,22 +36,14 @@ static inline int pixel_uses_subpixels(PixelSampling sampling)
 #endif
 }
 
-/* The cell a pixel's visit of its `samples` cells starts at: uniform in [0, samples),
- * drawn from the pixel's own generator (PIXEL_STREAM); 0 when samples = 1. */
-#define PIXEL_STREAM UINT64_MAX
-int pixel_first_stratum(Rng *pixel_rng, int samples);
-
-/* The cell (0 <= cell < samples) of sub-pixel sample `sample`. */
-int pixel_stratum(int sample, int samples, int first_stratum);
-
 /* Where cell `cell` of `samples` lies: u in [u0, u0 + width), v in [v0, v0 + height). */
 void pixel_stratum_bounds(int cell, int samples, double *u0, double *v0, double *width,
                           double *height);
 
-/* Point (u, v) of sample `sample` out of `samples`: PIXEL_RANDOM draws u then v from
- * the sample's generator rng, PIXEL_SUBPIXELS the jitter within its cell; PIXEL_CENTRE
- * draws nothing (rng may be NULL). */
-void pixel_position(PixelSampling sampling, int sample, int samples, int first_stratum,
-                    Rng *rng, double *u, double *v);
+/* Point (u, v) of sample `sample` out of `samples`: PIXEL_RANDOM draws u then v from the
+ * sample's generator rng, PIXEL_SUBPIXELS the jitter within cell `sample` (< samples);
+ * PIXEL_CENTRE draws nothing (rng may be NULL). */
+void pixel_position(PixelSampling sampling, int sample, int samples, Rng *rng, double *u,
+                    double *v);
 
 #endif

@@ -5,17 +5,11 @@ Vec3 render_sample(const Scene *scene, const ImageSettings *image, int col, int 
                    int sample, Estimator estimate, const void *settings, RayCounts *counts)
 {
     uint64_t pixel = (uint64_t)row * (uint64_t)image->width + (uint64_t)col;
+    Rng rng = rng_for_sample(image->seed, pixel, (uint64_t)sample);
 #if CHAPTER >= 2
-    int first_stratum = 0;
-    if (pixel_uses_subpixels(image->sampling)) {
-        Rng pixel_rng = rng_for_sample(image->seed, pixel, PIXEL_STREAM);
-        first_stratum = pixel_first_stratum(&pixel_rng, image->spp);
-    }
-    Rng rng = rng_for_sample(image->seed, pixel, (uint64_t)sample);
     double u, v;
-    pixel_position(image->sampling, sample, image->spp, first_stratum, &rng, &u, &v);
+    pixel_position(image->sampling, sample, image->spp, &rng, &u, &v);
 #else
-    Rng rng = rng_for_sample(image->seed, pixel, (uint64_t)sample);
     double u = 0.5, v = 0.5; /* the pixel's centre */
 #endif
 #if CHAPTER >= 7

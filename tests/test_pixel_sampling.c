@@ -1,19 +1,17 @@
 /* test_pixel_sampling.c (chapter 2): where in a pixel the samples go (pixel_sampling.h;
  * report §3.3.1).
  *
- * Sub-pixels: the layout tiles the pixel with n cells of equal area for any n, the
- * visit order is a permutation from any start, each sample lies jittered in its cell,
- * and the positions are uniform over the pixel for every sample count and every prefix
- * of the samples (chi-square), so an interrupted render is unbiased. Random positions
- * stay inside the pixel and average to its centre.
+ * Sub-pixels: the layout tiles the pixel with n cells of equal area for any n, sample s
+ * lies jittered in cell s, and the n samples of a pixel together are uniform over it for
+ * every sample count (chi-square). Random positions stay inside the pixel and average to
+ * its centre. (That every first k samples the renderer takes are uniform too, so that a
+ * stopped render is unbiased, is the bench's: bench/tests/test_sample_order.c.)
  */
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <setjmp.h>
 #include <cmocka.h>
-
-#include <string.h>
 
 #include "check.h"
 #include "chi_square.h"
@@ -60,35 +58,9 @@ static void test_strata_tile_the_pixel(void **state)
     assert_close(h, 1 / 3.0, 1e-15);
 }
 
-/* The visit order is a permutation of the cells, from any start: n samples take one
- * cell each. Checked for every n up to 64 and every start, and for n = 1000 and
- * 2^20 = 1048576 from three starts. */
-static void assert_permutation(int n, int start)
-{
-    static unsigned char seen[1 << 20];
-    memset(seen, 0, (size_t)n);
-    for (int i = 0; i < n; i++) {
-        int cell = pixel_stratum(i, n, start);
-        assert_true(cell >= 0 && cell < n);
-        assert_false(seen[cell]);
-        seen[cell] = 1;
-    }
-}
-
-static void test_strata_order_is_a_permutation(void **state)
-{
-    for (int n = 1; n <= 64; n++)
-        for (int start = 0; start < n; start++)
-            assert_permutation(n, start);
-    const int large[] = {1000, 1 << 20}, starts[] = {0, 1, 777};
-    for (int k = 0; k < 2; k++)
-        for (int s = 0; s < 3; s++)
-            assert_permutation(large[k], starts[s]);
-}
-
-/* Each sub-pixel sample lies in its own cell (pixel_stratum) and strictly inside the
- * pixel; the jitter moves it: over 1000 generators no two positions of one sample
- * coincide, and none is the cell's centre (the planted bug of the uniformity test). At
+/* Sub-pixel sample s lies in cell s and strictly inside the pixel; the jitter moves it:
+ * over 1000 generators its positions are not all one, and none is the cell's centre (the
+ * planted bug of the uniformity test). At
  * one sample per pixel, sub-pixels and random positions are the same positions, so
  * Figure 8's 1-spp panel and a random 1-spp panel are the same image. */
 static void test_subpixel_sample_in_its_cell(void **state)
@@ -101,16 +73,15 @@ static void test_subpixel_sample_in_its_cell(void **state)
             int all_same = 1;
             for (int g = 0; g < 1000; g++) {
                 Rng rng = rng_for_sample(3, (uint64_t)g, (uint64_t)i);
-                int start = g % n;
                 double u, v, u0, v0, w, h;
-                pixel_position(PIXEL_SUBPIXELS, i, n, start, &rng, &u, &v);
-                pixel_stratum_bounds(pixel_stratum(i, n, start), n, &u0, &v0, &w, &h);
+                pixel_position(PIXEL_SUBPIXELS, i, n, &rng, &u, &v);
+                pixel_stratum_bounds(i, n, &u0, &v0, &w, &h);
                 assert_true(u >= u0 && u < u0 + w + 1e-15 && v >= v0 && v < v0 + h + 1e-15);
                 assert_true(u >= 0 && u < 1 && v >= 0 && v < 1);
                 assert_false(u == u0 + w / 2 && v == v0 + h / 2);
                 if (g == 0)
                     first_u = u;
-                all_same &= g % n != 0 || u == first_u;
+                all_same &= u == first_u;
             }
             assert_false(all_same);
         }
@@ -120,8 +91,8 @@ static void test_subpixel_sample_in_its_cell(void **state)
     for (int g = 0; g < 100; g++) {
         Rng a = rng_for_sample(8, (uint64_t)g, 0), b = a;
         double ua, va, ub, vb;
-        pixel_position(PIXEL_SUBPIXELS, 0, 1, 0, &a, &ua, &va);
-        pixel_position(PIXEL_RANDOM, 0, 1, 0, &b, &ub, &vb);
+        pixel_position(PIXEL_SUBPIXELS, 0, 1, &a, &ua, &va);
+        pixel_position(PIXEL_RANDOM, 0, 1, &b, &ub, &vb);
         assert_true(ua == ub && va == vb);
     }
     /* Jitter up to the last representable value stays below 1 in the last cell. */
@@ -129,86 +100,48 @@ static void test_subpixel_sample_in_its_cell(void **state)
     Rng rng = rng_for_sample(0, 0, 0);
     for (int n = 1; n <= 40; n++)
         for (int i = 0; i < n; i++) {
-            pixel_position(PIXEL_SUBPIXELS, i, n, 0, &rng, &u, &v);
+            pixel_position(PIXEL_SUBPIXELS, i, n, &rng, &u, &v);
             assert_true(u < 1 && v < 1);
         }
 }
 
-/* pixel_first_stratum is uniform over [0, n): chi-square over the n values, 1%
- * level, 70,000 draws each for n = 7 and 30 (from the pixels' own generators, as the
- * renderer draws it). One cell needs no start and draws nothing. */
-static void test_first_stratum_uniform(void **state)
-{
-    const int ns[] = {7, 30};
-    for (int k = 0; k < 2; k++) {
-        double observed[30] = {0}, expected[30];
-        const int draws = 70000;
-        for (int p = 0; p < draws; p++) {
-            Rng pixel_rng = rng_for_sample(11, (uint64_t)p, UINT64_MAX);
-            int s = pixel_first_stratum(&pixel_rng, ns[k]);
-            assert_true(s >= 0 && s < ns[k]);
-            observed[s] += 1;
-        }
-        for (int j = 0; j < ns[k]; j++)
-            expected[j] = (double)draws / ns[k];
-        int dof;
-        double x2 = chi_square_statistic(observed, expected, ns[k], &dof);
-        print_message("    n = %d: X^2 = %.1f, %d dof, p = %.3f\n", ns[k], x2, dof,
-                      chi_square_p_value(x2, dof));
-        assert_true(chi_square_p_value(x2, dof) > 0.01);
-    }
-    Rng rng = rng_for_sample(1, 2, 3), before = rng;
-    assert_int_equal(pixel_first_stratum(&rng, 1), 0);
-    assert_true(rng.state == before.state);
-}
-
-/* Sub-pixel positions are uniform over the pixel, for every sample count and after
- * every number of samples: an unbiased estimate of the pixel's integral however many
- * of its samples a render took before it stopped.
- * For n = 1, 2, 3, 4, 5, 7, 16, 30 and each prefix k = 1 ... n, the first k samples of
- * each of PIXELS pixels (each pixel with its own start and jitter, as render.c draws
- * them) are counted in a 6 x 6 grid over the pixel and compared with the uniform
- * density by Pearson's chi-square. 68 tests, each at level 0.01 / 68 (Bonferroni: 1%
- * for the family); fixed seeds.
- * Planted bugs, each rejected with p = 0 at the first prefix (see the report): samples at
- * the cells' centres without jitter, and cells visited from cell 0 for every pixel
- * (no random start), so that a stopped render samples only part of the pixel. */
+/* The n samples of a pixel together are uniform over it, for every sample count: for
+ * n = 1, 2, 3, 4, 5, 7, 16 and 30, samples 0 .. n - 1 of each of PIXELS pixels (each
+ * sample with its own generator, as render.c draws them) are counted in a 6 x 6 grid
+ * over the pixel and compared with the uniform density by Pearson's chi-square, each at
+ * level 0.01 / 8 (Bonferroni: 1% for the family); fixed seeds. Samples at their cells'
+ * centres without jitter (the planted bug) are rejected with p = 0. */
 #define PIXELS 2000
 #define GRID 6
 
-static double prefix_p_value(int n, int k)
+static double full_set_p_value(int n)
 {
     double observed[GRID * GRID] = {0}, expected[GRID * GRID];
-    for (int p = 0; p < PIXELS; p++) {
-        Rng pixel_rng = rng_for_sample(2024, (uint64_t)p, UINT64_MAX);
-        int start = pixel_first_stratum(&pixel_rng, n);
-        for (int i = 0; i < k; i++) {
+    for (int p = 0; p < PIXELS; p++)
+        for (int i = 0; i < n; i++) {
             Rng rng = rng_for_sample(2024, (uint64_t)p, (uint64_t)i);
             double u, v;
-            pixel_position(PIXEL_SUBPIXELS, i, n, start, &rng, &u, &v);
+            pixel_position(PIXEL_SUBPIXELS, i, n, &rng, &u, &v);
             observed[(int)(v * GRID) * GRID + (int)(u * GRID)] += 1;
         }
-    }
     for (int b = 0; b < GRID * GRID; b++)
-        expected[b] = (double)PIXELS * k / (GRID * GRID);
+        expected[b] = (double)PIXELS * n / (GRID * GRID);
     int dof;
     double x2 = chi_square_statistic(observed, expected, GRID * GRID, &dof);
     return chi_square_p_value(x2, dof);
 }
 
-static void test_subpixels_uniform_for_every_prefix(void **state)
+static void test_subpixels_together_uniform(void **state)
 {
     const int ns[] = {1, 2, 3, 4, 5, 7, 16, 30};
-    const int tests = 1 + 2 + 3 + 4 + 5 + 7 + 16 + 30;
     double smallest = 1.0;
-    for (int j = 0; j < 8; j++)
-        for (int k = 1; k <= ns[j]; k++) {
-            double p = prefix_p_value(ns[j], k);
-            if (p < 0.01 / tests)
-                fail_msg("n = %d, first %d samples: p = %.3g", ns[j], k, p);
-            smallest = fmin(smallest, p);
-        }
-    print_message("    %d prefixes, smallest p = %.4f\n", tests, smallest);
+    for (int j = 0; j < 8; j++) {
+        double p = full_set_p_value(ns[j]);
+        if (p < 0.01 / 8)
+            fail_msg("n = %d: p = %.3g", ns[j], p);
+        smallest = fmin(smallest, p);
+    }
+    print_message("    8 sample counts, smallest p = %.4f\n", smallest);
 }
 
 /* PIXEL_CENTRE is always (1/2, 1/2); PIXEL_RANDOM stays in [0,1)^2, varies, and
@@ -216,15 +149,15 @@ static void test_subpixels_uniform_for_every_prefix(void **state)
 static void test_centre_and_random(void **state)
 {
     double u, v, sum_u = 0, sum_v = 0;
-    pixel_position(PIXEL_CENTRE, 3, 16, 0, NULL, &u, &v);
+    pixel_position(PIXEL_CENTRE, 3, 16, NULL, &u, &v);
     assert_true(u == 0.5 && v == 0.5);
     Rng rng = rng_for_sample(2, 3, 4);
     const int n = 100000;
     double first_u;
-    pixel_position(PIXEL_RANDOM, 0, n, 0, &rng, &first_u, &v);
+    pixel_position(PIXEL_RANDOM, 0, n, &rng, &first_u, &v);
     int all_same = 1;
     for (int i = 0; i < n; i++) {
-        pixel_position(PIXEL_RANDOM, i, n, 0, &rng, &u, &v);
+        pixel_position(PIXEL_RANDOM, i, n, &rng, &u, &v);
         assert_true(u >= 0 && u < 1 && v >= 0 && v < 1);
         all_same &= u == first_u;
         sum_u += u;
@@ -239,10 +172,8 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_strata_tile_the_pixel),
-        cmocka_unit_test(test_strata_order_is_a_permutation),
         cmocka_unit_test(test_subpixel_sample_in_its_cell),
-        cmocka_unit_test(test_first_stratum_uniform),
-        cmocka_unit_test(test_subpixels_uniform_for_every_prefix),
+        cmocka_unit_test(test_subpixels_together_uniform),
         cmocka_unit_test(test_centre_and_random),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

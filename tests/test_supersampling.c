@@ -10,18 +10,19 @@
  *    one render of RUNS x STRATA samples per pixel. For each pixel the channel mean
  *    gives z = (a - b) / sqrt(se_a^2 + se_b^2); pixels are independent, so the sum of
  *    z^2 over the 144 pixels is chi-square with 144 degrees of freedom if both estimate
- *    the same image. Significance level 0.1%, fixed seeds (p = 0.96; three other sets
- *    of seeds gave 0.07, 0.96, 0.51). Sub-pixels cut the variance of a pixel's 5-sample
- *    mean by 12% here (0.85 against 0.97). Samples at the cells' centres
- *    without jitter (the planted bug) estimate the image
- *    at fixed points instead, biased at every edge: rejected (sum of z^2 = 1418, largest
- *    |z| 22).
+ *    the same image. Significance level 0.1%, fixed seeds (p = 0.58; three other sets
+ *    of seeds gave 0.58, 0.42, 0.72). Sub-pixels cut the variance of a pixel's 5-sample
+ *    mean by 14% here (0.83 against 0.97). Samples at the cells' centres without jitter
+ *    (the planted bug) estimate the image at fixed points instead, biased at every edge:
+ *    rejected (sum of z^2 = 1414, largest |z| 22).
  * 2. An interrupted render: an estimator returning the sample's
  *    position (u, v, u v) within its pixel has pixel integrals 1/2, 1/2, 1/4. A render of
  *    1000 sub-pixel samples per pixel stopped by SIGINT after about 3 of them must still
- *    average to those, within 4 standard errors over the 1024 pixels. Visiting every
- *    pixel's cells from cell 0 (the planted bug) samples only part of each pixel, and
- *    fails. This test raises SIGINT, after which render.c's flag stays set: it runs last.
+ *    average to those, within 4 standard errors over the 1024 pixels: the renderer takes
+ *    each pixel's samples from a random first one (bench/sample_order.h). Taking every
+ *    pixel's from sample 0 (the planted bug) samples only the top of each pixel, and
+ *    fails. This test raises SIGINT, after which the renderer's flag stays set: it runs
+ *    last.
  */
 #include <stdarg.h>
 #include <stddef.h>

@@ -19,6 +19,7 @@
 #include "path_roulette.h"
 #include "ppm.h"
 #include "record.h"
+#include "sample_order.h"
 #include "scene_file.h"
 #include "sphere_guide.h"
 #include "whitted.h"
@@ -29,7 +30,6 @@
 /* Chapter 8's photons per pass and first radius for an image 800 pixels wide, as
  * chapters/ch08_photon_map.c sets them: they scale with the image (docs/chapter8.md). */
 #define PHOTONS_PER_PIXEL 0.5
-#define FIRST_RADIUS_AT_800 0.0032
 
 typedef struct {
     int chapter;
@@ -42,7 +42,7 @@ typedef struct {
     int mirror_given;  /* chapter 7's mirror light follows the depth unless given */
     double sigma;      /* >= 0: every Oren-Nayar material's roughness; < 0: the scene's */
     int photons;       /* per pass; 0: PHOTONS_PER_PIXEL per pixel */
-    double radius;     /* the first radius; 0: FIRST_RADIUS_AT_800 scaled */
+    double radius;     /* the first radius; 0: PPM_FIRST_RADIUS_AT_800 scaled */
     double alpha;      /* of the radius schedule */
     char program[64];  /* the chapter program, named in messages */
 } LabSettings;
@@ -416,7 +416,7 @@ int lab_configure(Lab *lab, const char *text)
         if (t->photons == 0)
             t->photons = (int)(PHOTONS_PER_PIXEL * lab->width * lab->height + 0.5);
         if (t->radius == 0.0)
-            t->radius = ppm_first_radius(&lab->scene, FIRST_RADIUS_AT_800) * 800.0 / lab->width;
+            t->radius = ppm_first_radius(&lab->scene, PPM_FIRST_RADIUS_AT_800) * 800.0 / lab->width;
     }
     choose_estimator(lab);
     lab->configured = 1;
@@ -511,7 +511,8 @@ static int build_pass(Lab *lab, int pass)
 }
 
 /* The image settings of the render, or (chapter 8) of sample `sample`'s pass, with the
- * sample's number in it in *index. */
+ * sample's pass in that render in *index (the sample it takes of a pixel: sample_order.h,
+ * as the renderer takes it). */
 static ImageSettings image_of(const Lab *lab, int sample, int *index)
 {
     const LabSettings *s = &lab->settings;
@@ -526,13 +527,16 @@ static ImageSettings image_of(const Lab *lab, int sample, int *index)
 
 /* Pass step + 1's pixel (col, row): the mean of its finite samples, rounded to a float
  * as the pass image that ppm.c averages. */
-static Vec3 pass_pixel(Lab *lab, int step, int col, int row, RayCounts *counts)
+static Vec3 pass_pixel(Lab *lab, const SampleOrder *order, int step, int col, int row,
+                       RayCounts *counts)
 {
     PixelSum sum = {{0}, {0}, 0};
+    uint64_t pixel = (uint64_t)row * (uint64_t)lab->width + (uint64_t)col;
     for (int k = 0; k < lab->settings.spp; k++) {
-        int index;
-        ImageSettings image = image_of(lab, step * lab->settings.spp + k, &index);
-        Vec3 radiance = render_sample(&lab->scene, &image, col, row, index, lab->estimate,
+        int pass;
+        ImageSettings image = image_of(lab, step * lab->settings.spp + k, &pass);
+        Vec3 radiance = render_sample(&lab->scene, &image, col, row,
+                                      sample_order_sample(order, pixel, pass), lab->estimate,
                                       lab->estimator_settings, counts);
         if (vec3_is_finite(radiance))
             pixel_sum_add(&sum, radiance);
@@ -550,13 +554,16 @@ int lab_render_band(Lab *lab, int step, int row0, int rows, double *out)
     int chapter8 = lab->settings.chapter == 8;
     if (chapter8 && build_pass(lab, step + 1) != 0)
         return -1;
-    int index;
-    ImageSettings image = image_of(lab, step, &index);
+    int pass;
+    ImageSettings image = image_of(lab, chapter8 ? step * lab->settings.spp : step, &pass);
+    SampleOrder order = sample_order_make(&image);
     RayCounts counts = {0, 0, 0};
     for (int r = 0; r < rows; r++)
         for (int col = 0; col < lab->width; col++) {
-            Vec3 radiance = chapter8 ? pass_pixel(lab, step, col, row0 + r, &counts)
-                                     : render_sample(&lab->scene, &image, col, row0 + r, index,
+            uint64_t at = (uint64_t)(row0 + r) * (uint64_t)lab->width + (uint64_t)col;
+            Vec3 radiance = chapter8 ? pass_pixel(lab, &order, step, col, row0 + r, &counts)
+                                     : render_sample(&lab->scene, &image, col, row0 + r,
+                                                     sample_order_sample(&order, at, pass),
                                                      lab->estimate, lab->estimator_settings, &counts);
             double *pixel = out + 3 * ((long)r * lab->width + col);
             pixel[0] = radiance.x;
@@ -589,10 +596,13 @@ const char *lab_record(Lab *lab, int col, int row, int first, int count)
     json_clear(json);
     json_text(json, "{\"col\":%d,\"row\":%d,\"paths\":[", col, row);
     for (int k = 0; k < count; k++) {
-        int sample = first + k, index;
+        int sample = first + k, pass;
         if (s->chapter == 8 && build_pass(lab, sample / s->spp + 1) != 0)
             return NULL;
-        ImageSettings image = image_of(lab, sample, &index);
+        ImageSettings image = image_of(lab, sample, &pass);
+        SampleOrder order = sample_order_make(&image);
+        uint64_t pixel = (uint64_t)row * (uint64_t)lab->width + (uint64_t)col;
+        int index = sample_order_sample(&order, pixel, pass);
         RayCounts counts = {0, 0, 0};
         json_text(json, "%s{\"sample\":%d,\"path\":", k ? "," : "", sample);
         record_start(json, &lab->scene, s->chapter == 1 ? NULL : &s->path, s->chapter == 1);

@@ -4,7 +4,8 @@
  * The tone map is checked at its fixed points and for rounding to the nearest code over
  * the whole range; PFM must round-trip bit for bit, read either byte order, and reject
  * every kind of broken file with a message naming it; PNG must be a PNG of the right
- * size whose pixels are the tone-mapped radiance; and a failed write leaves nothing.
+ * size whose pixels are the tone-mapped radiance; and a failed write leaves nothing. A
+ * crop, enlarged, by hand.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -169,6 +170,37 @@ static void test_image_new(void **state)
         assert_int_equal(none.width, 0);
         assert_int_equal(none.height, 0);
     }
+}
+
+/* A crop by hand, on a 4 x 3 image whose pixel (c, r) holds (c, r, 0): the square of side
+ * 2 asked at (3, 2) pokes out right and below, so it is moved to (2, 1); enlarged twice,
+ * crop pixel (x, y) shows (2 + x / 2, 1 + y / 2). A side larger than the image's smaller
+ * side is cut to it, and one below 1 is 1. */
+static void test_crop_by_hand(void **state)
+{
+    Image image = image_new(4, 3);
+    assert_non_null(image.pixels);
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 4; c++)
+            image_set(&image, c, r, vec3(c, r, 0));
+    Image crop = image_crop(&image, 3, 2, 2, 2);
+    assert_int_equal(crop.width, 4);
+    assert_int_equal(crop.height, 4);
+    for (int y = 0; y < 4; y++)
+        for (int x = 0; x < 4; x++) {
+            Vec3 p = image_get(&crop, x, y);
+            assert_true(p.x == 2 + x / 2 && p.y == 1 + y / 2);
+        }
+    image_free(&crop);
+    crop = image_crop(&image, -5, -5, 10, 1);
+    assert_int_equal(crop.width, 3);
+    assert_true(image_get(&crop, 2, 2).x == 2 && image_get(&crop, 2, 2).y == 2);
+    image_free(&crop);
+    crop = image_crop(&image, 1, 1, 0, 3);
+    assert_int_equal(crop.width, 3);
+    assert_true(image_get(&crop, 2, 2).x == 1 && image_get(&crop, 2, 2).y == 1);
+    image_free(&crop);
+    image_free(&image);
 }
 
 static void assert_round_trip(const Image *image)
@@ -408,6 +440,7 @@ int main(void)
         cmocka_unit_test(test_tonemap_values),
         cmocka_unit_test(test_tonemap_rounds_to_nearest),
         cmocka_unit_test(test_image_new),
+        cmocka_unit_test(test_crop_by_hand),
         cmocka_unit_test_setup_teardown(test_pfm_round_trip_is_bit_exact, make_scratch,
                                         remove_scratch),
         cmocka_unit_test_setup_teardown(test_pfm_layout, make_scratch, remove_scratch),

@@ -127,6 +127,90 @@ static void test_image_mean_by_hand(void **state)
     image_free(&channel_error);
 }
 
+/* Channel means by hand: pixels (1, 2, 4) and (3, 6, 0) give (2, 4, 2). */
+static void test_channel_means_by_hand(void **state)
+{
+    const float values[] = {1, 2, 4, 3, 6, 0};
+    Image image = image_of(1, 2, values);
+    double means[3];
+    measure_channel_means(&image, means);
+    assert_close(means[0], 2.0, 1e-15);
+    assert_close(means[1], 4.0, 1e-15);
+    assert_close(means[2], 2.0, 1e-15);
+    image_free(&image);
+}
+
+/* The most efficient row that can be ranked: not of infinite variance, its efficiency
+ * measured (not NaN); -1 when none is. */
+static void test_most_efficient(void **state)
+{
+    TableRow rows[4] = {{.efficiency = NAN}, {.efficiency = 3}, {.efficiency = 9, .infinite_variance = 1},
+                        {.efficiency = 5}};
+    assert_int_equal(measure_most_efficient(rows, 4), 3);
+    assert_int_equal(measure_most_efficient(rows, 3), 1);
+    assert_int_equal(measure_most_efficient(rows, 1), -1);
+    assert_int_equal(measure_most_efficient(&rows[2], 1), -1);
+}
+
+/* Clearly lower: relative MSE 1 and 2 from 4 runs each of spread 0.6 have a difference
+ * of standard error sqrt(2) 0.3 = 0.42, so 1 is more than twice that below 2, but not
+ * below 1.8; one run has no spread to weigh; and nothing is lower than itself. */
+static void test_clearly_lower(void **state)
+{
+    TableRow low = {.rel_mse = 1, .rel_mse_spread = 0.6, .runs = 4};
+    TableRow high = {.rel_mse = 2, .rel_mse_spread = 0.6, .runs = 4};
+    TableRow near = {.rel_mse = 1.8, .rel_mse_spread = 0.6, .runs = 4};
+    TableRow single = {.rel_mse = 1.1, .rel_mse_spread = NAN, .runs = 1};
+    assert_true(measure_clearly_lower(&low, &high));
+    assert_false(measure_clearly_lower(&high, &low));
+    assert_false(measure_clearly_lower(&low, &near));
+    assert_false(measure_clearly_lower(&low, &low));
+    TableRow single_high = {.rel_mse = 1.2, .rel_mse_spread = NAN, .runs = 1};
+    assert_true(measure_clearly_lower(&single, &single_high));
+}
+
+/* z by hand: 5 +- 3 against 1 +- 4 is 4 / 5 = 0.8 standard errors above; the other
+ * way, -0.8. Changed pixels by hand: of three, one differs in its blue channel alone. */
+static void test_z_and_changed_fraction_by_hand(void **state)
+{
+    assert_close(measure_z(5, 3, 1, 4), 0.8, 1e-15);
+    assert_close(measure_z(1, 4, 5, 3), -0.8, 1e-15);
+    const float a_values[] = {1, 2, 3, 4, 5, 6, 7, 8, 9}, b_values[] = {1, 2, 3, 4, 5, 6.5f, 7, 8, 9};
+    Image a = image_of(3, 1, a_values), b = image_of(3, 1, b_values);
+    assert_close(measure_changed_fraction(&a, &b), 1.0 / 3.0, 1e-15);
+    assert_close(measure_changed_fraction(&a, &a), 0.0, 0.0);
+    image_free(&a);
+    image_free(&b);
+}
+
+/* A window's brightness by hand, on a 3 x 2 image whose pixels are grey 0 .. 5 in reading
+ * order with standard errors 1 .. 6 in the red channel alone (their channel mean, 1/3 ..
+ * 2): the 3 x 3 window around pixel (1, 0) repeats the top row for the row above the
+ * image, so it holds 0, 1, 2 twice and 3, 4, 5: mean 18 / 9 = 2, standard error
+ * sqrt(2 (1 + 4 + 9) + 16 + 25 + 36) / 9 / 3. Half 0 is the pixel alone; the window
+ * around the corner (2, 1) with half 1 repeats the last column and row: 1, 2, 2, 4, 5, 5,
+ * 4, 5, 5, mean 33 / 9. */
+static void test_window_mean_by_hand(void **state)
+{
+    float grey[18], errors[18] = {0};
+    for (int i = 0; i < 6; i++) {
+        grey[3 * i] = grey[3 * i + 1] = grey[3 * i + 2] = (float)i;
+        errors[3 * i] = (float)(i + 1);
+    }
+    Image image = image_of(3, 2, grey), std_error = image_of(3, 2, errors);
+    double mean, error;
+    measure_window_mean(&image, &std_error, 1, 0, 1, &mean, &error);
+    assert_close(mean, 2.0, 1e-15);
+    assert_close(error, sqrt(2.0 * (1 + 4 + 9) + 16 + 25 + 36) / 9.0 / 3.0, 1e-15);
+    measure_window_mean(&image, &std_error, 2, 1, 0, &mean, &error);
+    assert_close(mean, 5.0, 1e-15);
+    assert_close(error, 2.0, 1e-15);
+    measure_window_mean(&image, &std_error, 2, 1, 1, &mean, &error);
+    assert_close(mean, 33.0 / 9.0, 1e-15);
+    image_free(&image);
+    image_free(&std_error);
+}
+
 /* Averaging P independent pixels each with standard error s gives s / sqrt(P): four
  * pixels with s = 0.5 give 0.25. */
 static void test_image_mean_error_shrinks_as_root_n(void **state)
@@ -512,6 +596,11 @@ int main(void)
         cmocka_unit_test(test_identical_images_have_no_error),
         cmocka_unit_test(test_rms_by_hand),
         cmocka_unit_test(test_image_mean_by_hand),
+        cmocka_unit_test(test_channel_means_by_hand),
+        cmocka_unit_test(test_z_and_changed_fraction_by_hand),
+        cmocka_unit_test(test_most_efficient),
+        cmocka_unit_test(test_clearly_lower),
+        cmocka_unit_test(test_window_mean_by_hand),
         cmocka_unit_test(test_image_mean_error_shrinks_as_root_n),
         cmocka_unit_test(test_image_mean_error_of_known_variance),
         cmocka_unit_test(test_ks_test_has_power),

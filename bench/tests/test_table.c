@@ -4,7 +4,8 @@
  * The CSV is read back with a small RFC 4180 reader (quoted fields, "" for a quote) and
  * every number compared with the row it came from; the printed table is captured in
  * memory and checked line by line: one per row under a header, "-" where nothing was
- * measured, and every line as long as the header, so columns stay aligned.
+ * measured, and every line as long as the header, so columns stay aligned. A table of
+ * numbers as CSV, by hand.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -340,6 +341,25 @@ static void test_print_long_names_keep_columns(void **state)
     free(printed.text);
 }
 
+/* A table of numbers as CSV, by hand: the header, then each row with its columns'
+ * decimals (rounded, and negative numbers kept). No file is left where it cannot be
+ * written. */
+static void test_numbers_csv_by_hand(void **state)
+{
+    const double values[] = {5, 0.1234567, -2.5, 42.25, 1.0 / 3.0, 0.0};
+    const int decimals[] = {0, 4, 2};
+    assert_int_equal(table_write_numbers_csv(csv_path, "a,b,c", values, 2, 3, decimals), 0);
+    FILE *file = fopen(csv_path, "r");
+    assert_non_null(file);
+    char text[256] = "";
+    size_t length = fread(text, 1, sizeof text - 1, file);
+    fclose(file);
+    text[length] = '\0';
+    assert_string_equal(text, "a,b,c\n5,0.1235,-2.50\n42,0.3333,0.00\n");
+    assert_int_equal(table_write_numbers_csv("/nonexistent-folder/table.csv", "a", values, 1, 1,
+                                             decimals), -1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -347,6 +367,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_csv_values, make_scratch, remove_scratch),
         cmocka_unit_test_setup_teardown(test_csv_quotes_text, make_scratch, remove_scratch),
         cmocka_unit_test_setup_teardown(test_csv_edge_cases, make_scratch, remove_scratch),
+        cmocka_unit_test_setup_teardown(test_numbers_csv_by_hand, make_scratch, remove_scratch),
         cmocka_unit_test(test_print_rows),
         cmocka_unit_test(test_print_within_reference_noise),
         cmocka_unit_test(test_print_long_names_keep_columns),
