@@ -141,25 +141,68 @@ static const char *const room_point_names[] = {"the floor", "the floor in the sp
 #define ROOM_POINTS 3
 #define DIRECT_TRIALS 50
 
-/* What eq. 21's L_D, `direct`, does wrong with M shadow rays whose values average `mean`
- * (the others right). */
-static void fail_direct(Grading *g, int m, int point, double direct, double mean)
+/* The first L_D with M shadow rays that differs from the mean of its shadow rays. */
+typedef struct {
+    int m, point; /* point < 0: none differs */
+    double direct, mean;
+} DirectCheck;
+
+static int times_m(const DirectCheck *c)
 {
-    int decimals = grading_decimals(direct, mean);
-    if (m > 1 && fabs(direct - m * mean) <= 1e-9 * fabs(m * mean))
+    return c->m > 1 && fabs(c->direct - c->m * c->mean) <= 1e-9 * fabs(c->m * c->mean);
+}
+
+/* What L_D does wrong where it first differs (c->point >= 0). */
+static void fail_direct(Grading *g, const DirectCheck *c)
+{
+    int decimals = grading_decimals(c->direct, c->mean);
+    const char *where = room_point_names[c->point];
+    if (times_m(c))
         grading_fail(g, "the sum of M terms is not divided by M: with M = %d the light is %d "
                      "times too bright (L_D = %.4f on %s, where the mean of its %d shadow rays "
-                     "is %.4f; eq. 21: A / M times the sum)", m, m, direct,
-                     room_point_names[point], m, mean);
-    else if (m > 1 && direct == 0.0)
+                     "is %.4f; eq. 21: A / M times the sum)", c->m, c->m, c->direct, where, c->m,
+                     c->mean);
+    else if (c->m > 1 && c->direct == 0.0)
         grading_fail(g, "L_D is 0 with M = %d on %s, where the mean of its %d shadow rays is "
                      "%.4f (and right with M = 1): is 1 / M computed with whole numbers? 1 / M "
-                     "is 0 for M > 1; 1.0 / M is not", m, room_point_names[point], m, mean);
+                     "is 0 for M > 1; 1.0 / M is not", c->m, where, c->m, c->mean);
     else
         grading_fail(g, "with M = %d on %s, L_D = %.*f where the mean of the M shadow rays "
-                     "area_light_shadow_ray draws from the same generator is %.*f: L_D is "
-                     "the sum of their values divided by M (eq. 21)", m,
-                     room_point_names[point], decimals, direct, decimals, mean);
+                     "area_light_shadow_ray draws from the same generator is %.*f: L_D is the "
+                     "sum of their values divided by M (eq. 21)", c->m, where, decimals,
+                     c->direct, decimals, c->mean);
+}
+
+/* L_D with M shadow rays at the room's points, DIRECT_TRIALS times each, against the mean
+ * of the same M shadow rays drawn again from the same generator; the first that differs
+ * in *first. Returns 0, or -1 after failing on a NaN. */
+static int direct_trials(Grading *g, const Scene *scene, int m, DirectCheck *first)
+{
+    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.7, 0.7)};
+    RayCounts counts = {0};
+    double sum_direct = 0.0, sum_mean = 0.0;
+    *first = (DirectCheck){m, -1, 0.0, 0.0};
+    for (int p = 0; p < ROOM_POINTS; p++)
+        for (int t = 0; t < DIRECT_TRIALS; t++) {
+            Vec3 x = room_points[p][0], n = room_points[p][1];
+            Rng rng = rng_for_sample(34, (uint64_t)m, (uint64_t)(p * DIRECT_TRIALS + t));
+            Rng again = rng;
+            double direct = ASK(g, area_light_direct(scene, x, n, n, &white, m, &rng, &counts).y);
+            double terms = 0.0;
+            for (int i = 0; i < m && grading_probing(g); i++)
+                terms += area_light_shadow_ray(scene, x, n, n, &white, &again, &counts).value.y;
+            double mean = ASK(g, terms / m);
+            if (grading_not_finite(g, direct, "L_D"))
+                return -1;
+            sum_direct += direct;
+            sum_mean += mean;
+            if (first->point < 0 && fabs(direct - mean) > 1e-12 + 1e-9 * fabs(mean))
+                *first = (DirectCheck){m, p, direct, mean};
+        }
+    grading_note(g, "M = %d: L_D averages %.4f over %d trials at %d points; the means of their "
+                 "shadow rays %.4f", m, sum_direct / (ROOM_POINTS * DIRECT_TRIALS),
+                 DIRECT_TRIALS, ROOM_POINTS, sum_mean / (ROOM_POINTS * DIRECT_TRIALS));
+    return 0;
 }
 
 static void grade_direct(Grading *g)
@@ -168,38 +211,25 @@ static void grade_direct(Grading *g)
     if (grading_scene(g, render_check_room, &scene) != 0)
         return;
     static const int shadow_rays[] = {1, 2, 4, 30};
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.7, 0.7)};
-    RayCounts counts = {0};
-    for (int k = 0; k < 4 && !g->failed; k++) {
-        int m = shadow_rays[k];
-        double sum_direct = 0.0, sum_mean = 0.0;
-        int trials = 0;
-        for (int p = 0; p < ROOM_POINTS && !g->failed; p++)
-            for (int t = 0; t < DIRECT_TRIALS && !g->failed; t++) {
-                Vec3 x = room_points[p][0], n = room_points[p][1];
-                Rng rng = rng_for_sample(34, (uint64_t)m, (uint64_t)(p * DIRECT_TRIALS + t));
-                Rng again = rng;
-                double direct = ASK(g, area_light_direct(&scene, x, n, n, &white, m, &rng,
-                                                         &counts).y);
-                /* The same M shadow rays again, from the same generator. */
-                double terms = 0.0;
-                for (int i = 0; i < m && grading_probing(g); i++)
-                    terms += area_light_shadow_ray(&scene, x, n, n, &white, &again, &counts).value.y;
-                double mean = ASK(g, terms / m);
-                if (grading_not_finite(g, direct, "L_D"))
-                    break;
-                sum_direct += direct;
-                sum_mean += mean;
-                trials++;
-                if (fabs(direct - mean) > 1e-12 + 1e-9 * fabs(mean))
-                    fail_direct(g, m, p, direct, mean);
-            }
-        if (trials > 0)
-            grading_note(g, "M = %d: L_D averages %.4f over %d trials at %d points; the means of "
-                         "their shadow rays %.4f", m, sum_direct / trials, trials, ROOM_POINTS,
-                         sum_mean / trials);
+    DirectCheck checks[4];
+    int wrong = 0, unscaled = 0;
+    for (int k = 0; k < 4; k++) {
+        if (direct_trials(g, &scene, shadow_rays[k], &checks[k]) != 0) {
+            scene_free(&scene);
+            return;
+        }
+        wrong += checks[k].point >= 0;
+        unscaled += checks[k].point >= 0 && times_m(&checks[k]);
     }
     scene_free(&scene);
+    if (wrong == 3 && unscaled == 3)
+        grading_fail(g, "the sum of M terms is not divided by M: with M = 2, 4 and 30 the light "
+                     "is 2, 4 and 30 times too bright (with M = 4 on %s, L_D = %.4f where the "
+                     "mean of its 4 shadow rays is %.4f; eq. 21: A / M times the sum)",
+                     room_point_names[checks[2].point], checks[2].direct, checks[2].mean);
+    for (int k = 0; k < 4 && !g->failed; k++)
+        if (checks[k].point >= 0)
+            fail_direct(g, &checks[k]);
 }
 
 const Exercise exercises[] = {

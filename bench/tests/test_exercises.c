@@ -94,7 +94,8 @@ static const Mistake mistakes[] = {
      "exercise-3.3-zmap.png"},
     {3, "3.4", "eq. 21's sum not divided by M", "lib/area_light.c",
      "return vec3_scale(sum, 1.0 / shadow_rays);", "return sum;",
-     "the sum of M terms is not divided by M: with M = 2 the light is 2 times too bright", NULL},
+     "the sum of M terms is not divided by M: with M = 2, 4 and 30 the light is 2, 4 and 30 "
+     "times too bright", NULL},
     {3, "3.4", "1 / M in whole numbers", "lib/area_light.c", "1.0 / shadow_rays",
      "1 / shadow_rays", "whole numbers", NULL},
     {3, "3.4", "a right eq. 21 over the shadow ray of 3.3 gone wrong", "lib/area_light.c",
