@@ -38,7 +38,7 @@ typedef struct {
 ShadowRay area_light_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Material *m,
                                 Rng *rng, RayCounts *counts);
 
-/* Eq. 21 with M = shadow_rays >= 1. */
+/* Exercise 3.4: eq. 21 with M = shadow_rays >= 1, the mean of M shadow rays. */
 Vec3 area_light_direct(const Scene *scene, Vec3 x, Vec3 n, Vec3 wo, const Material *m,
                        int shadow_rays, Rng *rng, RayCounts *counts);
 

@@ -36,9 +36,9 @@ typedef struct {
     Vec3 power;
 } PhotonRay;
 
-/* A photon leaving the lights, one of `emitted` shot in all, from five uniform numbers:
- * u_select, u1, u2 choose the point (area_light_sample), u3, u4 the direction. The
- * scene must have a light. */
+/* Exercise 8.3: a photon leaving the lights, one of `emitted` shot in all, from five
+ * uniform numbers: u_select, u1, u2 choose the point (area_light_sample), u3, u4 the
+ * direction. The scene must have a light. */
 PhotonRay photon_emit(const Scene *scene, int emitted, double u_select, double u1, double u2,
                       double u3, double u4);
 

@@ -8,7 +8,7 @@
 #ifndef SCHLICK_H
 #define SCHLICK_H
 
-/* Reflectance for incidence cosine cos_i in [0, 1], from index n_i into n_t. */
+/* Exercise 1.6: reflectance for incidence cosine cos_i in [0, 1], from index n_i into n_t. */
 double schlick_reflectance(double cos_i, double n_i, double n_t);
 
 #endif

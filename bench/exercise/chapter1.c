@@ -12,6 +12,7 @@
 #include "camera.h"
 #include "grading.h"
 #include "mirror.h"
+#include "schlick.h"
 #include "snell.h"
 #include "sphere.h"
 #include "triangle.h"
@@ -75,9 +76,10 @@ static void grade_sphere(Grading *g)
                 grading_fail(g, "returns the far side of the sphere, t = %.4f, where the first "
                              "hit is at t = %.4f: the smaller root comes first", t, near);
             else
-                grading_fail(g, "t = %.6f where the ray meets the sphere at t = %.6f: the point "
+                grading_fail(g, "t = %.*f where the ray meets the sphere at t = %.*f: the point "
                              "at t is %.3g off the surface (is the direction unit, and are b "
-                             "and c as in eq. 20?)", t, expected, off);
+                             "and c as in eq. 20?)", grading_decimals(t, expected), t,
+                             grading_decimals(t, expected), expected, off);
         }
         hits += expected != INFINITY && kind != 2;
         misses += expected == INFINITY;
@@ -132,8 +134,9 @@ static void grade_triangle(Grading *g)
                          "from %s side", a, b,
                          vec3_dot(d, tri.normal) < 0.0 ? "the front" : "the back");
         } else if (expected != INFINITY && !close_to(t, expected, 1e-9 * (1.0 + expected))) {
-            grading_fail(g, "t = %.6f where the triangle is at t = %.6f along the ray (eq. 18: "
-                         "t = (e2 . q) / det)", t, expected);
+            grading_fail(g, "t = %.*f where the triangle is at t = %.*f along the ray (eq. 18: "
+                         "t = (e2 . q) / det)", grading_decimals(t, expected), t,
+                         grading_decimals(t, expected), expected);
         }
         hits += expected != INFINITY;
         misses += expected == INFINITY;
@@ -176,7 +179,17 @@ static void grade_camera(Grading *g)
             continue;
         /* Which plane point does it go through? Where the ray meets the image plane. */
         Vec3 normal = vec3_normalize(vec3_cross(camera.right, camera.up));
-        double t = vec3_dot(vec3_sub(bl, eye), normal) / vec3_dot(ray.dir, normal);
+        double towards = vec3_dot(ray.dir, normal);
+        double t = vec3_dot(vec3_sub(bl, eye), normal) / towards;
+        if (!(t > 0.0 && isfinite(t))) {
+            grading_fail(g, "pixel (%d, %d) at (u, v) = (%.2f, %.2f) sends its ray along (%.3f, "
+                         "%.3f, %.3f), %s the image plane; it should go through the plane at "
+                         "(%.3f, %.3f) of its width and height, along (%.3f, %.3f, %.3f)", col,
+                         row, u, v, ray.dir.x, ray.dir.y, ray.dir.z,
+                         fabs(towards) < 1e-12 ? "parallel to" : "away from", x, y, expected.x,
+                         expected.y, expected.z);
+            break;
+        }
         Vec3 rel = vec3_sub(vec3_add_scaled(eye, ray.dir, t), bl);
         double got_x = vec3_dot(rel, camera.right) / vec3_dot(camera.right, camera.right);
         double got_y = vec3_dot(rel, camera.up) / vec3_dot(camera.up, camera.up);
@@ -195,6 +208,22 @@ static void grade_camera(Grading *g)
                  tried, width, height);
 }
 
+/* What R(d) = d + k (d . n) n with k other than -2 does wrong. */
+static void name_mirror_factor(Grading *g, double k, double dn, double length)
+{
+    if (fabs(k) <= 1e-9)
+        grading_fail(g, "R(d) = d: the direction goes on through the mirror; its normal part "
+                     "must turn round: R(d) = d - 2 (d . n) n");
+    else if (fabs(k - 2.0) <= 1e-9)
+        grading_fail(g, "R(d) = d + 2 (d . n) n: the sign is wrong, so the normal part is "
+                     "doubled, not turned round (R . n = %.4f where -d . n = %.4f): R(d) = d - 2 "
+                     "(d . n) n", 3.0 * dn, -dn);
+    else
+        grading_fail(g, "R(d) = d %c %.4g (d . n) n, %.4f long for a unit d: the factor of (d . "
+                     "n) n should be 2, subtracted: R(d) = d - 2 (d . n) n", k < 0.0 ? '-' : '+',
+                     fabs(k), length);
+}
+
 static void grade_mirror(Grading *g)
 {
     int i;
@@ -202,21 +231,24 @@ static void grade_mirror(Grading *g)
         TestRandom rng = test_random(14, 1, (uint64_t)i);
         Vec3 n = random_unit_vector(&rng), d = random_unit_vector(&rng);
         Vec3 r = ASK_VEC3(g, mirror_reflect(d, n));
-        double length = vec3_length(r);
+        double length = vec3_length(r), dn = vec3_dot(d, n);
         if (grading_not_finite(g, length, "the reflected direction's length"))
             break;
-        if (!close_to(length, 1.0, 1e-12))
-            grading_fail(g, "R(d) is %.4f long for a unit d: the factor of (d . n) n should be "
-                         "2 (d . n = %.3f)", length, vec3_dot(d, n));
-        else if (!close_to(vec3_dot(r, n), -vec3_dot(d, n), 1e-12))
-            grading_fail(g, "R . n = %.4f where -d . n = %.4f: %s", vec3_dot(r, n),
-                         -vec3_dot(d, n),
-                         close_to(vec3_dot(r, n), vec3_dot(d, n), 1e-12)
-                             ? "the normal part is not turned round (d - 2 (d . n) n)"
-                             : "the reflection leaves at another angle than it arrived");
+        if (vec3_length(vec3_sub(r, vec3_add_scaled(d, n, -2.0 * dn))) <= 1e-12)
+            continue;
+        /* Is R(d) = d + k (d . n) n for another factor k? */
+        double k = fabs(dn) > 0.05 ? vec3_dot(vec3_sub(r, d), n) / dn : NAN;
+        if (isfinite(k) && vec3_length(vec3_sub(r, vec3_add_scaled(d, n, k * dn))) <= 1e-9)
+            name_mirror_factor(g, k, dn, length);
+        else if (!close_to(length, 1.0, 1e-12))
+            grading_fail(g, "R(d) is %.*f long for a unit d: a reflection keeps the length (d - "
+                         "2 (d . n) n)", grading_decimals(length, 1.0), length);
+        else if (!close_to(vec3_dot(r, n), -dn, 1e-12))
+            grading_fail(g, "R . n = %.4f where -d . n = %.4f: the reflection leaves at another "
+                         "angle than it arrived", vec3_dot(r, n), -dn);
         else if (!close_to(vec3_dot(vec3_cross(d, n), r), 0.0, 1e-12))
             grading_fail(g, "R(d) leaves the plane of d and n");
-        else if (vec3_length(vec3_sub(r, vec3_add_scaled(d, n, -2.0 * vec3_dot(d, n)))) > 1e-12)
+        else
             grading_fail(g, "R(d) = (%.3f, %.3f, %.3f) is not d - 2 (d . n) n", r.x, r.y, r.z);
     }
     grading_note(g, "%d random unit directions and normals, either side", i);
@@ -275,13 +307,115 @@ static void grade_snell(Grading *g)
         else if (!close_to(vec3_dot(vec3_cross(d, n), t), 0.0, 1e-9))
             grading_fail(g, "the refracted ray leaves the plane of d and n");
         else if (sin_i > 0.05 && !close_to(got_sin_t / sin_i, n_i / n_t, 1e-6))
-            grading_fail(g, "sin(theta_t) / sin(theta_i) = %.4f from index %.2f into %.2f, where "
-                         "Snell's law gives n_i / n_t = %.4f%s", got_sin_t / sin_i, n_i, n_t,
-                         n_i / n_t,
+            grading_fail(g, "sin(theta_t) / sin(theta_i) = %.*f from index %.2f into %.2f, where "
+                         "Snell's law gives n_i / n_t = %.*f%s",
+                         grading_decimals(got_sin_t / sin_i, n_i / n_t), got_sin_t / sin_i, n_i,
+                         n_t, grading_decimals(got_sin_t / sin_i, n_i / n_t), n_i / n_t,
                          close_to(got_sin_t / sin_i, n_t / n_i, 1e-6) ? ": the ratio is inverted" : "");
     }
     grading_note(g, "%d refractions and %d total internal reflections at indices 1 / 1.5, 1.5 / "
                  "1, 1 / 1.33 and 1.6 / 1.2", refracted, reflected);
+}
+
+/* Schlick's R (eqs. 6-7) with (1 - cos theta) to `power`: theta the transmitted angle
+ * leaving the denser medium when `transmitted` (1 beyond the critical angle), else the
+ * incidence angle; R0 squared when `squared`. 0 with no interface. */
+static double schlick(double cos_i, double n_i, double n_t, int power, int transmitted,
+                      int squared)
+{
+    if (n_i == n_t)
+        return 0.0;
+    double cos_theta = cos_i;
+    if (n_i > n_t && transmitted) {
+        double sin2_t = (n_i / n_t) * (n_i / n_t) * (1.0 - cos_i * cos_i);
+        if (sin2_t >= 1.0)
+            return 1.0;
+        cos_theta = sqrt(1.0 - sin2_t);
+    }
+    double r0 = (n_i - n_t) / (n_i + n_t);
+    r0 = squared ? r0 * r0 : r0;
+    return r0 + (1.0 - r0) * pow(1.0 - cos_theta, power);
+}
+
+/* The power other than 5 of (1 - cos theta) that R matches at this incidence, or 0. */
+static int schlick_wrong_power(double r, double cos_i, double n_i, double n_t)
+{
+    for (int power = 1; power <= 6; power++)
+        if (power != 5 && close_to(r, schlick(cos_i, n_i, n_t, power, 1, 1), 1e-12))
+            return power;
+    return 0;
+}
+
+/* Another known mistake R matches at this incidence, in words, or "". */
+static const char *schlick_mistake(double r, double cos_i, double n_i, double n_t)
+{
+    if (n_i > n_t && close_to(r, schlick(cos_i, n_i, n_t, 5, 0, 1), 1e-12))
+        return ": leaving the denser medium (n_i > n_t), theta must be the transmitted angle, "
+               "cos theta = snell_cos_transmitted(cos_i, n_i, n_t) (erratum 4); with the "
+               "incidence angle R jumps to 1 at the critical angle";
+    if (close_to(r, schlick(cos_i, n_i, n_t, 5, 1, 0), 1e-12))
+        return ": R0 is (n_i - n_t) / (n_i + n_t) squared (eq. 7)";
+    return "";
+}
+
+/* Where one pair of indices is furthest from Schlick's R: the failure it makes. */
+static void fail_schlick(Grading *g, double n_i, double n_t, int degrees, double got)
+{
+    static const char *const ordinals[] = {"", "first", "second", "third", "fourth", "fifth",
+                                           "sixth"};
+    double cos_i = cos(degrees * PI / 180.0), want = schlick(cos_i, n_i, n_t, 5, 1, 1);
+    double sin2_t = (n_i / n_t) * (n_i / n_t) * (1.0 - cos_i * cos_i);
+    int decimals = grading_decimals(got, want);
+    int power = schlick_wrong_power(got, cos_i, n_i, n_t);
+    char where[160];
+    snprintf(where, sizeof where, "R = %.*f at %d degrees from index %.2f into %.2f", decimals,
+             got, degrees, n_i, n_t);
+    if (n_i == n_t)
+        grading_fail(g, "%s: with n_i = n_t there is no interface and nothing is reflected, R = "
+                     "0 (eq. 6 alone would still give (1 - cos theta)^5)", where);
+    else if (sin2_t > 1.0)
+        grading_fail(g, "%s, beyond the critical angle %.1f degrees: with no transmitted ray all "
+                     "is reflected, R = 1 (total internal reflection)", where,
+                     asin(n_t / n_i) * 180.0 / PI);
+    else if (power)
+        grading_fail(g, "%s is R0 + (1 - R0) (1 - cos theta) to the %s power, where Schlick's "
+                     "approximation takes the fifth: %.*f (eq. 6)", where, ordinals[power],
+                     decimals, want);
+    else
+        grading_fail(g, "%s, where R0 + (1 - R0) (1 - cos theta)^5 = %.*f (R0 = %.4f)%s", where,
+                     decimals, want, pow((n_i - n_t) / (n_i + n_t), 2.0),
+                     schlick_mistake(got, cos_i, n_i, n_t));
+}
+
+static void grade_schlick(Grading *g)
+{
+    static const double pairs[][2] = {{1.0, 1.5}, {1.5, 1.0}, {1.0, 1.33}, {1.6, 1.2}, {1.4, 1.4}};
+    int checked = 0;
+    for (int k = 0; k < 5 && !g->failed; k++) {
+        double n_i = pairs[k][0], n_t = pairs[k][1], worst = 0.0, worst_got = 0.0;
+        int worst_degrees = -1;
+        for (int a = 0; a < 90; a++, checked++) {
+            double cos_i = cos(a * PI / 180.0);
+            double sin2_t = (n_i / n_t) * (n_i / n_t) * (1.0 - cos_i * cos_i);
+            if (fabs(sin2_t - 1.0) < 1e-6)
+                continue; /* at the critical angle itself either answer rounds right */
+            double got = ASK(g, schlick_reflectance(cos_i, n_i, n_t));
+            double off = fabs(got - schlick(cos_i, n_i, n_t, 5, 1, 1));
+            if (grading_not_finite(g, got, "R"))
+                return;
+            if (off > worst) {
+                worst = off;
+                worst_got = got;
+                worst_degrees = a;
+            }
+        }
+        /* The incidence furthest off shows the mistake best. */
+        if (worst > 1e-12)
+            fail_schlick(g, n_i, n_t, worst_degrees, worst_got);
+    }
+    grading_note(g, "%d incidences (every degree from 0 to 89 at n_i / n_t = 1 / 1.5, 1.5 / 1, 1 "
+                 "/ 1.33, 1.6 / 1.2, 1.4 / 1.4) against R0 + (1 - R0) (1 - cos theta)^5, theta "
+                 "the transmitted angle leaving the denser medium", checked);
 }
 
 const Exercise exercises[] = {
@@ -290,28 +424,36 @@ const Exercise exercises[] = {
      "the sphere |x - c| = r, or INFINITY when there is none. Substituting the ray gives t^2 - "
      "2 b t + c = 0 with b = d . (c - o) and c = |o - c|^2 - r^2 (eqs. 19-20): try the smaller "
      "root first, then the larger (a ray that starts inside). See docs/chapter1.md, section 3.",
-     "return INFINITY;", grade_sphere, NULL},
+     "return INFINITY;", grade_sphere, NULL, ""},
     {"1.2", "triangle_intersect",
      "Moller-Trumbore: solve [-d, e1, e2] (t, u, v) = o - v0 (eq. 18) by Cramer's rule with p "
      "= d x e2, det = e1 . p, s = o - v0, q = s x e1: u = (s . p) / det, v = (d . q) / det, t "
      "= (e2 . q) / det. The ray meets the triangle where u >= 0, v >= 0, u + v <= 1 (eq. 16) "
      "and tmin < t < tmax; return t, else INFINITY (also when det is about 0: the ray is "
      "parallel). See docs/chapter1.md, section 4.",
-     "return INFINITY;", grade_triangle, NULL},
+     "return INFINITY;", grade_triangle, NULL, ""},
     {"1.3", "camera_ray",
      "The ray from the eye through the point BL + (col + u) / W (BR - BL) + (1 - (row + v) / "
      "H) (TL - BL) of the image plane (camera.h: right = BR - BL, up = TL - BL; row 0 is the "
      "top), with a unit direction. See docs/chapter1.md, section 2.",
-     "Ray ray = {camera->eye, vec3(0, 0, 1)};\nreturn ray;", grade_camera, NULL},
+     "Ray ray = {camera->eye, vec3(0, 0, 1)};\nreturn ray;", grade_camera, NULL, ""},
     {"1.4", "mirror_reflect",
      "The mirror direction R(d) = d - 2 (d . n) n of the direction d at a surface of unit "
      "normal n (either orientation). See docs/chapter1.md, section 8.",
-     "return d;", grade_mirror, NULL},
+     "return d;", grade_mirror, NULL, ""},
     {"1.5", "snell_refract",
      "Refract d by Snell's law n_i sin(theta_i) = n_t sin(theta_t) (eq. 2): with eta = n_i / "
      "n_t and cos_i = -d . n, cos_t = snell_cos_transmitted(cos_i, n_i, n_t) (-1: total "
      "internal reflection, return 0); else *t = eta d + (eta cos_i - cos_t) n, normalised, "
      "and return 1. See docs/chapter1.md, section 9.",
-     "return 0;", grade_snell, NULL},
+     "return 0;", grade_snell, NULL, ""},
+    {"1.6", "schlick_reflectance",
+     "Return Schlick's reflectance R = R0 + (1 - R0) (1 - cos theta)^5 with R0 = ((n_i - n_t) "
+     "/ (n_i + n_t))^2 (eqs. 6-7) at incidence cosine cos_i from index n_i into n_t: 0 when "
+     "n_i = n_t (no interface); theta is the incidence angle entering the denser medium, and "
+     "leaving it (n_i > n_t) the transmitted angle, cos theta = snell_cos_transmitted(cos_i, "
+     "n_i, n_t), with R = 1 when that is -1 (total internal reflection; erratum 4). See "
+     "docs/chapter1.md, section 9.",
+     "return 0.0;", grade_schlick, NULL, ""},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

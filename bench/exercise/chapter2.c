@@ -32,23 +32,9 @@ static void grade_cosine_sample(Grading *g)
         Rng rng = rng_for_sample(21, 1, (uint64_t)i);
         double u1, u2;
         rng_pair(&rng, &u1, &u2);
-        Vec3 w = ASK_VEC3(g, hemisphere_sample_cosine(u1, u2));
-        double length = vec3_length(w);
-        if (!(fabs(length - 1.0) < 1e-6) || !(w.z > 0.0)) {
-            warp_add(&warp, i, -1, 0, u1, u2, NAN, NAN);
-            continue;
-        }
-        int ring = (int)((1.0 - w.z) * RINGS);
-        double phi = atan2(w.y, w.x);
-        int sector = (int)((phi + PI) / (2.0 * PI) * SECTORS);
-        warp_add(&warp, i, ring < RINGS ? ring : RINGS - 1, sector < SECTORS ? sector : SECTORS - 1,
-                 u1, u2, w.x, w.y);
+        warp_add_hemisphere(&warp, i, u1, u2, ASK_VEC3(g, hemisphere_sample_cosine(u1, u2)));
     }
-    for (int r = 0; r < RINGS; r++) {
-        double top = 1.0 - (double)r / RINGS, bottom = 1.0 - (double)(r + 1) / RINGS;
-        for (int s = 0; s < SECTORS; s++)
-            warp.expected[r * SECTORS + s] = WARP_SAMPLES * (top * top - bottom * bottom) / SECTORS;
-    }
+    warp_expect_cosine(&warp, WARP_SAMPLES);
     grading_warp(g, &warp, "the hemisphere seen from above", LEVEL, 1,
                  "is cos(theta) = sqrt(1 - u1), sin(theta) = sqrt(u1) and phi = 2 pi u2 "
                  "(eq. 12, docs/chapter2.md)?");
@@ -78,8 +64,9 @@ static void grade_cosine_pdf(Grading *g)
                              "cos(theta) / pi = %.4f): a missing 1 / pi; it integrates to pi, not "
                              "1", pdf, w.z, right);
             else
-                grading_fail(g, "the pdf is %.4f at cos(theta) = %.3f, where cos(theta) / pi = "
-                             "%.4f", pdf, w.z, right);
+                grading_fail(g, "the pdf is %.*f at cos(theta) = %.3f, where cos(theta) / pi = "
+                             "%.*f", grading_decimals(pdf, right), pdf, w.z,
+                             grading_decimals(pdf, right), right);
         }
     }
     grading_note(g, "%d random directions over the whole sphere against cos(theta) / pi above "
@@ -109,8 +96,9 @@ static void grade_lambert(Grading *g)
             snprintf(furnace, sizeof furnace, "a furnace box of rho = %.2f emitting 1 gives L = "
                      "%.2f where 1 / (1 - rho) = %.2f is exact", rho[c], 1.0 / (1.0 - albedo),
                      1.0 / (1.0 - rho[c]));
-        grading_fail(g, "f = %.4f for rho = %.2f, where rho / pi = %.4f: %s (%s)", got[c], rho[c],
-                     rho[c] / PI, furnace,
+        int decimals = grading_decimals(got[c], rho[c] / PI);
+        grading_fail(g, "f = %.*f for rho = %.2f, where rho / pi = %.*f: %s (%s)", decimals,
+                     got[c], rho[c], decimals, rho[c] / PI, furnace,
                      fabs(got[c] - rho[c]) < 1e-12 ? "a missing 1 / pi?"
                                                    : "f cos integrated over the hemisphere must be rho");
         return;
@@ -134,17 +122,17 @@ const Exercise exercises[] = {
      "u1, u2 in [0, 1): invert the CDFs P(theta) = sin^2(theta) and P(phi) = phi / (2 pi) (eq. "
      "12), so sin(theta) = sqrt(u1), cos(theta) = sqrt(1 - u1), phi = 2 pi u2. See "
      "docs/chapter2.md, section 2.",
-     "return vec3(0, 0, 1);", grade_cosine_sample, NULL},
+     "return vec3(0, 0, 1);", grade_cosine_sample, NULL, ""},
     {"2.2", "hemisphere_pdf_cosine",
      "Return the density in solid angle of the cosine sampler at the unit local direction "
      "w_local: cos(theta) / pi (cos(theta) = w_local.z) above the surface, 0 below. See "
      "docs/chapter2.md, section 2.",
-     "return 0.0;", grade_cosine_pdf, NULL},
+     "return 0.0;", grade_cosine_pdf, NULL, ""},
     {"2.3", "lambert_brdf",
      "Return the Lambertian BRDF of reflectance rho, f = rho / pi (eq. 8): the same for every "
      "pair of directions, so that f cos(theta) integrated over the hemisphere is rho. See "
      "docs/chapter2.md, section 1.",
-     "return vec3(0, 0, 0);", grade_lambert, NULL},
+     "return vec3(0, 0, 0);", grade_lambert, NULL, ""},
     {"2.4", "path_radiance",
      "The path tracer (eq. 1): from the camera ray, find each vertex (path_vertex); on the "
      "front of a surface add throughput times its emission; stop at a light or after "
@@ -152,6 +140,6 @@ const Exercise exercises[] = {
      "at a diffuse surface, path_specular otherwise), multiply the throughput by the weight "
      "it returns, count the bounce (counts->bounce) and spawn the next ray with ray_spawn. "
      "See docs/chapter2.md, section 3.",
-     "return vec3(0, 0, 0);", grade_path, &path_check},
+     "return vec3(0, 0, 0);", grade_path, &path_check, "2.1"},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

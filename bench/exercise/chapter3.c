@@ -2,16 +2,17 @@
  *
  * The lamp sampler by the warp test over two lamps in one plane, a 1 x 1 and a 2 x 1
  * (uniform over their area: each of 12 x 4 cells of the 3 x 1 strip holds 1 / 48 of
- * the samples); the pdf in solid angle against d^2 / (A cos beta); the shadow ray
- * (eq. 21) by the direct-light path tracer's image against the solution's, pixel by
- * pixel. Fixed seeds; significance level 0.01.
+ * the samples); the pdf in solid angle against d^2 / (A cos beta); the shadow ray by
+ * the image of the light it finds at each camera ray's first hit, against the
+ * solution's, pixel by pixel; eq. 21 with M shadow rays against the mean of the M
+ * shadow rays it draws, at M = 1, 2, 4 and 30. Fixed seeds; significance level 0.01.
  */
 #include <math.h>
 #include <stdio.h>
 
 #include "area_light.h"
 #include "grading.h"
-#include "path_direct.h"
+#include "path.h"
 #include "render_check.h"
 
 #define LEVEL 0.01
@@ -97,17 +98,30 @@ static void grade_light_pdf(Grading *g)
                          "density in solid angle d^2 / (A cos beta) = %.4f is asked for", pdf,
                          right);
         else
-            grading_fail(g, "the pdf is %.4f at distance %.2f and cos(beta) = %.2f, where d^2 / "
-                         "(A cos beta) = %.4f (A = %.1f)", pdf, d, cos_beta, right, area);
+            grading_fail(g, "the pdf is %.*f at distance %.2f and cos(beta) = %.2f, where d^2 / "
+                         "(A cos beta) = %.*f (A = %.1f)", grading_decimals(pdf, right), pdf, d,
+                         cos_beta, grading_decimals(pdf, right), right, area);
     }
     grading_note(g, "%d distances and angles at lamps of total area %.1f against d^2 / (A cos "
                  "beta)", checked, area);
     scene_free(&scene);
 }
 
-static const PathSettings direct_settings = {.max_depth = 3, .shadow_rays = 1};
-static const RenderCheck direct_check = {render_check_room, path_direct_radiance,
-                                         &direct_settings, 24, 32, 1024};
+/* The light at a camera ray's first hit from one shadow ray (eq. 21 with M = 1), or the
+ * lamp's own where the ray sees one: the shadow ray alone, without the path tracer's
+ * bounces or area_light_direct. */
+static Vec3 first_hit_direct(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                             RayCounts *counts)
+{
+    Vertex x;
+    if (!path_vertex(scene, ray, &x))
+        return vec3(0, 0, 0);
+    if (!material_is_diffuse(x.material))
+        return x.front ? x.material->emission : vec3(0, 0, 0);
+    return area_light_shadow_ray(scene, x.hit.point, x.normal, x.wo, x.material, rng, counts).value;
+}
+
+static const RenderCheck direct_check = {render_check_room, first_hit_direct, NULL, 24, 32, 1024};
 
 static void grade_shadow_ray(Grading *g)
 {
@@ -115,6 +129,107 @@ static void grade_shadow_ray(Grading *g)
                    "is the value Le f cos(alpha) cos(beta) A / d^2 (eq. 21), 0 when the lamp or "
                    "the surface faces away or the shadow ray is blocked (docs/chapter3.md, "
                    "section 2)?");
+}
+
+/* Points of the room (render_check_room) lit by its lamp, with their normals: on the floor
+ * in front of the sphere, on the floor in its half-shadow, on the red wall. */
+static const Vec3 room_points[][2] = {{{0.3, -0.8, -1.5}, {0, 0, 1}},
+                                      {{0.95, 0.3, -1.5}, {0, 0, 1}},
+                                      {{-1.49, -0.5, 0.2}, {1, 0, 0}}};
+static const char *const room_point_names[] = {"the floor", "the floor in the sphere's "
+                                               "half-shadow", "the red wall"};
+#define ROOM_POINTS 3
+#define DIRECT_TRIALS 50
+
+/* The first L_D with M shadow rays that differs from the mean of its shadow rays. */
+typedef struct {
+    int m, point; /* point < 0: none differs */
+    double direct, mean;
+} DirectCheck;
+
+static int times_m(const DirectCheck *c)
+{
+    return c->m > 1 && fabs(c->direct - c->m * c->mean) <= 1e-9 * fabs(c->m * c->mean);
+}
+
+/* What L_D does wrong where it first differs (c->point >= 0). */
+static void fail_direct(Grading *g, const DirectCheck *c)
+{
+    int decimals = grading_decimals(c->direct, c->mean);
+    const char *where = room_point_names[c->point];
+    if (times_m(c))
+        grading_fail(g, "the sum of M terms is not divided by M: with M = %d the light is %d "
+                     "times too bright (L_D = %.4f on %s, where the mean of its %d shadow rays "
+                     "is %.4f; eq. 21: A / M times the sum)", c->m, c->m, c->direct, where, c->m,
+                     c->mean);
+    else if (c->m > 1 && c->direct == 0.0)
+        grading_fail(g, "L_D is 0 with M = %d on %s, where the mean of its %d shadow rays is "
+                     "%.4f (and right with M = 1): is 1 / M computed with whole numbers? 1 / M "
+                     "is 0 for M > 1; 1.0 / M is not", c->m, where, c->m, c->mean);
+    else
+        grading_fail(g, "with M = %d on %s, L_D = %.*f where the mean of the M shadow rays "
+                     "area_light_shadow_ray draws from the same generator is %.*f: L_D is the "
+                     "sum of their values divided by M (eq. 21)", c->m, where, decimals,
+                     c->direct, decimals, c->mean);
+}
+
+/* L_D with M shadow rays at the room's points, DIRECT_TRIALS times each, against the mean
+ * of the same M shadow rays drawn again from the same generator; the first that differs
+ * in *first. Returns 0, or -1 after failing on a NaN. */
+static int direct_trials(Grading *g, const Scene *scene, int m, DirectCheck *first)
+{
+    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.7, 0.7)};
+    RayCounts counts = {0};
+    double sum_direct = 0.0, sum_mean = 0.0;
+    *first = (DirectCheck){m, -1, 0.0, 0.0};
+    for (int p = 0; p < ROOM_POINTS; p++)
+        for (int t = 0; t < DIRECT_TRIALS; t++) {
+            Vec3 x = room_points[p][0], n = room_points[p][1];
+            Rng rng = rng_for_sample(34, (uint64_t)m, (uint64_t)(p * DIRECT_TRIALS + t));
+            Rng again = rng;
+            double direct = ASK(g, area_light_direct(scene, x, n, n, &white, m, &rng, &counts).y);
+            double terms = 0.0;
+            for (int i = 0; i < m && grading_probing(g); i++)
+                terms += area_light_shadow_ray(scene, x, n, n, &white, &again, &counts).value.y;
+            double mean = ASK(g, terms / m);
+            if (grading_not_finite(g, direct, "L_D"))
+                return -1;
+            sum_direct += direct;
+            sum_mean += mean;
+            if (first->point < 0 && fabs(direct - mean) > 1e-12 + 1e-9 * fabs(mean))
+                *first = (DirectCheck){m, p, direct, mean};
+        }
+    grading_note(g, "M = %d: L_D averages %.4f over %d trials at %d points; the means of their "
+                 "shadow rays %.4f", m, sum_direct / (ROOM_POINTS * DIRECT_TRIALS),
+                 DIRECT_TRIALS, ROOM_POINTS, sum_mean / (ROOM_POINTS * DIRECT_TRIALS));
+    return 0;
+}
+
+static void grade_direct(Grading *g)
+{
+    Scene scene;
+    if (grading_scene(g, render_check_room, &scene) != 0)
+        return;
+    static const int shadow_rays[] = {1, 2, 4, 30};
+    DirectCheck checks[4];
+    int wrong = 0, unscaled = 0;
+    for (int k = 0; k < 4; k++) {
+        if (direct_trials(g, &scene, shadow_rays[k], &checks[k]) != 0) {
+            scene_free(&scene);
+            return;
+        }
+        wrong += checks[k].point >= 0;
+        unscaled += checks[k].point >= 0 && times_m(&checks[k]);
+    }
+    scene_free(&scene);
+    if (wrong == 3 && unscaled == 3)
+        grading_fail(g, "the sum of M terms is not divided by M: with M = 2, 4 and 30 the light "
+                     "is 2, 4 and 30 times too bright (with M = 4 on %s, L_D = %.4f where the "
+                     "mean of its 4 shadow rays is %.4f; eq. 21: A / M times the sum)",
+                     room_point_names[checks[2].point], checks[2].direct, checks[2].mean);
+    for (int k = 0; k < 4 && !g->failed; k++)
+        if (checks[k].point >= 0)
+            fail_direct(g, &checks[k]);
 }
 
 const Exercise exercises[] = {
@@ -125,13 +240,13 @@ const Exercise exercises[] = {
      "first i with scene->light_cumulative[i] > u_select * scene->light_area), then the point "
      "triangle_point(t, s (1 - u2), s u2) with s = sqrt(u1). See docs/chapter3.md, section 1.",
      "LightSample sample = {vec3(0, 0, 0), vec3(0, 0, 1), vec3(0, 0, 0)};\nreturn sample;",
-     grade_light_sample, NULL},
+     grade_light_sample, NULL, ""},
     {"3.2", "area_light_pdf",
      "Return the density in solid angle of the direction to a lamp point drawn by area, a "
      "distance d away, whose normal makes the angle beta with the way back: dA = d^2 dw / "
      "cos(beta) turns the density 1 / A (A = scene->light_area) into d^2 / (A cos beta). See "
      "docs/chapter3.md, section 2.",
-     "return 0.0;", grade_light_pdf, NULL},
+     "return 0.0;", grade_light_pdf, NULL, ""},
     {"3.3", "area_light_shadow_ray",
      "One term of eq. 21 at the diffuse point x (normal n facing the viewer, direction wo, "
      "material m): draw a lamp point y (area_light_sample, from rng_uniform and rng_pair), "
@@ -139,6 +254,13 @@ const Exercise exercises[] = {
      "= -n_y . wi, return zero value when either is <= 0 or the segment is blocked "
      "(scene_occluded; count counts->shadow), else value = Le f cos(alpha) cos(beta) A / d^2 "
      "(f = diffuse_brdf), wi and pdf = area_light_pdf. See docs/chapter3.md, section 2.",
-     "ShadowRay ray = {.value = vec3(0, 0, 0)};\nreturn ray;", grade_shadow_ray, &direct_check},
+     "ShadowRay ray = {.value = vec3(0, 0, 0)};\nreturn ray;", grade_shadow_ray, &direct_check,
+     "3.1"},
+    {"3.4", "area_light_direct",
+     "Eq. 21 with M = shadow_rays >= 1: the mean of M shadow rays, (1 / M) times the sum of "
+     "the values of M calls of area_light_shadow_ray(scene, x, n, wo, m, rng, counts), each "
+     "drawing its own lamp point from rng. Each term's mean is L_D, so their mean is too, "
+     "with 1 / M of one term's variance. See docs/chapter3.md, section 2.",
+     "return vec3(0, 0, 0);", grade_direct, NULL, "3.3"},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

@@ -70,13 +70,21 @@ static void grade_polarised(Grading *g)
                 grading_fail(g, "R_s = %.4f at %d degrees from index %.2f into %.2f, where eqs. "
                              "4-5 give %.4f: are n_i and n_t, or cos_i and cos_t, swapped?", got_s,
                              a, n_i, n_t, s);
-            else
-                grading_fail(g, "at %d degrees from index %.2f into %.2f, R_s = %.4f and R_p = "
-                             "%.4f, where eqs. 4-5 give %.4f and %.4f%s", a, n_i, n_t, got_s,
-                             got_p, s, p,
+            else {
+                int d = grading_decimals(got_s, s) > grading_decimals(got_p, p)
+                            ? grading_decimals(got_s, s)
+                            : grading_decimals(got_p, p);
+                char off[120] = "";
+                if (d > 4)
+                    snprintf(off, sizeof off, " (off by %.2g and %.2g, where rounding stays "
+                             "within 1e-9)", got_s - s, got_p - p);
+                grading_fail(g, "at %d degrees from index %.2f into %.2f, R_s = %.*f and R_p = "
+                             "%.*f, where eqs. 4-5 give %.*f and %.*f%s%s", a, n_i, n_t, d,
+                             got_s, d, got_p, d, s, d, p, off,
                              fabs(got_s - swapped_s) <= 1e-9 && fabs(got_p - swapped_p) <= 1e-9
-                                 ? " (those of the same angles with n_i and n_t swapped)"
+                                 ? ": those of the same angles with n_i and n_t swapped"
                                  : "");
+            }
         }
     grading_note(g, "%d incidences (every degree from 0 to 89 at n_i / n_t = 1 / 1.5, 1.5 / 1, 1 "
                  "/ 1.33, 1.6 / 1.2) against the sin and tan forms", checked);
@@ -110,8 +118,9 @@ static void grade_unpolarised(Grading *g)
                              "unpolarised light is half s, half p: (R_s + R_p) / 2 = %.4f (eq. 3)",
                              got, a, n_i, n_t, fabs(got - s) <= 1e-9 ? "s" : "p", want);
             else
-                grading_fail(g, "R = %.4f at %d degrees from index %.2f into %.2f, where (R_s + "
-                             "R_p) / 2 = %.4f (eq. 3)", got, a, n_i, n_t, want);
+                grading_fail(g, "R = %.*f at %d degrees from index %.2f into %.2f, where (R_s + "
+                             "R_p) / 2 = %.*f (eq. 3)", grading_decimals(got, want), got, a, n_i,
+                             n_t, grading_decimals(got, want), want);
         }
     grading_note(g, "%d incidences against (R_s + R_p) / 2; the largest R returned %.4f", checked,
                  largest);
@@ -124,10 +133,10 @@ const Exercise exercises[] = {
      "(total internal reflection); else R_s = ((n_i cos_i - n_t cos_t) / (n_i cos_i + n_t "
      "cos_t))^2 and R_p = ((n_i cos_t - n_t cos_i) / (n_i cos_t + n_t cos_i))^2 (eqs. 4-5, "
      "whose labels the report swaps). See docs/chapter4.md, section 2.",
-     "Polarised r = {0.0, 0.0};\nreturn r;", grade_polarised, NULL},
+     "Polarised r = {0.0, 0.0};\nreturn r;", grade_polarised, NULL, ""},
     {"4.2", "fresnel_reflectance",
      "Return the reflectance of unpolarised light, half s and half p: R = (R_s + R_p) / 2 "
      "(eq. 3), from fresnel_polarised. See docs/chapter4.md, section 2.",
-     "return 0.0;", grade_unpolarised, NULL},
+     "return 0.0;", grade_unpolarised, NULL, "4.1"},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

@@ -48,14 +48,16 @@ static void grade_coefficient(Grading *g, const char *name, double (*yours)(doub
         if (grading_not_finite(g, got, name) || fabs(got - want) <= 1e-12)
             continue;
         double degrees = sigma * PI / 180.0;
+        int decimals = grading_decimals(got, want);
         if (fabs(got - right(degrees)) <= 1e-12)
             grading_fail(g, "%s(%.2f) = %.6f, which is %s of %.2f degrees: sigma is in radians",
                          name, sigma, got, name, sigma);
         else if (misprint && nonzero)
-            grading_fail(g, "%s(%.2f) = %.6f where eq. 14 gives %.6f: %s", name, sigma, got, want,
-                         missing);
+            grading_fail(g, "%s(%.2f) = %.*f where eq. 14 gives %.*f: %s", name, sigma, decimals,
+                         got, decimals, want, missing);
         else
-            grading_fail(g, "%s(%.2f) = %.6f where eq. 14 gives %.6f%s", name, sigma, got, want,
+            grading_fail(g, "%s(%.2f) = %.*f where eq. 14 gives %.*f%s", name, sigma, decimals,
+                         got, decimals, want,
                          sigma == 0.0 ? " (at sigma = 0 the surface is Lambertian: A = 1, B = 0)"
                                       : "");
     }
@@ -94,9 +96,10 @@ static void grade_factor_closed_form(Grading *g)
             continue;
         double with_sin = right_a(sigma) +
                           right_b(sigma) * fmax(0.0, cos(pi_ - po)) * sin(alpha) * sin(beta);
-        grading_fail(g, "the factor is %.5f at sigma = %.2f, theta_i = %.1f, theta_o = %.1f "
-                     "degrees, cos(phi_i - phi_o) = %.2f, where eq. 13 gives %.5f%s", got, sigma,
-                     ti * 180.0 / PI, to * 180.0 / PI, cos(pi_ - po), want,
+        grading_fail(g, "the factor is %.*f at sigma = %.2f, theta_i = %.1f, theta_o = %.1f "
+                     "degrees, cos(phi_i - phi_o) = %.2f, where eq. 13 gives %.*f%s",
+                     grading_decimals(got, want), got, sigma, ti * 180.0 / PI, to * 180.0 / PI,
+                     cos(pi_ - po), grading_decimals(got, want), want,
                      fabs(got - with_sin) <= 1e-9 ? ": sin(beta) where tan(beta) belongs (the "
                                                     "report's misprint)" : "");
     }
@@ -132,16 +135,16 @@ const Exercise exercises[] = {
      "Return Oren-Nayar's A = 1 - sigma^2 / (2 (sigma^2 + 0.33)) (eq. 14, corrected: the "
      "report leaves out the \"1 -\"), sigma the roughness in radians. See docs/chapter5.md, "
      "section 1.",
-     "return 0.0;", grade_a, NULL},
+     "return 0.0;", grade_a, NULL, ""},
     {"5.2", "oren_nayar_b",
      "Return Oren-Nayar's B = 0.45 sigma^2 / (sigma^2 + 0.09) (eq. 14), sigma in radians. See "
      "docs/chapter5.md, section 1.",
-     "return 0.0;", grade_b, NULL},
+     "return 0.0;", grade_b, NULL, ""},
     {"5.3", "oren_nayar_factor",
      "Return f / (rho / pi) = A + B max(0, cos(phi_i - phi_o)) sin(alpha) tan(beta) (eq. 13, "
      "with tan(beta), not the report's sin(beta)) for unit local directions wi, wo, alpha = "
      "max(theta_i, theta_o), beta = min, without trigonometry: max(0, x_i x_o + y_i y_o) / "
      "max(z_i, z_o) (A alone when that maximum is 0). See docs/chapter5.md, section 2.",
-     "return 0.0;", grade_factor, &rough_check},
+     "return 0.0;", grade_factor, &rough_check, "5.1 5.2"},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

@@ -102,8 +102,9 @@ static void grade_survival(Grading *g)
             grading_fail(g, "survival %.3f for throughput (%.2f, %.2f, %.2f) is the channels' "
                          "mean; the largest channel bounds the weight", got, t.x, t.y, t.z);
         else
-            grading_fail(g, "survival %.4f for throughput (%.2f, %.2f, %.2f), where min(1, max "
-                         "component) = %.4f", got, t.x, t.y, t.z, want);
+            grading_fail(g, "survival %.*f for throughput (%.2f, %.2f, %.2f), where min(1, max "
+                         "component) = %.*f", grading_decimals(got, want), got, t.x, t.y, t.z,
+                         grading_decimals(got, want), want);
     }
 }
 
@@ -115,10 +116,10 @@ const Exercise exercises[] = {
      "probability not strictly between 0 and 1 there is no roulette (return 1); else the path "
      "ends (return 0) unless roulette_survives, and a survivor's throughput is divided by the "
      "probability (return 1). See docs/chapter6.md, sections 1 and 4.",
-     "return 1;", grade_continues, NULL},
+     "return 1;", grade_continues, NULL, "6.2"},
     {"6.2", "roulette_survival_from_throughput",
      "Return the bounded-weight survival probability min(1, largest component of the "
      "throughput) (vec3_max_component). See docs/chapter6.md, section 4.",
-     "return 1.0;", grade_survival, NULL},
+     "return 1.0;", grade_survival, NULL, ""},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

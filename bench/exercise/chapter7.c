@@ -55,9 +55,10 @@ static void grade_power(Grading *g)
             grading_fail(g, "the weight is %.4f, without the sample counts (%d and %d): the power "
                          "heuristic weighs n_f p_f against n_g p_g, giving %.4f", wf, cf, cg, want);
         else
-            grading_fail(g, "the weight is %.4f for counts %d, %d and pdfs %.3f, %.3f, where "
-                         "(n_f p_f)^2 / ((n_f p_f)^2 + (n_g p_g)^2) = %.4f", wf, cf, cg, pf, pg,
-                         want);
+            grading_fail(g, "the weight is %.*f for counts %d, %d and pdfs %.3f, %.3f, where "
+                         "(n_f p_f)^2 / ((n_f p_f)^2 + (n_g p_g)^2) = %.*f",
+                         grading_decimals(wf, want), wf, cf, cg, pf, pg,
+                         grading_decimals(wf, want), want);
     }
     grading_note(g, "%d random counts and densities (some 0) against the closed form", checked);
 }
@@ -166,7 +167,7 @@ const Exercise exercises[] = {
      "against strategy g for one direction: (count_f pdf_f)^2 / ((count_f pdf_f)^2 + (count_g "
      "pdf_g)^2), 0 when count_f pdf_f is 0; the two strategies' weights sum to one. See "
      "docs/chapter7.md, section 2.",
-     "return 0.0;", grade_power, NULL},
+     "return 0.0;", grade_power, NULL, ""},
     {"7.2", "mirror_light_shadow_ray",
      "One shadow ray at the diffuse point x to the image of a lamp point y "
      "(area_light_sample) in `plane`: with h_x, h_y the heights of x and y above the plane "
@@ -177,6 +178,6 @@ const Exercise exercises[] = {
      "then value = Le f R cos(alpha) cos(beta) A / d^2 (R the mirror's reflectance), wi, "
      "and pdf = area_light_pdf(scene, d, cos(beta)). See docs/chapter7.md, section 3.",
      "ShadowRay ray = {vec3(0, 0, 0), vec3(0, 0, 0), 0.0};\nreturn ray;", grade_mirror_light,
-     NULL},
+     NULL, ""},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

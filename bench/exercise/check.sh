@@ -46,6 +46,7 @@ finish() {
 }
 
 list=$("$solution" --list) || exit 2
+all_ids=$(printf '%s\n' "$list" | awk 'NF == 2 { print $1 }')
 if [ $# -gt 0 ]; then
     wanted=''
     for id in "$@"; do
@@ -80,15 +81,20 @@ trap 'rm -rf -- "$copy"' EXIT
 program=$copy/probe
 cp -- "$out/build/probe" "$program" || exit 2
 
+# Every exercise's reference (of those graded by a render): a grader grades first the
+# exercises it uses.
+for id in $all_ids; do
+    reference=$references/exercise-$id-reference.pfm
+    if [ ! -e "$reference" ] || [ "$solution" -nt "$reference" ]; then
+        "$solution" --reference "$id" "$references" || { echo "check.sh: the solution's reference for $id failed" >&2; exit 2; }
+    fi
+done
+
 status=0
 passed=0 total=0
 for entry in $entries; do
     id=${entry%%:*} function=${entry#*:}
     total=$((total + 1))
-    reference=$references/exercise-$id-reference.pfm
-    if [ ! -e "$reference" ] || [ "$solution" -nt "$reference" ]; then
-        "$solution" --reference "$id" "$references" || { echo "check.sh: the solution's reference for $id failed" >&2; exit 2; }
-    fi
     result=$("$solution" --judge "$id" "$out" "$references" "$program" "$limit")
     code=$?
     case $code in

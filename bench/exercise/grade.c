@@ -117,7 +117,7 @@ static int judge(const Exercise *e, char **argv)
     g.references = argv[4];
     g.answers = &run.answers;
     g.ended = run.ended;
-    e->grade(&g);
+    exercise_grade(e, &g);
     if (!g.failed && !run.answers.ended)
         grading_fail(&g, "%s", run.ended);
     else if (!g.failed && g.next < run.answers.count)

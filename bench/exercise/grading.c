@@ -31,6 +31,81 @@ const Exercise *exercise_find(const char *id)
     return NULL;
 }
 
+#define MAX_USED 16
+
+/* Append the exercises `e` uses, each after those it uses itself and each once, to
+ * order[*count], `depth` uses deep. Returns 0, or -1 after failing on an id the table
+ * does not have or on a circle of uses. */
+static int used_in_order(Grading *g, const Exercise *e, int depth, const Exercise **order,
+                         int *count)
+{
+    for (const char *at = e->uses; *at;) {
+        at += strspn(at, " ");
+        int length = (int)strcspn(at, " ");
+        if (length == 0)
+            break;
+        char id[16];
+        snprintf(id, sizeof id, "%.*s", length, at);
+        at += length;
+        const Exercise *used = exercise_find(id);
+        if (!used || *count >= MAX_USED || depth >= MAX_USED) {
+            grading_fail(g, "the grader's table says exercise %s uses exercise %s, which it "
+                         "does not grade, or which uses it in turn", e->id, id);
+            return -1;
+        }
+        if (used_in_order(g, used, depth + 1, order, count) != 0)
+            return -1;
+        int seen = 0;
+        for (int i = 0; i < *count; i++)
+            seen |= order[i] == used;
+        if (!seen)
+            order[(*count)++] = used;
+    }
+    return 0;
+}
+
+/* Grade `used` as a part of g's exercise, on the same answers. Returns 1 when it passes;
+ * else g fails, naming it first. */
+static int grade_used(Grading *g, const Exercise *e, const Exercise *used)
+{
+    Grading part;
+    memset(&part, 0, sizeof part);
+    part.id = used->id;
+    part.out = g->out;
+    part.references = g->references;
+    part.writer = g->writer;
+    part.answers = g->answers;
+    part.ended = g->ended;
+    part.next = g->next;
+    used->grade(&part);
+    g->next = part.next;
+    if (!part.failed) {
+        grading_note(g, "exercise %s (%s), which %s depends on, passes", used->id,
+                     used->function, e->function);
+        return 1;
+    }
+    grading_fail(g, "exercise %s (%s), which %s depends on, is wrong first: %s", used->id,
+                 used->function, e->function, part.message);
+    size_t length = strlen(part.numbers);
+    if (length > 0 && part.numbers[length - 1] == '\n')
+        part.numbers[length - 1] = '\0';
+    if (length > 1)
+        grading_note(g, "exercise %s: %s", used->id, part.numbers);
+    return 0;
+}
+
+void exercise_grade(const Exercise *e, Grading *g)
+{
+    const Exercise *order[MAX_USED];
+    int count = 0;
+    if (used_in_order(g, e, 0, order, &count) != 0)
+        return;
+    for (int i = 0; i < count; i++)
+        if (!grade_used(g, e, order[i]))
+            return;
+    e->grade(g);
+}
+
 int grading_probing(const Grading *g)
 {
     return g->writer != NULL;
@@ -94,6 +169,18 @@ int grading_not_finite(Grading *g, double value, const char *what)
                                                      "number or an uninitialised variable?)"
                                                    : "infinite (a division by 0?)");
     return 1;
+}
+
+int grading_decimals(double a, double b)
+{
+    for (int decimals = 4; decimals < 17; decimals++) {
+        char x[64], y[64];
+        snprintf(x, sizeof x, "%.*f", decimals, a);
+        snprintf(y, sizeof y, "%.*f", decimals, b);
+        if (strcmp(x, y) != 0)
+            return decimals;
+    }
+    return 17;
 }
 
 char *grading_count(double count, char *text, size_t size)
@@ -168,6 +255,28 @@ void warp_add(Warp *warp, long index, int row, int col, double u1, double u2, do
         warp->square[2 * index + 1] = u2;
         warp->mapped[2 * index] = x;
         warp->mapped[2 * index + 1] = y;
+    }
+}
+
+void warp_add_hemisphere(Warp *warp, long index, double u1, double u2, Vec3 local)
+{
+    if (!(fabs(vec3_length(local) - 1.0) < 1e-6) || !(local.z > 0.0)) {
+        warp_add(warp, index, -1, 0, u1, u2, NAN, NAN);
+        return;
+    }
+    int ring = (int)((1.0 - local.z) * warp->rows);
+    int sector = (int)((atan2(local.y, local.x) + PI) / (2.0 * PI) * warp->cols);
+    warp_add(warp, index, ring < warp->rows ? ring : warp->rows - 1,
+             sector < warp->cols ? sector : warp->cols - 1, u1, u2, local.x, local.y);
+}
+
+void warp_expect_cosine(Warp *warp, long samples)
+{
+    for (int r = 0; r < warp->rows; r++) {
+        double top = 1.0 - (double)r / warp->rows, bottom = 1.0 - (double)(r + 1) / warp->rows;
+        for (int s = 0; s < warp->cols; s++)
+            warp->expected[r * warp->cols + s] =
+                (double)samples * (top * top - bottom * bottom) / warp->cols;
     }
 }
 
@@ -293,6 +402,25 @@ int grading_warp(Grading *g, const Warp *warp, const char *what, double level, i
         grading_fail(g, "%s of the samples fell %s, where the density is 0 (%s): %s",
                      grading_count(impossible, observed_text, sizeof observed_text),
                      warp->labels.impossible, verdict, hint);
+        return 0;
+    }
+    /* Every sample in one cell: the same direction or point whatever the numbers. */
+    int filled = 0, only = 0;
+    for (int i = 0; i < cells - 1; i++)
+        if (warp->observed[i] > 0.0) {
+            filled++;
+            only = i;
+        }
+    if (filled == 1 && warp->observed[only] > 1.0) {
+        int row = only / warp->cols;
+        const char *at = row == 0 ? warp->labels.first_row
+                                  : row == warp->rows - 1 ? warp->labels.last_row : "";
+        grading_fail(g, "all %s samples fell into one cell, %s %d of %d%s%s%s and %s %d of %d: "
+                     "does the result change with the random numbers at all? (%s): %s",
+                     grading_count(warp->observed[only], observed_text, sizeof observed_text),
+                     warp->labels.row_name, row + 1, warp->rows, *at ? " (" : "", at,
+                     *at ? ")" : "", warp->labels.col_name, only % warp->cols + 1, warp->cols,
+                     verdict, hint);
         return 0;
     }
     /* The row or column whose total is furthest from its expected total, in standard

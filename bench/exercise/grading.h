@@ -41,6 +41,8 @@ typedef struct {
                              neutral value */
     void (*grade)(Grading *g);
     const RenderCheck *render; /* its reference render, or NULL */
+    const char *uses;     /* the ids of the chapter's other exercises whose functions its
+                             grader's calls reach ("3.1 3.3"), or "" */
 } Exercise;
 
 /* Each chapter's table, bench/exercise/chapterN.c; the grader links one of them. */
@@ -49,6 +51,12 @@ extern const int exercise_count;
 
 /* The exercise of that id, or NULL. */
 const Exercise *exercise_find(const char *id);
+
+/* Grade exercise e: first every exercise it uses (e->uses, and theirs, in the order the
+ * code depends on them), then e itself. The first that fails is the verdict: a grader
+ * never blames an exercise for the mistake of one it calls ("exercise 2.1 (...), which
+ * path_radiance depends on, is wrong first: ..."). Run alike in the probe and the judge. */
+void exercise_grade(const Exercise *e, Grading *g);
 
 /* Each grader runs twice, in two processes. In the student's program (the probe, probe.c)
  * every value the student's code computes passes through ASK, which sends it to the
@@ -83,6 +91,9 @@ int grading_fail(Grading *g, const char *format, ...) __attribute__((format(prin
 
 /* Fails and returns 1 when `value` is NaN or infinite, naming `what` it is. */
 int grading_not_finite(Grading *g, double value, const char *what);
+
+/* How many decimals, at least 4, show a and b different (%.*f); 17 when none do. */
+int grading_decimals(double a, double b);
 
 /* A count with thousands separated: 1310 as "1,310". Returns text. */
 char *grading_count(double count, char *text, size_t size);
@@ -122,6 +133,15 @@ void warp_free(Warp *warp);
  * cell when row < 0; (x, y) shows where it went. */
 void warp_add(Warp *warp, long index, int row, int col, double u1, double u2, double x,
               double y);
+
+/* Sample `index`, the unit direction `local` of a hemisphere about z drawn from (u1, u2),
+ * into a warp test of rows rings of equal height (1 - z, row 0 at the pole) and cols
+ * sectors of phi; below the horizon, off the unit sphere or NaN into the impossible cell. */
+void warp_add_hemisphere(Warp *warp, long index, double u1, double u2, Vec3 local);
+
+/* Such a warp test's expected counts for `samples` drawn with density cos(theta) / pi:
+ * a ring between heights a < b holds b^2 - a^2 of them, each sector 1 / cols of that. */
+void warp_expect_cosine(Warp *warp, long samples);
 
 /* The chi-square test of the histogram at significance level `level`, Sidak-corrected
  * for `tests` such tests of the exercise; the picture OUT/exercise-ID-warp.png (samples

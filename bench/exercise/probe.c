@@ -26,7 +26,7 @@ int main(int argc, char **argv)
     memset(&g, 0, sizeof g);
     g.id = e->id;
     g.writer = &writer;
-    e->grade(&g);
+    exercise_grade(e, &g);
     int status = answer_end(&writer) == 0 ? 0 : 3;
     if (status != 0)
         perror("probe: cannot send the answers to the grader");

@@ -3,10 +3,11 @@
  * For every chapter with exercises, the chapter's clean source ($CHAPTER_DIR/source/
  * chapterN, written by make check-sources) is graded untouched (every exercise must
  * pass), then each classic mistake below is grafted into a copy of it (one exact edit
- * of the solution) and only the exercise it belongs to is graded again, through make
- * check-exercise-chapterN STUDENT=... ONLY=...: it must fail, and its verdict must
- * name the symptom. Copies keep the graded tree's objects, so a mistake rebuilds only
- * the file it edits. The graders' own statistical tests run at significance level 0.01
+ * of the solution) and one exercise is graded again, through make check-exercise-chapterN
+ * STUDENT=... ONLY=...: it must fail, its verdict must name the symptom and must not say
+ * what a misleading verdict said (a correct exercise blamed for one it depends on, digits
+ * that hide the difference). Copies keep the graded tree's objects, so a mistake rebuilds
+ * only the file it edits. The graders' statistical tests run at significance level 0.01
  * with fixed seeds (bench/exercise/chapterN.c).
  */
 #include <stdarg.h>
@@ -29,87 +30,139 @@ typedef struct {
     const char *file;    /* in the chapter's tree */
     const char *from, *to;
     const char *symptom; /* a phrase its verdict must hold */
+    const char *misleading; /* a phrase it must not hold, or NULL */
 } Mistake;
 
 static const Mistake mistakes[] = {
     {1, "1.1", "the far root first", "lib/sphere.c", "if (t0 > t1) {", "if (t0 < t1) {",
-     "far side"},
+     "far side", NULL},
     {1, "1.2", "u + v <= 1 not tested", "lib/triangle.h", "& (u + v <= 1.0 + slack)", "",
-     "u + v > 1"},
+     "u + v > 1", NULL},
     {1, "1.3", "the direction not normalised", "lib/camera.c",
      "vec3_normalize(vec3_sub(on_plane, camera->eye))", "vec3_sub(on_plane, camera->eye)",
-     "normalise"},
+     "normalise", NULL},
     {1, "1.4", "the normal part subtracted once, not twice", "lib/mirror.h", "-2.0 * vec3_dot(d, n)",
-     "-vec3_dot(d, n)", "should be 2"},
+     "-vec3_dot(d, n)", "should be 2", NULL},
     {1, "1.5", "Snell's ratio inverted", "lib/snell.c",
      "vec3_scale(d, eta), vec3_scale(n, eta * cos_i - cos_t)",
-     "vec3_scale(d, 1.0 / eta), vec3_scale(n, cos_i / eta - cos_t)", "Snell"},
+     "vec3_scale(d, 1.0 / eta), vec3_scale(n, cos_i / eta - cos_t)", "Snell", NULL},
+    {1, "1.4", "the right factor with the wrong sign", "lib/mirror.h", "-2.0 * vec3_dot(d, n)",
+     "2.0 * vec3_dot(d, n)", "the sign is wrong", "should be 2"},
+    {1, "1.3", "a direction the blank's way, along z", "lib/camera.c",
+     "vec3_normalize(vec3_sub(on_plane, camera->eye))", "vec3(0, 0, 1)",
+     "parallel to the image plane", "nan"},
+    {1, "1.6", "Schlick with the fourth power", "lib/schlick.c", "m * m * m * m * m",
+     "m * m * m * m", "to the fourth power", NULL},
+    {1, "1.6", "Schlick leaving glass at the incidence angle", "lib/schlick.c",
+     "cos_theta = snell_cos_transmitted(cos_i, n_i, n_t);\n        if (cos_theta < 0.0)",
+     "if (snell_cos_transmitted(cos_i, n_i, n_t) < 0.0)", "the transmitted angle", NULL},
     {2, "2.1", "cos(theta) = u instead of sqrt(1 - u)", "lib/hemisphere.c",
      "double sin_theta = sqrt(u1);\n    double cos_theta = sqrt(1.0 - u1);",
-     "double sin_theta = sqrt(1.0 - u1 * u1);\n    double cos_theta = u1;", "nearest the horizon"},
+     "double sin_theta = sqrt(1.0 - u1 * u1);\n    double cos_theta = u1;", "nearest the horizon", NULL},
     {2, "2.1", "phi over half a turn", "lib/hemisphere.c", "double phi = 2.0 * PI * u2;",
-     "double phi = PI * u2;", "sector"},
+     "double phi = PI * u2;", "sector", NULL},
     {2, "2.2", "the pdf without 1 / pi", "lib/hemisphere.c", "w_local.z / PI : 0.0",
-     "w_local.z : 0.0", "pi times too large"},
+     "w_local.z : 0.0", "pi times too large", NULL},
     {2, "2.2", "the uniform hemisphere's pdf", "lib/hemisphere.c", "w_local.z / PI : 0.0",
-     "1.0 / (2.0 * PI) : 0.0", "uniform hemisphere"},
+     "1.0 / (2.0 * PI) : 0.0", "uniform hemisphere", NULL},
     {2, "2.3", "Lambert without 1 / pi", "lib/lambert.c", "vec3_scale(rho, 1.0 / PI)", "rho",
-     "missing 1 / pi"},
+     "missing 1 / pi", NULL},
     {2, "2.4", "the throughput never multiplied", "lib/path.c",
      "throughput = vec3_mul(throughput, weight);",
-     "throughput = vec3_add(throughput, vec3_scale(weight, 0.0));", "too bright"},
+     "throughput = vec3_add(throughput, vec3_scale(weight, 0.0));", "too bright", NULL},
+    {2, "2.4", "a right path tracer over the sampler of 2.1 gone wrong", "lib/hemisphere.c",
+     "double sin_theta = sqrt(u1);\n    double cos_theta = sqrt(1.0 - u1);",
+     "double sin_theta = sqrt(1.0 - u1 * u1);\n    double cos_theta = u1;",
+     "exercise 2.1 (hemisphere_sample_cosine), which path_radiance depends on, is wrong first",
+     "exercise-2.4-zmap.png"},
     {3, "3.1", "the point on the triangle with u1, not sqrt(u1)", "lib/area_light.c",
-     "double s = sqrt(u1);", "double s = u1;", "too many samples"},
+     "double s = sqrt(u1);", "double s = u1;", "too many samples", NULL},
     {3, "3.1", "every lamp equally likely", "lib/area_light.c",
      "double target = u_select * scene->light_area;",
      "double target = scene->light_cumulative[(int)(u_select * scene->light_count)] - 1e-12;",
-     "column"},
+     "column", NULL},
     {3, "3.2", "the pdf without the cosine at the lamp", "lib/area_light.c",
-     "(scene->light_area * cos_beta)", "scene->light_area", "cosine at the lamp is missing"},
+     "(scene->light_area * cos_beta)", "scene->light_area", "cosine at the lamp is missing", NULL},
     {3, "3.3", "eq. 21 without cos(beta)", "lib/area_light.c",
      "scene->light_area * cos_alpha * cos_beta / distance2", "scene->light_area * cos_alpha / distance2",
-     "too bright"},
+     "too bright", NULL},
     {3, "3.3", "the distance not squared", "lib/area_light.c", "cos_beta / distance2);",
-     "cos_beta / sqrt(distance2));", "too bright"},
+     "cos_beta / sqrt(distance2));", "too bright", NULL},
+    {3, "3.3", "a right shadow ray over the sampler of 3.1 gone wrong", "lib/area_light.c",
+     "double s = sqrt(u1);", "double s = u1;",
+     "exercise 3.1 (area_light_sample), which area_light_shadow_ray depends on, is wrong first",
+     "exercise-3.3-zmap.png"},
+    {3, "3.4", "eq. 21's sum not divided by M", "lib/area_light.c",
+     "return vec3_scale(sum, 1.0 / shadow_rays);", "return sum;",
+     "the sum of M terms is not divided by M: with M = 2, 4 and 30 the light is 2, 4 and 30 "
+     "times too bright", NULL},
+    {3, "3.4", "1 / M in whole numbers", "lib/area_light.c", "1.0 / shadow_rays",
+     "1 / shadow_rays", "whole numbers", NULL},
+    {3, "3.4", "a right eq. 21 over the shadow ray of 3.3 gone wrong", "lib/area_light.c",
+     "scene->light_area * cos_alpha * cos_beta / distance2", "scene->light_area * cos_alpha / distance2",
+     "exercise 3.3 (area_light_shadow_ray), which area_light_direct depends on, is wrong first",
+     NULL},
     {4, "4.1", "R_s and R_p swapped", "lib/fresnel.c",
      "r.s = squared_ratio(n_i * cos_i - n_t * cos_t", "r.p = squared_ratio(n_i * cos_i - n_t * cos_t",
-     "R_p"},
+     "R_p", NULL},
     {4, "4.1", "no total internal reflection", "lib/fresnel.c",
      "if (cos_t < 0.0) {\n        r.s = r.p = 1.0;\n        return r;\n    }", "",
-     "total internal reflection"},
+     "total internal reflection", NULL},
     {4, "4.2", "R_s + R_p, not their mean", "lib/fresnel.c", "return 0.5 * (r.s + r.p);",
-     "return r.s + r.p;", "is R_s + R_p"},
+     "return r.s + r.p;", "is R_s + R_p", NULL},
+    {4, "4.1", "R_s and R_p rounded through a float", "lib/fresnel.c",
+     "    double r = numerator / denominator;", "    float r = (float)(numerator / denominator);",
+     "R_s = 0.040000003", "R_s = 0.0400 and R_p = 0.0400,"},
+    {4, "4.2", "a right mean of R_s and R_p rounded through a float", "lib/fresnel.c",
+     "    double r = numerator / denominator;", "    float r = (float)(numerator / denominator);",
+     "exercise 4.1 (fresnel_polarised), which fresnel_reflectance depends on, is wrong first",
+     "R = 0.0400"},
     {5, "5.1", "the report's A, without \"1 -\"", "lib/oren_nayar.c",
      "return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);", "return 0.5 * roughness_ratio(sigma, 0.33);",
-     "misprint"},
+     "misprint", NULL},
     {5, "5.1", "sigma taken as degrees", "lib/oren_nayar.c",
      "return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);",
-     "return 1.0 - 0.5 * roughness_ratio(sigma * PI / 180.0, 0.33);", "radians"},
+     "return 1.0 - 0.5 * roughness_ratio(sigma * PI / 180.0, 0.33);", "radians", NULL},
     {5, "5.3", "sin(beta) for tan(beta)", "lib/oren_nayar.c",
-     "fmax(0.0, projected_dot) / cos_beta;", "fmax(0.0, projected_dot);", "sin(beta)"},
+     "fmax(0.0, projected_dot) / cos_beta;", "fmax(0.0, projected_dot);", "sin(beta)", NULL},
+    {5, "5.3", "a right factor over the report's A (5.1)", "lib/oren_nayar.c",
+     "return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);", "return 0.5 * roughness_ratio(sigma, 0.33);",
+     "exercise 5.1 (oren_nayar_a), which oren_nayar_factor depends on, is wrong first",
+     "where eq. 13 gives"},
     {6, "6.1", "survivors not divided by the survival probability", "lib/roulette.c",
-     "*throughput = vec3_scale(*throughput, 1.0 / survival);", "", "not divided"},
+     "*throughput = vec3_scale(*throughput, 1.0 / survival);", "", "not divided", NULL},
     {6, "6.1", "bounded weights a segment late", "lib/roulette.c",
-     "segment >= settings->rr_throughput", "segment > settings->rr_throughput", "go on"},
+     "segment >= settings->rr_throughput", "segment > settings->rr_throughput", "go on", NULL},
     {6, "6.2", "the channels' mean for their maximum", "lib/roulette.c",
      "fmin(1.0, vec3_max_component(throughput))",
-     "fmin(1.0, (throughput.x + throughput.y + throughput.z) / 3.0)", "mean"},
+     "fmin(1.0, (throughput.x + throughput.y + throughput.z) / 3.0)", "mean", NULL},
+    {6, "6.1", "right roulette over the mean for the maximum (6.2)", "lib/roulette.c",
+     "fmin(1.0, vec3_max_component(throughput))",
+     "fmin(1.0, (throughput.x + throughput.y + throughput.z) / 3.0)",
+     "exercise 6.2 (roulette_survival_from_throughput), which roulette_continues depends on, is "
+     "wrong first", "of the paths go on"},
     {7, "7.1", "the balance heuristic", "lib/mis.c", "return 1.0 / (1.0 + ratio * ratio);",
-     "return 1.0 / (1.0 + ratio);", "balance heuristic"},
+     "return 1.0 / (1.0 + ratio);", "balance heuristic", NULL},
     {7, "7.1", "weights that do not sum to one", "lib/mis.c", "return 1.0 / (1.0 + ratio * ratio);",
-     "return 1.0 / (1.0 + g * g);", "sum to"},
+     "return 1.0 / (1.0 + g * g);", "sum to", NULL},
     {7, "7.2", "the mirror's reflectance left out", "lib/mirror_light.c",
      "vec3_mul(diffuse_brdf(m, n, wi, wo), mirror->reflectance)", "diffuse_brdf(m, n, wi, wo)",
-     "reflectance"},
+     "reflectance", NULL},
     {8, "8.1", "divided by pi r, not pi r^2", "lib/photon_estimate.c",
-     "1.0 / (PI * radius * radius)", "1.0 / (PI * radius)", "pi r,"},
+     "1.0 / (PI * radius * radius)", "1.0 / (PI * radius)", "pi r,", NULL},
     {8, "8.1", "photons of other surfaces counted", "lib/photon_estimate.c",
-     "vec3_dot(p->normal, g->n) < PHOTON_NORMAL_COS || ", "", "are counted"},
+     "vec3_dot(p->normal, g->n) < PHOTON_NORMAL_COS || ", "", "are counted", NULL},
     {8, "8.2", "the radius growing", "lib/photon_estimate.c", "pow((double)pass, alpha - 1.0)",
-     "pow((double)pass, 1.0 - alpha)", "must shrink"},
+     "pow((double)pass, 1.0 - alpha)", "must shrink", NULL},
     {8, "8.2", "the radius without its square root", "lib/photon_estimate.c",
      "first_radius * sqrt(pow((double)pass, alpha - 1.0))",
-     "first_radius * pow((double)pass, alpha - 1.0)", "square root"},
+     "first_radius * pow((double)pass, alpha - 1.0)", "square root", NULL},
+
+    {8, "8.3", "photon power not divided by the photon count", "lib/photon.c",
+     "PI * scene->light_area / emitted", "PI * scene->light_area",
+     "not divided by the number of photons", NULL},
+    {8, "8.3", "the lamps' flux without pi", "lib/photon.c", "PI * scene->light_area / emitted",
+     "scene->light_area / emitted", "1 / pi of the lamp's flux", NULL},
 };
 #define MISTAKES (int)(sizeof mistakes / sizeof mistakes[0])
 
@@ -201,7 +254,8 @@ static void test_planted_mistakes(void **state)
         int status = grade(m->chapter, tree, m->id, &out);
         char line[2048];
         const char *verdict = verdict_of(out, m->id, line, sizeof line);
-        int ok = status != 0 && verdict && strstr(verdict, "FAIL") && strstr(verdict, m->symptom);
+        int ok = status != 0 && verdict && strstr(verdict, "FAIL") && strstr(verdict, m->symptom) &&
+                 !(m->misleading && strstr(verdict, m->misleading));
         printf("%2d. %-3s %-52s %s\n    %s\n", i + 1, m->id, m->mistake,
                ok ? "caught" : "NOT CAUGHT", verdict ? verdict : out);
         caught += ok;

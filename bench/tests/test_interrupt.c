@@ -417,8 +417,9 @@ static void test_one_reference_for_two_programs(void **state)
 #if CHAPTER >= 8
 /* Chapter 8's photon panel renders passes for the processor time its path-traced panel
  * took. SIGINT well into them, before their end, saves the image of the passes
- * completed: at least one pass of 8 samples per pixel. "Well into" is a moment on a
- * clock that other programs share: 0.7 times as long after the path-traced panel is
+ * completed: at least one pass of 8 samples per pixel (of 256 in the path-traced panel,
+ * so a pass is a small part of the time). "Well into" is a moment on a clock that other
+ * programs share: 0.7 times as long after the path-traced panel is
  * written as that took from the start, and where that came before the first pass had
  * ended (nothing saved, as it must), again later: 0.85, then 0.95 times. */
 static void test_sigint_saves_the_photon_passes(void **state)
@@ -428,7 +429,7 @@ static void test_sigint_saves_the_photon_passes(void **state)
     snprintf(log, sizeof log, "%s.log", folder);
     snprintf(path_panel, sizeof path_panel, "%s/ch08_path.pfm", folder);
     snprintf(arguments, sizeof arguments,
-             "--quiet --size 32 --spp 64 --reference-spp 8 --seed 5 --out %s", folder);
+             "--quiet --size 32 --spp 256 --reference-spp 8 --seed 5 --out %s", folder);
     const double moments[] = {0.7, 0.85, 0.95};
     int status = 0, said = 0;
     double spp = 0.0;
