@@ -12,6 +12,7 @@
 #include <stdlib.h>
 
 #include "area_light.h"
+#include "frame.h"
 #include "grading.h"
 #include "photon_estimate.h"
 #include "render_check.h"
