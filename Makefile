@@ -111,7 +111,11 @@ $(DEPS_OK):
 # a header before its source.
 READING_ORDER := vec ray camera sphere triangle bvh material scene mirror snell schlick whitted render
 
-# $(1): the chapter. Tests of chapter K are built in chapter K and in the final chapter.
+# $(1): the chapter. Tests of chapter K are built in chapter K and in the final chapter,
+# but for the grader's and the exercises' tests (ONCE_TESTS): they grade trees they build
+# from each chapter's clean source, so the library they are linked with changes nothing,
+# and they run once, in the final chapter.
+ONCE_TESTS := bench/tests/test_grader.c bench/tests/test_exercises.c
 define CHAPTER_RULES
 $(BUILD)/chapter$(1)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $$(@D)
@@ -130,7 +134,7 @@ $(BUILD)/chapter$(1)/tests/%: $(BUILD)/chapter$(1)/tests/%.o $(BUILD)/chapter$(1
 $(BUILD)/chapter$(1)/bench/tests/%: $(BUILD)/chapter$(1)/bench/tests/%.o $(BUILD)/chapter$(1)/libmc.a
 	$$(CC) $$^ $$(LDFLAGS) $$(TEST_LIBS) -o $$@
 
-CHAPTER$(1)_TESTS := $(patsubst %.c,$(BUILD)/chapter$(1)/%,$(if $(filter $(1),$(FINAL)),$(call upto,$(1),$(TEST_SOURCES)),$(foreach t,$(TEST_SOURCES),$(if $(filter $(1),$(call chapter_of,$(t))),$(t)))))
+CHAPTER$(1)_TESTS := $(patsubst %.c,$(BUILD)/chapter$(1)/%,$(if $(filter $(1),$(FINAL)),$(call upto,$(1),$(TEST_SOURCES)),$(foreach t,$(filter-out $(ONCE_TESTS),$(TEST_SOURCES)),$(if $(filter $(1),$(call chapter_of,$(t))),$(t)))))
 ALL_TESTS += $$(CHAPTER$(1)_TESTS)
 
 .PHONY: chapter$(1) source-chapter$(1) diff-chapter$(1)
