@@ -13,7 +13,8 @@
 #include "path.h"
 
 /* The new direction of a path with unit direction d at glass of index `ior`, whose unit
- * normal n faces d's origin (entering: coming from outside the glass). */
+ * normal n faces d's origin (entering: coming from outside the glass). R is Schlick's
+ * until chapter 4, whose settings->fresnel chooses it or the exact Fresnel equations. */
 Vec3 glass_scatter(Vec3 d, Vec3 n, int entering, double ior, const PathSettings *settings,
                    Rng *rng);
 
