@@ -272,7 +272,8 @@ $(REFERENCE_BIN): $(BUILD)/chapter$(FINAL)/bench/reference.o $(REFERENCE_OBJS)
 CHAPTER_BINS := $(foreach n,$(CHAPTERS),$(call program_of,$(n)))
 all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) $(CHAPTER_TESTS) $(FINAL_TESTS) $(SOLUTION_GRADERS)
 
-# Every chapter's clean source: no chapter markers left; its lesson (lib/) compiles
+# Every source file formatted as .clang-format says (Debian's clang-format, installed on
+# demand). Every chapter's clean source: no chapter markers left; its lesson (lib/) compiles
 # with nothing but its own headers (it never includes the bench, nor a later chapter),
 # its program and tests with the bench built for that chapter; no placeholder statement "(void) x;" in its
 # lesson; chapter 1's lesson and program at most 1,100 lines, and at most 40 lines of
@@ -280,6 +281,10 @@ all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) $(CHAPTER_TESTS) $(FINAL_TESTS)
 # lib/*.c; no comment cites a document outside the repository or an issue; each lesson
 # file opens with at most 12 comment lines.
 check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
+	@sh .ci/install-deps clang-format
+	@unformatted=$$(for f in $(SOURCES); do clang-format --dry-run --Werror $$f >/dev/null 2>&1 || echo $$f; done); \
+	if [ -n "$$unformatted" ]; then \
+	    echo "not formatted as .clang-format says (clang-format -i FILE):" $$unformatted; exit 1; fi
 	@for n in $(CHAPTERS); do \
 	    tree=$(BUILD)/source/chapter$$n; \
 	    if grep -rln '^#if.*CHAPTER' $$tree; then echo "chapter markers left in $$tree"; exit 1; fi; \

@@ -21,10 +21,14 @@
 #error "the table of temporary files needs lock-free atomic int for its signal handler"
 #endif
 
-enum { SLOT_FREE, SLOT_CLAIMED, SLOT_LISTED };
+enum {
+    SLOT_FREE,
+    SLOT_CLAIMED,
+    SLOT_LISTED
+};
 
 static atomic_int slot_state[ATOMIC_OPEN_MAX];
-static char slot_path[ATOMIC_OPEN_MAX][sizeof ((AtomicFile *)0)->temp_path];
+static char slot_path[ATOMIC_OPEN_MAX][sizeof((AtomicFile *)0)->temp_path];
 
 /* List `temp_path` in a free slot; returns the slot, or -1 when all are taken. */
 static int list_temporary(const char *temp_path)
@@ -40,10 +44,7 @@ static int list_temporary(const char *temp_path)
     return -1;
 }
 
-static void unlist_temporary(int slot)
-{
-    atomic_store(&slot_state[slot], SLOT_FREE);
-}
+static void unlist_temporary(int slot) { atomic_store(&slot_state[slot], SLOT_FREE); }
 
 void atomic_remove_temporaries(void)
 {

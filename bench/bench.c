@@ -55,8 +55,11 @@ int main(int argc, char **argv)
     printf("room, %d x %d, %d spp, M=1, alpha=0.25 (Table 1, row 1)\n", options.size,
            options.size, options.spp);
     for (int i = 0; i < 2; i++) {
-        RenderSettings settings = {{options.size, options.size, options.spp, PIXEL_SUBPIXELS, 1},
-                                   threads[i], !options.quiet, "bench"};
+        RenderSettings settings = {
+            {options.size, options.size, options.spp, PIXEL_SUBPIXELS, 1},
+            threads[i],
+            !options.quiet,
+            "bench"};
         clock_t start = clock();
         if (render(&scene, &settings, path_roulette_radiance, &path, &results[i]) != 0)
             cli_fail(1, "out of memory");
@@ -65,7 +68,8 @@ int main(int argc, char **argv)
     }
     printf("speed-up %.2f on %d threads (rays: %.1f M camera, %.1f M bounce, %.1f M shadow)\n",
            results[0].seconds / results[1].seconds, results[1].threads,
-           1e-6 * results[1].rays.camera, 1e-6 * results[1].rays.bounce, 1e-6 * results[1].rays.shadow);
+           1e-6 * results[1].rays.camera, 1e-6 * results[1].rays.bounce,
+           1e-6 * results[1].rays.shadow);
     for (int i = 0; i < 2; i++)
         render_result_free(&results[i]);
 
@@ -81,22 +85,28 @@ int main(int argc, char **argv)
     MirrorPlanes mirrors;
     if (mirror_light_find_planes(&scene, &mirrors) != 0)
         cli_fail(1, "out of memory");
-    PathSettings final = {.max_depth = 64, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
-                          .rr_throughput = 1, .mirror_light = 64, .mirrors = &mirrors,
+    PathSettings final = {.max_depth = 64,
+                          .shadow_rays = 1,
+                          .fresnel = FRESNEL_EXACT,
+                          .rr_throughput = 1,
+                          .mirror_light = 64,
+                          .mirrors = &mirrors,
                           .sphere_guide = SPHERE_GUIDE_STRENGTH};
     printf("\nthe room's efficiency, chapter 7's final estimator, %d pixels wide, %d spp, %d "
-           "threads, %d runs:\n", small.size, small.spp, small.threads, small.runs);
+           "threads, %d runs:\n",
+           small.size, small.spp, small.threads, small.runs);
     Reference reference;
     experiment_path_reference(&small, &scene, &final, NULL, 0.0, &reference);
     const PixelSampling samplings[2] = {PIXEL_SUBPIXELS, PIXEL_STRATIFIED};
     const char *names[2] = {"independent numbers", "stratified pairs"};
     TableRow rows[2];
     for (int i = 0; i < 2; i++) {
-        rows[i] = experiment_path_row(&small, &scene, path_final_radiance, &final, small.spp, samplings[i], names[i],
-                                      names[i], &reference, NULL);
-        printf("  %-20s %6.2f s per run  RMSE %.4f +- %.4f  relative MSE %.3g  efficiency %.3g\n",
-               names[i], rows[i].seconds, rows[i].rmse, rows[i].rmse_spread, rows[i].rel_mse,
-               rows[i].efficiency);
+        rows[i] = experiment_path_row(&small, &scene, path_final_radiance, &final, small.spp,
+                                      samplings[i], names[i], names[i], &reference, NULL);
+        printf(
+            "  %-20s %6.2f s per run  RMSE %.4f +- %.4f  relative MSE %.3g  efficiency %.3g\n",
+            names[i], rows[i].seconds, rows[i].rmse, rows[i].rmse_spread, rows[i].rel_mse,
+            rows[i].efficiency);
     }
     printf("stratified pairs: %.2f times the efficiency of independent numbers\n",
            rows[1].efficiency / rows[0].efficiency);

@@ -12,8 +12,15 @@ int seed_images_begin(SeedImages *s, int width, int height, const unsigned char 
 {
     long values = 3L * width * height;
     *s = (SeedImages){calloc((size_t)values, sizeof *s->sum),
-                      calloc((size_t)values, sizeof *s->sum_squares), left_out, values, 0,
-                      0.0, INFINITY, 0.0, 0.0, 0.0};
+                      calloc((size_t)values, sizeof *s->sum_squares),
+                      left_out,
+                      values,
+                      0,
+                      0.0,
+                      INFINITY,
+                      0.0,
+                      0.0,
+                      0.0};
     if (s->sum && s->sum_squares)
         return 0;
     free(s->sum);
@@ -97,13 +104,14 @@ static double bias_share(const BiasVariance *e)
 void bias_variance_print(FILE *out, const SettingError *rows, int count)
 {
     fprintf(out, "%-18s %4s %8s %7s %5s %6s %8s %7s %8s %17s %8s %10s %10s %5s %5s\n",
-            "estimator", "spp", "photons", "radius", "alpha", "passes", "seconds", "cpu", "rmse",
-            "(lowest-highest)", "error", "bias^2", "variance", "bias", "var.");
+            "estimator", "spp", "photons", "radius", "alpha", "passes", "seconds", "cpu",
+            "rmse", "(lowest-highest)", "error", "bias^2", "variance", "bias", "var.");
     for (int i = 0; i < count; i++) {
         const SettingError *r = &rows[i];
         const BiasVariance *e = &r->error;
-        fprintf(out, "%-18s %4d %8d %7.4f %5.2f %6d %8.3f %7.3f %8.5f (%7.5f-%7.5f) %8.5f "
-                     "%10.3e %10.3e %4.0f%% %4.0f%%\n",
+        fprintf(out,
+                "%-18s %4d %8d %7.4f %5.2f %6d %8.3f %7.3f %8.5f (%7.5f-%7.5f) %8.5f "
+                "%10.3e %10.3e %4.0f%% %4.0f%%\n",
                 r->estimator, r->spp, r->photons, r->radius, r->alpha, r->passes, e->seconds,
                 e->cpu, e->rmse, e->rmse_low, e->rmse_high, e->error, e->bias2, e->variance,
                 100 * bias_share(e), 100 * (1.0 - bias_share(e)));
@@ -121,8 +129,9 @@ int bias_variance_write_csv(const char *path, const SettingError *rows, int coun
     for (int i = 0; i < count; i++) {
         const SettingError *r = &rows[i];
         const BiasVariance *e = &r->error;
-        fprintf(file.file, "%s,%d,%d,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,"
-                           "%.6g\n",
+        fprintf(file.file,
+                "%s,%d,%d,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,"
+                "%.6g\n",
                 r->estimator, r->spp, r->photons, r->radius, r->alpha, r->passes, e->seconds,
                 e->cpu, e->rmse, e->rmse_low, e->rmse_high, e->error, e->bias2, e->variance,
                 bias_share(e), 1.0 - bias_share(e));

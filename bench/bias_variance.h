@@ -24,7 +24,7 @@ typedef struct {
 
 /* The K images of one setting as they are added. */
 typedef struct {
-    double *sum, *sum_squares; /* per value */
+    double *sum, *sum_squares;     /* per value */
     const unsigned char *left_out; /* per pixel, 1: left out of bias^2 and variance */
     long values;
     int count;

@@ -52,10 +52,7 @@ double chi_square_statistic(const double *observed, const double *expected, int 
 
 /* e^-x x^a / Gamma(a), the factor both expansions share (in logarithms, as x^a and
  * Gamma(a) overflow long before their ratio does). */
-static double gamma_prefactor(double a, double x)
-{
-    return exp(a * log(x) - x - lgamma(a));
-}
+static double gamma_prefactor(double a, double x) { return exp(a * log(x) - x - lgamma(a)); }
 
 /* The regularised lower incomplete gamma function by its power series,
  *     P(a, x) = e^-x x^a / Gamma(a) * sum_{n >= 0} x^n / (a (a + 1) ... (a + n)),

@@ -1,5 +1,5 @@
-/* chi_square.h (bench, chapter 1): Pearson's chi-square goodness-of-fit test, the tool that checks a
- * sampling routine against the density it claims to have.
+/* chi_square.h (bench, chapter 1): Pearson's chi-square goodness-of-fit test, the tool that
+ * checks a sampling routine against the density it claims to have.
  *
  * Introduced in chapter 2 (its tests check the cosine-weighted hemisphere; later the
  * area light). Draw N samples, count how many land in each of k bins (observed O_j), and

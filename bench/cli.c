@@ -12,7 +12,15 @@
 
 const char *cli_program = "mcrt";
 
-typedef enum { VALUE_NONE, VALUE_INT, VALUE_REAL, VALUE_TEXT, VALUE_SEED, VALUE_FRESNEL, VALUE_SWITCH } ValueKind;
+typedef enum {
+    VALUE_NONE,
+    VALUE_INT,
+    VALUE_REAL,
+    VALUE_TEXT,
+    VALUE_SEED,
+    VALUE_FRESNEL,
+    VALUE_SWITCH
+} ValueKind;
 
 /* One row per flag: its name, what its value is, the range allowed, and its help. */
 typedef struct {
@@ -24,21 +32,33 @@ typedef struct {
 } FlagSpec;
 
 static const FlagSpec FLAG_SPECS[] = {
-    {FLAG_SCENE, "--scene", VALUE_TEXT, 0, 0, "FILE    scene file to render (docs/scene-format.md)"},
-    {FLAG_SIZE, "--size", VALUE_INT, 8, 16384, "N       image width in pixels; the height follows the image plane"},
+    {FLAG_SCENE, "--scene", VALUE_TEXT, 0, 0,
+     "FILE    scene file to render (docs/scene-format.md)"},
+    {FLAG_SIZE, "--size", VALUE_INT, 8, 16384,
+     "N       image width in pixels; the height follows the image plane"},
     {FLAG_SPP, "--spp", VALUE_INT, 1, 1 << 20, "N       samples per pixel"},
-    {FLAG_SHADOW_RAYS, "--shadow-rays", VALUE_INT, 0, 1 << 16, "N       shadow rays per diffuse hit (eq. 21); 0: lights found only by hitting them"},
-    {FLAG_RR, "--rr", VALUE_REAL, 0, 1, "ALPHA   Russian roulette survival probability, 0 < ALPHA <= 1"},
+    {FLAG_SHADOW_RAYS, "--shadow-rays", VALUE_INT, 0, 1 << 16,
+     "N       shadow rays per diffuse hit (eq. 21); 0: lights found only by hitting them"},
+    {FLAG_RR, "--rr", VALUE_REAL, 0, 1,
+     "ALPHA   Russian roulette survival probability, 0 < ALPHA <= 1"},
     {FLAG_DEPTH, "--depth", VALUE_INT, 1, 1000, "N       maximum ray depth"},
     {FLAG_THREADS, "--threads", VALUE_INT, 0, 1024, "N       render threads; 0: one per core"},
-    {FLAG_SEED, "--seed", VALUE_SEED, 0, 0, "N       random seed (the image is the same for every thread count)"},
+    {FLAG_SEED, "--seed", VALUE_SEED, 0, 0,
+     "N       random seed (the image is the same for every thread count)"},
     {FLAG_OUT, "--out", VALUE_TEXT, 0, 0, "DIR     directory for the figures"},
     {FLAG_QUIET, "--quiet", VALUE_NONE, 0, 0, "        no progress display"},
-    {FLAG_FRESNEL, "--fresnel", VALUE_FRESNEL, 0, 0, "MODE    glass reflectance: schlick (the report's) or exact"},
-    {FLAG_QUICK, "--quick", VALUE_NONE, 0, 0, "        small and fast, for a first look: a quarter of the size, and more runs"},
-    {FLAG_REFERENCE_SPP, "--reference-spp", VALUE_INT, 1, 1 << 20, "N       samples per pixel of the reference image"},
-    {FLAG_RUNS, "--runs", VALUE_INT, 1, CLI_RUNS_MAX, "N       independent runs (seeds) of each measured setting: its error is their mean and spread"},
-    {FLAG_STRATA, "--strata", VALUE_SWITCH, 0, 0, "on|off  the final estimator's lamp points and bounces stratified across a pixel's samples"},
+    {FLAG_FRESNEL, "--fresnel", VALUE_FRESNEL, 0, 0,
+     "MODE    glass reflectance: schlick (the report's) or exact"},
+    {FLAG_QUICK, "--quick", VALUE_NONE, 0, 0,
+     "        small and fast, for a first look: a quarter of the size, and more runs"},
+    {FLAG_REFERENCE_SPP, "--reference-spp", VALUE_INT, 1, 1 << 20,
+     "N       samples per pixel of the reference image"},
+    {FLAG_RUNS, "--runs", VALUE_INT, 1, CLI_RUNS_MAX,
+     "N       independent runs (seeds) of each measured setting: its error is their mean and "
+     "spread"},
+    {FLAG_STRATA, "--strata", VALUE_SWITCH, 0, 0,
+     "on|off  the final estimator's lamp points and bounces stratified across a pixel's "
+     "samples"},
 };
 #define FLAG_SPEC_COUNT ((int)(sizeof FLAG_SPECS / sizeof FLAG_SPECS[0]))
 
@@ -56,24 +76,51 @@ void cli_fail(int status, const char *format, ...)
 static void print_default(const FlagSpec *spec, const Options *d)
 {
     switch (spec->bit) {
-    case FLAG_SCENE: printf(" (default %s)", d->scene); break;
-    case FLAG_SIZE: printf(" (default %d)", d->size); break;
-    case FLAG_SPP: printf(" (default %d)", d->spp); break;
-    case FLAG_SHADOW_RAYS: printf(" (default %d)", d->shadow_rays); break;
-    case FLAG_RR: printf(" (default %g)", d->rr); break;
-    case FLAG_DEPTH: printf(" (default %d)", d->depth); break;
-    case FLAG_THREADS: printf(" (default %d)", d->threads); break;
-    case FLAG_SEED: printf(" (default %llu)", (unsigned long long)d->seed); break;
-    case FLAG_OUT: printf(" (default %s)", d->out); break;
+    case FLAG_SCENE:
+        printf(" (default %s)", d->scene);
+        break;
+    case FLAG_SIZE:
+        printf(" (default %d)", d->size);
+        break;
+    case FLAG_SPP:
+        printf(" (default %d)", d->spp);
+        break;
+    case FLAG_SHADOW_RAYS:
+        printf(" (default %d)", d->shadow_rays);
+        break;
+    case FLAG_RR:
+        printf(" (default %g)", d->rr);
+        break;
+    case FLAG_DEPTH:
+        printf(" (default %d)", d->depth);
+        break;
+    case FLAG_THREADS:
+        printf(" (default %d)", d->threads);
+        break;
+    case FLAG_SEED:
+        printf(" (default %llu)", (unsigned long long)d->seed);
+        break;
+    case FLAG_OUT:
+        printf(" (default %s)", d->out);
+        break;
 #if CHAPTER >= 4
-    case FLAG_FRESNEL: printf(" (default %s)", d->fresnel == FRESNEL_EXACT ? "exact" : "schlick"); break;
+    case FLAG_FRESNEL:
+        printf(" (default %s)", d->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
+        break;
 #endif
-    case FLAG_REFERENCE_SPP: printf(" (default %d)", d->reference_spp); break;
-    case FLAG_RUNS: printf(" (default %d; with --quick %d)", d->runs, CLI_QUICK_RUNS); break;
+    case FLAG_REFERENCE_SPP:
+        printf(" (default %d)", d->reference_spp);
+        break;
+    case FLAG_RUNS:
+        printf(" (default %d; with --quick %d)", d->runs, CLI_QUICK_RUNS);
+        break;
 #if CHAPTER >= 7
-    case FLAG_STRATA: printf(" (default %s)", d->strata ? "on" : "off"); break;
+    case FLAG_STRATA:
+        printf(" (default %s)", d->strata ? "on" : "off");
+        break;
 #endif
-    default: break;
+    default:
+        break;
     }
 }
 
@@ -114,18 +161,21 @@ static double parse_number(const FlagSpec *spec, const char *text)
     char *end;
     errno = 0;
     double value = strtod(text, &end);
-    int underflow = (errno == ERANGE && fabs(value) <= 1.0) ||
-                    (value != 0.0 && fabs(value) < DBL_MIN);
+    int underflow =
+        (errno == ERANGE && fabs(value) <= 1.0) || (value != 0.0 && fabs(value) < DBL_MIN);
     if (*text == '\0')
         cli_fail(2, "%s: expected %s, got an empty word", spec->name, range);
     if (strpbrk(text, " \t\n\v\f\r"))
-        cli_fail(2, "%s: '%s' has white space in it; expected %s alone", spec->name, text, range);
+        cli_fail(2, "%s: '%s' has white space in it; expected %s alone", spec->name, text,
+                 range);
     if (*end != '\0' || strspn(text, "+-0123456789.eE") != strlen(text))
         cli_fail(2, "%s: '%s' is not a decimal number (such as 16, 0.25 or 1e-3); expected %s",
                  spec->name, text, range);
     if (underflow)
-        cli_fail(2, "%s: '%s' is too small to compute with (below %g, the smallest double "
-                    "with all its digits); expected %s", spec->name, text, DBL_MIN, range);
+        cli_fail(2,
+                 "%s: '%s' is too small to compute with (below %g, the smallest double "
+                 "with all its digits); expected %s",
+                 spec->name, text, DBL_MIN, range);
     if (errno == ERANGE)
         cli_fail(2, "%s: '%s' is too large for a double (above %g); expected %s", spec->name,
                  text, DBL_MAX, range);
@@ -141,22 +191,40 @@ static void set_value(const FlagSpec *spec, const char *text, Options *o)
     if (spec->kind == VALUE_INT || spec->kind == VALUE_REAL) {
         double value = parse_number(spec, text);
         switch (spec->bit) {
-        case FLAG_SIZE: o->size = (int)value; break;
-        case FLAG_SPP: o->spp = (int)value; break;
-        case FLAG_SHADOW_RAYS: o->shadow_rays = (int)value; break;
-        case FLAG_RR: o->rr = value; break;
-        case FLAG_DEPTH: o->depth = (int)value; break;
-        case FLAG_THREADS: o->threads = (int)value; break;
-        case FLAG_REFERENCE_SPP: o->reference_spp = (int)value; break;
-        case FLAG_RUNS: o->runs = (int)value; break;
-        default: break;
+        case FLAG_SIZE:
+            o->size = (int)value;
+            break;
+        case FLAG_SPP:
+            o->spp = (int)value;
+            break;
+        case FLAG_SHADOW_RAYS:
+            o->shadow_rays = (int)value;
+            break;
+        case FLAG_RR:
+            o->rr = value;
+            break;
+        case FLAG_DEPTH:
+            o->depth = (int)value;
+            break;
+        case FLAG_THREADS:
+            o->threads = (int)value;
+            break;
+        case FLAG_REFERENCE_SPP:
+            o->reference_spp = (int)value;
+            break;
+        case FLAG_RUNS:
+            o->runs = (int)value;
+            break;
+        default:
+            break;
         }
     } else if (spec->kind == VALUE_SEED) {
         char *end;
         errno = 0;
         unsigned long long seed = strtoull(text, &end, 10);
         if (*text < '0' || *text > '9' || *end != '\0' || errno != 0)
-            cli_fail(2, "%s: expected a whole number from 0 to 2^64-1, got '%s'", spec->name, text);
+            cli_fail(2, "%s: expected a whole number from 0 to 2^64-1, got '%s'", spec->name,
+                     text);
         o->seed = seed;
 #if CHAPTER >= 4
     } else if (spec->kind == VALUE_FRESNEL) {
@@ -218,7 +286,8 @@ void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options)
         size_t name_length = equals ? (size_t)(equals - word) : strlen(word);
         const FlagSpec *spec = NULL;
         for (int k = 0; k < FLAG_SPEC_COUNT; k++)
-            if ((info->flags & FLAG_SPECS[k].bit) && strlen(FLAG_SPECS[k].name) == name_length &&
+            if ((info->flags & FLAG_SPECS[k].bit) &&
+                strlen(FLAG_SPECS[k].name) == name_length &&
                 strncmp(FLAG_SPECS[k].name, word, name_length) == 0)
                 spec = &FLAG_SPECS[k];
         if (!spec)
@@ -237,8 +306,10 @@ void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options)
         if (!value)
             cli_fail(2, "%s: missing value", spec->name);
         if (!equals && strncmp(value, "--", 2) == 0)
-            cli_fail(2, "%s: missing value (got the option '%s'; a value that starts with "
-                        "'--' can be given as %s=VALUE)", spec->name, value, spec->name);
+            cli_fail(2,
+                     "%s: missing value (got the option '%s'; a value that starts with "
+                     "'--' can be given as %s=VALUE)",
+                     spec->name, value, spec->name);
         set_value(spec, value, options);
     }
     if (options->quick && !cli_given(options, FLAG_SIZE))
@@ -247,7 +318,4 @@ void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options)
         options->runs = CLI_QUICK_RUNS;
 }
 
-int cli_quarter(int value, int smallest)
-{
-    return value / 4 > smallest ? value / 4 : smallest;
-}
+int cli_quarter(int value, int smallest) { return value / 4 > smallest ? value / 4 : smallest; }

@@ -30,8 +30,8 @@ enum {
     FLAG_FRESNEL = 1u << 10,    /* --fresnel schlick|exact */
     FLAG_QUICK = 1u << 11,      /* --quick: a quarter of the default size, more runs */
     FLAG_REFERENCE_SPP = 1u << 12, /* --reference-spp N: samples of the reference image */
-    FLAG_RUNS = 1u << 13,        /* --runs N: independent runs of each measured setting */
-    FLAG_STRATA = 1u << 14       /* --strata on|off: stratified pairs (chapter 7; sobol.h) */
+    FLAG_RUNS = 1u << 13,          /* --runs N: independent runs of each measured setting */
+    FLAG_STRATA = 1u << 14         /* --strata on|off: stratified pairs (chapter 7; sobol.h) */
 };
 
 /* --runs: at most; by default, two (at the report's 800 x 800 a run of Figure 7 is long,
@@ -42,7 +42,8 @@ enum {
 #define CLI_QUICK_RUNS 5
 
 /* Flags every chapter program takes. */
-#define FLAGS_COMMON (FLAG_SCENE | FLAG_SIZE | FLAG_THREADS | FLAG_SEED | FLAG_OUT | FLAG_QUIET | FLAG_QUICK)
+#define FLAGS_COMMON                                                                           \
+    (FLAG_SCENE | FLAG_SIZE | FLAG_THREADS | FLAG_SEED | FLAG_OUT | FLAG_QUIET | FLAG_QUICK)
 
 typedef struct {
     const char *scene;
@@ -64,7 +65,7 @@ typedef struct {
 #if CHAPTER >= 7
     int strata; /* 1: the estimator's pairs of numbers stratified across a pixel's samples */
 #endif
-    unsigned given; /* the FLAG_ bits the user set on the command line */
+    unsigned given;      /* the FLAG_ bits the user set on the command line */
     uint64_t scene_hash; /* of the scene file's bytes (scene_file.h), once it is read */
     int scene_lines;     /* its number of lines */
 } Options;
@@ -91,6 +92,9 @@ int cli_quarter(int value, int smallest);
 /* Print "PROGRAM: message" on stderr and exit with `status`. */
 void cli_fail(int status, const char *format, ...);
 
-static inline int cli_given(const Options *options, unsigned flag) { return (options->given & flag) != 0; }
+static inline int cli_given(const Options *options, unsigned flag)
+{
+    return (options->given & flag) != 0;
+}
 
 #endif

@@ -13,7 +13,10 @@
 #include "plot.h"
 #include "table.h"
 
-enum { CONVERGENCE_MAX_SERIES = 8, CONVERGENCE_MAX_STEPS = 16 };
+enum {
+    CONVERGENCE_MAX_SERIES = 8,
+    CONVERGENCE_MAX_STEPS = 16
+};
 
 /* The plot and the points it shows (the guide is the series after the settings'). */
 typedef struct {

@@ -1,4 +1,5 @@
-/* experiment.c (bench, chapter 1): the chores shared by the chapter programs. See experiment.h. */
+/* experiment.c (bench, chapter 1): the chores shared by the chapter programs. See experiment.h.
+ */
 #include "experiment.h"
 
 #include <errno.h>
@@ -58,7 +59,8 @@ static int make_directories(const char *path, char *failed, size_t size)
             *p = '\0';
             struct stat status;
             if (mkdir(directory, 0777) != 0 &&
-                (errno != EEXIST || stat(directory, &status) != 0 || !S_ISDIR(status.st_mode))) {
+                (errno != EEXIST || stat(directory, &status) != 0 ||
+                 !S_ISDIR(status.st_mode))) {
                 if (errno == EEXIST)
                     errno = ENOTDIR;
                 snprintf(failed, size, "%s", directory);
@@ -100,8 +102,8 @@ static void check_output_directory(const Options *options)
 {
     char failed[4096];
     if (writable_directory(options->out, failed, sizeof failed) != 0)
-        cli_fail(errno == ENOTDIR || errno == ENAMETOOLONG ? 2 : 1, "--out %s: cannot write in %s: %s",
-                 options->out, failed, strerror(errno));
+        cli_fail(errno == ENOTDIR || errno == ENAMETOOLONG ? 2 : 1,
+                 "--out %s: cannot write in %s: %s", options->out, failed, strerror(errno));
 }
 
 /* The triangles that emit: the area lights (listed by the lesson from chapter 3 on). */
@@ -109,7 +111,8 @@ static int emitting_triangles(const Scene *scene)
 {
     int count = 0;
     for (int i = 0; i < scene->triangle_count; i++)
-        count += vec3_max_component(scene->materials[scene->triangles[i].material].emission) > 0.0;
+        count +=
+            vec3_max_component(scene->materials[scene->triangles[i].material].emission) > 0.0;
     return count;
 }
 
@@ -145,13 +148,15 @@ void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed 
     const char *dark = dark_light(scene);
     int area_lights = emitting_triangles(scene);
     if (need == NEEDS_AREA_LIGHT && area_lights == 0 && dark)
-        cli_fail(2, "%s:%d: no area light: material '%s' is a light of emission 0 0 0, which "
-                    "emits nothing (%s needs a light with a channel above 0)", options->scene,
-                 options->scene_lines, dark, cli_program);
+        cli_fail(2,
+                 "%s:%d: no area light: material '%s' is a light of emission 0 0 0, which "
+                 "emits nothing (%s needs a light with a channel above 0)",
+                 options->scene, options->scene_lines, dark, cli_program);
     if (need == NEEDS_AREA_LIGHT && area_lights == 0)
-        cli_fail(2, "%s:%d: no area light (a 'light' material on a triangle, quad, box or "
-                    "tetrahedron): %s needs one", options->scene, options->scene_lines,
-                 cli_program);
+        cli_fail(2,
+                 "%s:%d: no area light (a 'light' material on a triangle, quad, box or "
+                 "tetrahedron): %s needs one",
+                 options->scene, options->scene_lines, cli_program);
     /* The figures need the font: say so now rather than after the renders. */
     Font font;
     load_font(&font);
@@ -166,8 +171,10 @@ void experiment_image_size(const Options *options, const Scene *scene, int *widt
     *width = options->size;
     *height = (int)lround(exact_height);
     if (*height < 1 || *height > 16384 || fabs(*height - exact_height) > 0.01 * *height)
-        cli_fail(2, "%s:%d: --size %d gives no image whose aspect ratio matches the image "
-                    "plane's (%.4g)", options->scene, options->scene_lines, options->size, aspect);
+        cli_fail(2,
+                 "%s:%d: --size %d gives no image whose aspect ratio matches the image "
+                 "plane's (%.4g)",
+                 options->scene, options->scene_lines, options->size, aspect);
 }
 
 #if CHAPTER >= 2
@@ -278,8 +285,8 @@ void experiment_write_plot(const Options *options, const char *name, const Plot 
 #endif
 
 void experiment_write_crops(const Options *options, const char *name, const Image *images,
-                            const char *const *captions, int count, int left, int top,
-                            int side, int scale)
+                            const char *const *captions, int count, int left, int top, int side,
+                            int scale)
 {
     Image crops[8] = {{0, 0, NULL}};
     if (count > 8)
@@ -329,7 +336,8 @@ TableRow experiment_row(const char *panel, const char *settings, const RenderRes
     return row;
 }
 
-void experiment_write_panel(const Options *options, const char *name, const RenderResult *result)
+void experiment_write_panel(const Options *options, const char *name,
+                            const RenderResult *result)
 {
     int written = !result->interrupted || render_samples_per_pixel(result) >= 1.0;
     if (written)
@@ -342,8 +350,8 @@ void experiment_exit_if_interrupted(const RenderResult *result, const char *save
     if (!result->interrupted)
         return;
     if (saved)
-        fprintf(stderr, "%s: interrupted: saved %s after %.2f samples per pixel\n",
-                cli_program, saved, render_samples_per_pixel(result));
+        fprintf(stderr, "%s: interrupted: saved %s after %.2f samples per pixel\n", cli_program,
+                saved, render_samples_per_pixel(result));
     else
         fprintf(stderr, "%s: interrupted after %.2f samples per pixel; nothing saved of it\n",
                 cli_program, render_samples_per_pixel(result));
@@ -528,7 +536,8 @@ static void use_temporary_folder(ReferencePlace *place, const char *what, const 
                                  int reason)
 {
     printf("reference cache %s: %s %s: %s: rendering into a temporary folder, nothing is "
-           "kept\n", place->cache, what, path, strerror(reason));
+           "kept\n",
+           place->cache, what, path, strerror(reason));
     if (make_place_temporary(place) != 0)
         cli_fail(1, "cannot make a temporary folder for the reference: %s", strerror(errno));
     snprintf(place->folder, sizeof place->folder, "%s", place->temporary);
@@ -580,8 +589,8 @@ static void render_reference(ReferencePlace *place, char **argv, int argc,
         status = measure_load_reference(place->folder, identity, width, height, reference, why,
                                         sizeof why);
         if (status == -1 && place->temporary[0] && strcmp(place->folder, place->temporary) != 0)
-            status = measure_load_reference(place->temporary, identity, width, height, reference,
-                                            why, sizeof why);
+            status = measure_load_reference(place->temporary, identity, width, height,
+                                            reference, why, sizeof why);
     }
     leave_place(place);
     if (exit_status == 130 || exit_status == 128 + SIGINT)
@@ -616,23 +625,43 @@ void experiment_path_reference(const Options *options, const Scene *scene,
     snprintf(spp, sizeof spp, "%d", options->reference_spp);
     snprintf(depth, sizeof depth, "%d", path->max_depth);
     snprintf(seed, sizeof seed, "%llu", (unsigned long long)~options->seed);
-    snprintf(sigma, sizeof sigma, "%s=%.17g", rough_material ? rough_material : "", rough_sigma);
+    snprintf(sigma, sizeof sigma, "%s=%.17g", rough_material ? rough_material : "",
+             rough_sigma);
     snprintf(parent, sizeof parent, "%ld", (long)getpid());
     /* The key: the scene's bytes, the settings, and the reference program itself. */
     ReferenceIdentity identity = {0, options->scene_hash, ""};
     measure_reference_settings(&identity, options->size, options->reference_spp,
                                path->max_depth, exact ? "exact" : "schlick", ~options->seed,
                                sigma);
-    identity.key = measure_hash(options->scene_hash, identity.settings,
-                                strlen(identity.settings));
-    identity.key = measure_hash(identity.key, &(uint64_t){program_identity(program)},
-                                sizeof(uint64_t));
-    snprintf(place.key_text, sizeof place.key_text, "%016llx", (unsigned long long)identity.key);
-    char *argv[32] = {program, "--scene", "/dev/stdin", "--name", (char *)options->scene,
-                      "--size", size, "--reference-spp", spp, "--depth", depth,
-                      "--fresnel", exact ? "exact" : "schlick", "--seed", seed,
-                      "--sigma", sigma, "--out", place.folder, "--key", place.key_text,
-                      "--parent", parent};
+    identity.key =
+        measure_hash(options->scene_hash, identity.settings, strlen(identity.settings));
+    identity.key =
+        measure_hash(identity.key, &(uint64_t){program_identity(program)}, sizeof(uint64_t));
+    snprintf(place.key_text, sizeof place.key_text, "%016llx",
+             (unsigned long long)identity.key);
+    char *argv[32] = {program,
+                      "--scene",
+                      "/dev/stdin",
+                      "--name",
+                      (char *)options->scene,
+                      "--size",
+                      size,
+                      "--reference-spp",
+                      spp,
+                      "--depth",
+                      depth,
+                      "--fresnel",
+                      exact ? "exact" : "schlick",
+                      "--seed",
+                      seed,
+                      "--sigma",
+                      sigma,
+                      "--out",
+                      place.folder,
+                      "--key",
+                      place.key_text,
+                      "--parent",
+                      parent};
     int argc = 23;
     if (options->quiet)
         argv[argc++] = "--quiet";
@@ -653,8 +682,9 @@ void experiment_path_reference(const Options *options, const Scene *scene,
     close(place.lock);
     leave_place(&place);
     printf("reference: %s, %.0f spp, %s %.1f s; its own standard error (RMS) %.5f\n",
-           description, reference->spp, reference->cached ? "cached, rendered in" : "rendered in",
-           reference->seconds, reference->noise);
+           description, reference->spp,
+           reference->cached ? "cached, rendered in" : "rendered in", reference->seconds,
+           reference->noise);
 }
 
 /* One run: render, write the panel if asked (and every pixel has a sample), exit if
@@ -744,9 +774,12 @@ TableRow experiment_path_row(const Options *options, const Scene *scene, Estimat
 #if CHAPTER >= 7
 PathSettings experiment_final_estimator(const Options *options, const MirrorPlanes *mirrors)
 {
-    PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays,
-                         .fresnel = options->fresnel, .mirror_light = options->depth,
-                         .mirrors = mirrors, .sphere_guide = SPHERE_GUIDE_STRENGTH};
+    PathSettings path = {.max_depth = options->depth,
+                         .shadow_rays = options->shadow_rays,
+                         .fresnel = options->fresnel,
+                         .mirror_light = options->depth,
+                         .mirrors = mirrors,
+                         .sphere_guide = SPHERE_GUIDE_STRENGTH};
     if (cli_given(options, FLAG_RR))
         path.rr_survival = options->rr;
     else
@@ -769,9 +802,10 @@ void experiment_render_ppm(const Options *options, const char *name, const Scene
     experiment_exit_if_interrupted(&result->render, NULL);
 }
 
-BiasVariance experiment_seeds(const Options *options, const Scene *scene, const PathSettings *path,
-                              const PpmSettings *ppm, int spp, int seeds,
-                              const Reference references[2], const unsigned char *left_out)
+BiasVariance experiment_seeds(const Options *options, const Scene *scene,
+                              const PathSettings *path, const PpmSettings *ppm, int spp,
+                              int seeds, const Reference references[2],
+                              const unsigned char *left_out)
 {
     const Image *reference = &references[0].image;
     SeedImages images;
@@ -832,8 +866,8 @@ void experiment_caption(const TableRow *row, const char *title, char *caption, s
     if (isnan(row->rmse))
         snprintf(caption, size, "%s\n%s\n%.2f s", title, row->settings, row->seconds);
     else
-        snprintf(caption, size, "%s\n%s\n%.2f s, RMSE %.4f", title, row->settings,
-                 row->seconds, row->rmse);
+        snprintf(caption, size, "%s\n%s\n%.2f s, RMSE %.4f", title, row->settings, row->seconds,
+                 row->rmse);
 }
 
 void experiment_write_panels(const Options *options, const char *name, const Image *images,

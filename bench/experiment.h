@@ -27,7 +27,10 @@
 #include "ppm.h"
 #endif
 
-typedef enum { NEEDS_POINT_LIGHT, NEEDS_AREA_LIGHT } LightNeed;
+typedef enum {
+    NEEDS_POINT_LIGHT,
+    NEEDS_AREA_LIGHT
+} LightNeed;
 
 /* Every chapter program's first lines: parse the command line (cli_parse), check that
  * --out can be written (before any time is spent rendering), then read options->scene
@@ -83,8 +86,8 @@ void experiment_write_figure(const Options *options, const char *name, const Ima
  * top-left pixel is (left, top), moved inside each image if it pokes out, enlarged
  * `scale` times (image_crop). */
 void experiment_write_crops(const Options *options, const char *name, const Image *images,
-                            const char *const *captions, int count, int left, int top,
-                            int side, int scale);
+                            const char *const *captions, int count, int left, int top, int side,
+                            int scale);
 
 /* Print the table and write it as NAME.csv. */
 void experiment_write_table(const Options *options, const char *name, const TableRow *rows,
@@ -100,7 +103,8 @@ TableRow experiment_row(const char *panel, const char *settings, const RenderRes
 /* Write a render's panel as NAME.png and NAME.pfm, unless an interruption stopped it
  * before every pixel had a sample (the rows not reached would be black); then, if it was
  * interrupted, say what was saved and exit with status 130. */
-void experiment_write_panel(const Options *options, const char *name, const RenderResult *result);
+void experiment_write_panel(const Options *options, const char *name,
+                            const RenderResult *result);
 
 /* After a render was interrupted (SIGINT): say what was saved and exit with status 130.
  * `saved` names what was written of it, or is NULL when nothing was. */
@@ -183,9 +187,10 @@ void experiment_render_ppm(const Options *options, const char *name, const Scene
  * pixels marked in left_out: chapter 7's final estimator `path` at `spp` samples per
  * pixel on stratified sub-pixels and pairs (ppm NULL), or the photon map `ppm`, its
  * passes continuing one another's samples. */
-BiasVariance experiment_seeds(const Options *options, const Scene *scene, const PathSettings *path,
-                              const PpmSettings *ppm, int spp, int seeds,
-                              const Reference references[2], const unsigned char *left_out);
+BiasVariance experiment_seeds(const Options *options, const Scene *scene,
+                              const PathSettings *path, const PpmSettings *ppm, int spp,
+                              int seeds, const Reference references[2],
+                              const unsigned char *left_out);
 
 /* Print the table of settings and their errors (bias_variance.h) and write it as NAME.csv. */
 void experiment_write_error_table(const Options *options, const char *name,

@@ -14,7 +14,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { MIN_SIZE = 8, NOMINAL_MIN = 12, NOMINAL_MAX = 24 };
+enum {
+    MIN_SIZE = 8,
+    NOMINAL_MIN = 12,
+    NOMINAL_MAX = 24
+};
 
 /* Linear radiance of the caption band and of its text: sRGB codes 40 and 241. */
 static const Vec3 BACKGROUND = {0.0212, 0.0212, 0.0212}, TEXT = {0.88, 0.88, 0.88};

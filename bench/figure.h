@@ -1,4 +1,5 @@
-/* figure.h (bench, chapter 1): the side-by-side comparison figure, laid out like the report's figures.
+/* figure.h (bench, chapter 1): the side-by-side comparison figure, laid out like the report's
+ * figures.
  *
  * Introduced in chapter 1. Panels of equal size stand in one row with a gap between
  * them; under each, its caption (the panel's settings, possibly several lines

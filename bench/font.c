@@ -21,7 +21,8 @@ static int fail(char *error, int error_size, const char *path, const char *why)
 {
     snprintf(error, (size_t)error_size,
              "cannot read the font %s: %s (the figures' font comes with Debian's %s: "
-             "sudo apt-get install %s)", path, why, FONT_PACKAGE, FONT_PACKAGE);
+             "sudo apt-get install %s)",
+             path, why, FONT_PACKAGE, FONT_PACKAGE);
     return -1;
 }
 
@@ -58,8 +59,9 @@ int font_load(Font *font, const char *path, char *error, int error_size)
     /* stb_truetype trusts its input: accept only files that start like a TrueType
      * (version 1.0 or "true") or OpenType ("OTTO") font. */
     int offset = stbtt_GetFontOffsetForIndex(data, 0);
-    if (size < 12 || (memcmp(data, "\0\1\0\0", 4) != 0 && memcmp(data, "true", 4) != 0 &&
-                      memcmp(data, "OTTO", 4) != 0) ||
+    if (size < 12 ||
+        (memcmp(data, "\0\1\0\0", 4) != 0 && memcmp(data, "true", 4) != 0 &&
+         memcmp(data, "OTTO", 4) != 0) ||
         offset < 0 || !stbtt_InitFont(&font->info, data, offset)) {
         free(data);
         memset(font, 0, sizeof *font);
@@ -100,8 +102,11 @@ static long next_code_point(const unsigned char *text, size_t length, size_t *us
 {
     static const long smallest[5] = {0, 0, 0x80, 0x800, 0x10000};
     unsigned char lead = text[0];
-    size_t n = lead < 0x80 ? 1 : (lead & 0xE0) == 0xC0 ? 2 : (lead & 0xF0) == 0xE0 ? 3
-             : (lead & 0xF8) == 0xF0 ? 4 : 0;
+    size_t n = lead < 0x80             ? 1
+               : (lead & 0xE0) == 0xC0 ? 2
+               : (lead & 0xF0) == 0xE0 ? 3
+               : (lead & 0xF8) == 0xF0 ? 4
+                                       : 0;
     *used = 1;
     if (n == 0 || n > length)
         return -1;

@@ -33,7 +33,14 @@ typedef struct {
     int error_size;
 } Writer;
 
-typedef enum { FILE_FIGURE, FILE_PLOT, FILE_TABLE, FILE_TEXT, FILE_EXERCISE, FILE_OTHER } FileKind;
+typedef enum {
+    FILE_FIGURE,
+    FILE_PLOT,
+    FILE_TABLE,
+    FILE_TEXT,
+    FILE_EXERCISE,
+    FILE_OTHER
+} FileKind;
 
 static int fail(Writer *w, const char *what, const char *name)
 {
@@ -236,12 +243,23 @@ static void html(FILE *out, const char *text, size_t length)
 {
     for (size_t i = 0; i < length; i++) {
         switch (text[i]) {
-        case '&': fputs("&amp;", out); break;
-        case '<': fputs("&lt;", out); break;
-        case '>': fputs("&gt;", out); break;
-        case '"': fputs("&quot;", out); break;
-        case '\'': fputs("&#39;", out); break;
-        default: fputc(text[i], out);
+        case '&':
+            fputs("&amp;", out);
+            break;
+        case '<':
+            fputs("&lt;", out);
+            break;
+        case '>':
+            fputs("&gt;", out);
+            break;
+        case '"':
+            fputs("&quot;", out);
+            break;
+        case '\'':
+            fputs("&#39;", out);
+            break;
+        default:
+            fputc(text[i], out);
         }
     }
 }
@@ -270,7 +288,8 @@ static void link_to(FILE *out, const char *name)
 }
 
 /* value of "key=value" lines into `value` (of `size`), when `line` has that key. */
-static void run_value(const char *line, size_t length, const char *key, char *value, size_t size)
+static void run_value(const char *line, size_t length, const char *key, char *value,
+                      size_t size)
 {
     size_t key_length = strlen(key);
     if (length > key_length && strncmp(line, key, key_length) == 0 && line[key_length] == '=')
@@ -334,8 +353,9 @@ static void write_missing_figures(const Writer *w, const GalleryChapter *chapter
         char file[128];
         snprintf(file, sizeof file, "%.*s.png", (int)length, name);
         if (length > 0 && !has_file(w, file))
-            fprintf(w->out, "<p class=\"missing\"><strong>Not rendered:</strong> %s. "
-                            "<code>make chapter%d</code> renders it.</p>\n",
+            fprintf(w->out,
+                    "<p class=\"missing\"><strong>Not rendered:</strong> %s. "
+                    "<code>make chapter%d</code> renders it.</p>\n",
                     file, chapter->number);
         name += length;
         name += strspn(name, " ");
@@ -367,7 +387,8 @@ static void write_header(Writer *w)
     if (w->run.quick)
         fputs("<p class=\"quick\"><strong>QUICK figures</strong> (<code>make figures "
               "QUICK=1</code>): a quarter of each image's size, and more runs of each measured "
-              "setting, for a first look. They are not the report's settings; <code>make figures</code> "
+              "setting, for a first look. They are not the report's settings; <code>make "
+              "figures</code> "
               "renders those.</p>\n",
               out);
     fprintf(out, "<p>Page made %s.", made);
@@ -409,7 +430,8 @@ static void write_header(Writer *w)
         const GalleryChapter *chapter = &page->chapters[i];
         char prefix[16];
         chapter_prefix(prefix, chapter->number);
-        fprintf(out, "<li value=\"%d\"><a href=\"#chapter%d\">", chapter->number, chapter->number);
+        fprintf(out, "<li value=\"%d\"><a href=\"#chapter%d\">", chapter->number,
+                chapter->number);
         html_text(out, chapter->title);
         fprintf(out, "</a>%s</li>\n",
                 chapter_file_count(w, prefix) ? "" : " <em>(not rendered yet)</em>");
@@ -736,10 +758,10 @@ static int write_diff(Writer *w, int number)
             number, number, lines, added, removed);
     for (const char *line = text; *line;) {
         size_t length = strcspn(line, "\n");
-        const char *class = line[0] == '@' && line[1] == '@' ? "hunk"
+        const char *class = line[0] == '@' && line[1] == '@'                 ? "hunk"
                             : line[0] == '+' && strncmp(line, "+++", 3) != 0 ? "add"
                             : line[0] == '-' && strncmp(line, "---", 3) != 0 ? "del"
-                                                                              : NULL;
+                                                                             : NULL;
         if (class)
             fprintf(w->out, "<span class=\"%s\">", class);
         html(w->out, line, length);
@@ -759,8 +781,10 @@ static int write_chapter(Writer *w, const GalleryChapter *chapter)
     chapter_prefix(prefix, chapter->number);
     int n = chapter->number;
     char exercises[128];
-    snprintf(exercises, sizeof exercises, "Exercises: the solution's verdicts and pictures "
-             "(make check-exercise-chapter%d)", n);
+    snprintf(exercises, sizeof exercises,
+             "Exercises: the solution's verdicts and pictures "
+             "(make check-exercise-chapter%d)",
+             n);
     fprintf(out, "<section id=\"chapter%d\">\n<h2>Chapter %d: ", n, n);
     html_text(out, chapter->title);
     fputs("</h2>\n<p>", out);

@@ -1,4 +1,5 @@
-/* gallery.h (bench, chapter 1): one static HTML page with every chapter's figures, tables and plots.
+/* gallery.h (bench, chapter 1): one static HTML page with every chapter's figures, tables and
+ * plots.
  *
  * Introduced in chapter 1. Concept-free, like table.h: it renders nothing, it shows what
  * the chapter programs wrote into a figures folder, so that a class can see every figure
@@ -54,7 +55,7 @@ typedef struct {
     const char *diffs;   /* the folder with diff-chapterN.txt or .diff; NULL: none */
     const GalleryChapter *chapters;
     int chapter_count;
-    time_t made; /* when the page is made, as shown in its header */
+    time_t made;     /* when the page is made, as shown in its header */
     const char *lab; /* the lab's page, relative to the figures folder; NULL: no links to it.
                         A figure with settings in the lab links to it with them, and with
                         the width of its chapter's panels (size=W, from their PFMs) */

@@ -1,4 +1,5 @@
-/* gallery_main.c (bench, chapter 1): the program that writes the page of every figure, build/figures/index.html (gallery.h).
+/* gallery_main.c (bench, chapter 1): the program that writes the page of every figure,
+ * build/figures/index.html (gallery.h).
  *
  * Not a chapter: it renders nothing. It writes one static HTML page from the files the
  * chapter programs left in the figures folder, with what each chapter teaches and which
@@ -20,8 +21,7 @@ static const GalleryChapter CHAPTERS[] = {
      "single shadow ray asks whether the point light is visible; mirrors and glass send the "
      "ray on, reflected or refracted, recursively. Nothing is random, so there is no noise, "
      "but the shadows are hard and no light travels from one wall to another.",
-     "the report's Figure 1 (the room by Whitted ray tracing)", NULL,
-     "ch01_figure1",
+     "the report's Figure 1 (the room by Whitted ray tracing)", NULL, "ch01_figure1",
      "ch01_figure1 chapter=1"},
     {2, "Monte Carlo integration of diffuse light",
      "A diffuse surface now reflects light arriving from every direction: each bounce picks "
@@ -31,8 +31,7 @@ static const GalleryChapter CHAPTERS[] = {
      "placed in sub-pixels are compared with samples placed at random.",
      "the report's Figure 2 (the room by Monte Carlo ray tracing) and Figure 8 (1 against "
      "4 samples per pixel)",
-     NULL,
-     "ch02_figure2 ch02_figure8 ch02_subpixels_vs_random",
+     NULL, "ch02_figure2 ch02_figure8 ch02_subpixels_vs_random",
      "ch02_figure2 chapter=2&spp=64 ch02_figure8 chapter=2&spp=1&b.spp=4 "
      "ch02_subpixels_vs_random chapter=2&spp=4&b.sampling=random"},
     {3, "Shadow rays",
@@ -40,8 +39,7 @@ static const GalleryChapter CHAPTERS[] = {
      "sends M shadow rays to random points on the area light and adds what they see "
      "(the report's eq. 21). The tables measure what each extra shadow ray costs in time and "
      "what it buys in error; a sweep over M shows where more rays stop paying.",
-     "the report's Figure 11 (1 against 30 shadow rays)", NULL,
-     "ch03_figure11 ch03_figure8",
+     "the report's Figure 11 (1 against 30 shadow rays)", NULL, "ch03_figure11 ch03_figure8",
      "ch03_figure11 chapter=3&M=1&spp=4&b.M=30 ch03_figure8 chapter=3&spp=1&b.spp=4"},
     {4, "Fresnel glass and ray depth",
      "Glass bends light by Snell's law, reflects all of it beyond the critical angle, and "
@@ -50,10 +48,10 @@ static const GalleryChapter CHAPTERS[] = {
      "3 against depth 8 shows the light lost inside the glass sphere.",
      "the report's Figure 9 (ray depth 3 against 8), and Schlick against exact Fresnel: both "
      "curves over the angle, and their time and error in the room",
-     "ch04_fresnel_curve",
-     "ch04_figure9 ch04_figure9_crop ch04_fresnel_curve",
+     "ch04_fresnel_curve", "ch04_figure9 ch04_figure9_crop ch04_fresnel_curve",
      "ch04_figure9 chapter=4&depth=3&b.depth=8 ch04_figure9_crop chapter=4&depth=3&b.depth=8 "
-     "ch04_fresnel_curve chapter=4&fresnel=schlick&b.fresnel=exact&reference=exact&fairness=time"},
+     "ch04_fresnel_curve "
+     "chapter=4&fresnel=schlick&b.fresnel=exact&reference=exact&fairness=time"},
     {5, "The Oren-Nayar reflector",
      "A rough surface is modelled as many tiny Lambertian facets whose slopes spread by a "
      "roughness sigma (the report's eqs. 13-14, corrected). Lit from "
@@ -68,8 +66,7 @@ static const GalleryChapter CHAPTERS[] = {
      "unbiased. A small alpha is fast but noisy, and below the squared reflectance of the "
      "brightest wall the variance is infinite; the sweep shows which alpha gives the most "
      "accuracy per second.",
-     "the report's Figure 12 (alpha = 0.01 against 0.5)", NULL,
-     "ch06_figure12",
+     "the report's Figure 12 (alpha = 0.01 against 0.5)", NULL, "ch06_figure12",
      "ch06_figure12 chapter=6&rr=0.01&b.rr=0.5"},
     {7, "The final image and the benchmarks",
      "Everything together: sub-pixel sampling, shadow rays, Fresnel glass and Russian "
@@ -79,21 +76,21 @@ static const GalleryChapter CHAPTERS[] = {
      "The report's six benchmark settings are timed again on this machine, each with its "
      "error. A log-log plot shows each estimator's error falling with time, against a "
      "slope of -1/2.",
-     "the report's Figure 7 (the final image) and Table 1 (the benchmarks)",
-     "ch07_convergence",
+     "the report's Figure 7 (the final image) and Table 1 (the benchmarks)", "ch07_convergence",
      "ch07_figure7_captioned ch07_convergence",
      "ch07_figure7_captioned chapter=7 "
      "ch07_convergence chapter=6&M=1&rr=0.25&spp=64&b.M=30&fairness=time"},
     {8, "Photon-mapped caustics",
      "Light focused by the glass sphere onto the floor (a caustic) is found by a path tracer "
      "only by chance, as bright speckles. Photons are traced from the light instead, those "
-     "that land on a diffuse surface after glass are stored in a hashed grid, and the caustic is "
+     "that land on a diffuse surface after glass are stored in a hashed grid, and the caustic "
+     "is "
      "estimated from their density around each point seen.",
      "beyond the report (its section 5 names photon mapping as future work): the room "
      "without speckles, at equal time against chapter 7",
-     NULL,
-     "ch08_equal_time ch08_caustic_crop ch08_error_plot",
-     "ch08_equal_time chapter=7&b.chapter=8&fairness=time ch08_caustic_crop chapter=7&b.chapter=8&fairness=time "
+     NULL, "ch08_equal_time ch08_caustic_crop ch08_error_plot",
+     "ch08_equal_time chapter=7&b.chapter=8&fairness=time ch08_caustic_crop "
+     "chapter=7&b.chapter=8&fairness=time "
      "ch08_error_plot chapter=7&b.chapter=8&fairness=time"},
     {9, "Fast",
      "The same images, faster: how many rays a second one core traces when every ray tests "
@@ -134,8 +131,8 @@ int main(int argc, char **argv)
             return 0;
         }
         if (!value || i + 1 == argc) {
-            fprintf(stderr, "gallery: %s '%s'\n", value ? "a folder must follow" : "unknown option",
-                    argv[i]);
+            fprintf(stderr, "gallery: %s '%s'\n",
+                    value ? "a folder must follow" : "unknown option", argv[i]);
             usage(stderr);
             return 2;
         }
@@ -157,8 +154,13 @@ int main(int argc, char **argv)
             *p = '/';
         }
     }
-    GalleryPage page = {"Monte Carlo ray tracer: every figure", out, diffs ? diffs : out,
-                        CHAPTERS, (int)(sizeof CHAPTERS / sizeof CHAPTERS[0]), time(NULL), lab};
+    GalleryPage page = {"Monte Carlo ray tracer: every figure",
+                        out,
+                        diffs ? diffs : out,
+                        CHAPTERS,
+                        (int)(sizeof CHAPTERS / sizeof CHAPTERS[0]),
+                        time(NULL),
+                        lab};
     char error[4400];
     if (gallery_write(&page, error, sizeof error) != 0) {
         fprintf(stderr, "gallery: %s\n", error);

@@ -1,5 +1,5 @@
-/* image.c (bench, chapter 1): the linear RGB framebuffer, its tone map, and its PNG and PFM files
- * (chapter 1). See image.h.
+/* image.c (bench, chapter 1): the linear RGB framebuffer, its tone map, and its PNG and PFM
+ * files (chapter 1). See image.h.
  *
  * The report shows its results (section 4) as 8-bit pictures but does not say how
  * radiance becomes a pixel; the tone map here is the usual one: exposure, clamp, the
@@ -97,8 +97,8 @@ int image_write_rgb8_png(const uint8_t *rgb, int width, int height, const char *
     if (atomic_open(&out, path) != 0)
         return -1;
     errno = 0;
-    int encoded = stbi_write_png_to_func(write_to_file, out.file, width, height, 3, rgb,
-                                         3 * width);
+    int encoded =
+        stbi_write_png_to_func(write_to_file, out.file, width, height, 3, rgb, 3 * width);
     if (!encoded && errno == 0)
         errno = ENOMEM; /* the encoder fails only when it runs out of memory */
     return atomic_close(&out, !encoded);
@@ -236,9 +236,11 @@ static int read_pfm(FILE *file, const char *path, Image *image, char *error, int
     if (ferror(file))
         return read_failure(error, size, path, "cannot read: %s", strerror(errno));
     if (strcmp(magic, "Pf") == 0)
-        return read_failure(error, size, path, "grey-scale PFM ('Pf'); only RGB ('PF') is read");
+        return read_failure(error, size, path,
+                            "grey-scale PFM ('Pf'); only RGB ('PF') is read");
     if (strcmp(magic, "PF") != 0)
-        return read_failure(error, size, path, "not an RGB PFM file (it does not start with 'PF')");
+        return read_failure(error, size, path,
+                            "not an RGB PFM file (it does not start with 'PF')");
     read_field(file, width_field, sizeof width_field);
     read_field(file, height_field, sizeof height_field);
     read_field(file, scale_field, sizeof scale_field);
@@ -252,16 +254,17 @@ static int read_pfm(FILE *file, const char *path, Image *image, char *error, int
     char *end;
     double scale = strtod(scale_field, &end);
     if (end == scale_field || *end != '\0' || !isfinite(scale) || scale == 0.0)
-        return read_failure(error, size, path,
-                            "the scale is not a finite non-zero number (its sign gives the byte order)");
+        return read_failure(
+            error, size, path,
+            "the scale is not a finite non-zero number (its sign gives the byte order)");
     int big_endian = scale > 0.0;
 
     size_t row_bytes = 12 * (size_t)width;
     long expected = (long)row_bytes * height, found = bytes_remaining(file);
     if (found >= 0 && found != expected)
         return read_failure(error, size, path,
-                            "%d x %d pixels need %ld bytes of data, the file has %ld",
-                            width, height, expected, found);
+                            "%d x %d pixels need %ld bytes of data, the file has %ld", width,
+                            height, expected, found);
     *image = image_new(width, height);
     unsigned char *row_data = malloc(row_bytes);
     if (!image->pixels || !row_data) {
@@ -273,19 +276,20 @@ static int read_pfm(FILE *file, const char *path, Image *image, char *error, int
     for (int row = height - 1; row >= 0 && status == 0; row--) {
         size_t got = fread(row_data, 1, row_bytes, file);
         if (got != row_bytes) {
-            status = ferror(file)
-                         ? read_failure(error, size, path, "cannot read: %s", strerror(errno))
-                         : read_failure(error, size, path,
-                                        "%d x %d pixels need %ld bytes of data, the file ends early",
-                                        width, height, expected);
+            status =
+                ferror(file)
+                    ? read_failure(error, size, path, "cannot read: %s", strerror(errno))
+                    : read_failure(error, size, path,
+                                   "%d x %d pixels need %ld bytes of data, the file ends early",
+                                   width, height, expected);
             break;
         }
         float *out = image->pixels + 3 * (long)row * width;
         for (int i = 0; i < 3 * width && status == 0; i++) {
             out[i] = float_from_bytes(row_data + 4 * i, big_endian);
             if (!isfinite(out[i]))
-                status = read_failure(error, size, path, "pixel (%d, %d) is not finite",
-                                      i / 3, row);
+                status =
+                    read_failure(error, size, path, "pixel (%d, %d) is not finite", i / 3, row);
         }
     }
     if (status == 0 && fgetc(file) != EOF)

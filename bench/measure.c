@@ -1,6 +1,6 @@
-/* measure.c (bench, chapter 2): error metrics (corrected for the reference's noise), summaries of
- * several runs, and the reference cache (the infinite-variance mark: chapter 6).
- * See measure.h. */
+/* measure.c (bench, chapter 2): error metrics (corrected for the reference's noise), summaries
+ * of several runs, and the reference cache (the infinite-variance mark: chapter 6). See
+ * measure.h. */
 #include "measure.h"
 
 #include <errno.h>
@@ -119,7 +119,8 @@ double measure_changed_fraction(const Image *a, const Image *b)
 {
     long pixels = (long)a->width * a->height, changed = 0;
     for (long i = 0; i < pixels; i++)
-        changed += a->pixels[3 * i] != b->pixels[3 * i] || a->pixels[3 * i + 1] != b->pixels[3 * i + 1] ||
+        changed += a->pixels[3 * i] != b->pixels[3 * i] ||
+                   a->pixels[3 * i + 1] != b->pixels[3 * i + 1] ||
                    a->pixels[3 * i + 2] != b->pixels[3 * i + 2];
     return (double)changed / pixels;
 }
@@ -213,8 +214,8 @@ int measure_combine_runs(const TableRow *runs, int count, TableRow *combined)
     combined->rel_mse_spread = count > 1 ? rel_mse.std_dev : NAN;
     combined->reference_share = mean_of(runs, count, offsetof(TableRow, reference_share));
     combined->seconds = mean_of(runs, count, offsetof(TableRow, seconds));
-    combined->efficiency = combined->rel_mse > 0.0
-                               ? 1.0 / (combined->rel_mse * combined->seconds) : NAN;
+    combined->efficiency =
+        combined->rel_mse > 0.0 ? 1.0 / (combined->rel_mse * combined->seconds) : NAN;
     combined->nonfinite = 0;
     for (int i = 0; i < count; i++)
         combined->nonfinite += runs[i].nonfinite;
@@ -246,8 +247,8 @@ int measure_summarise_runs(const double *values, int count, RunSummary *summary)
     summary->mean = mean;
     summary->std_dev = count > 1 ? sqrt(m2 / (count - 1)) : 0.0;
     summary->std_error = summary->std_dev / sqrt((double)count);
-    summary->median = count % 2 ? sorted[count / 2]
-                                : 0.5 * (sorted[count / 2 - 1] + sorted[count / 2]);
+    summary->median =
+        count % 2 ? sorted[count / 2] : 0.5 * (sorted[count / 2 - 1] + sorted[count / 2]);
     summary->min = sorted[0];
     summary->max = sorted[count - 1];
     free(sorted);
@@ -292,9 +293,10 @@ static int read_whole_file(const char *path, size_t limit, char **bytes, size_t 
     if (fd < 0)
         return -1;
     struct stat status;
-    int reason = fstat(fd, &status) != 0 ? errno
-                 : !S_ISREG(status.st_mode) ? EINVAL
-                 : (uintmax_t)status.st_size > limit ? EFBIG : 0;
+    int reason = fstat(fd, &status) != 0             ? errno
+                 : !S_ISREG(status.st_mode)          ? EINVAL
+                 : (uintmax_t)status.st_size > limit ? EFBIG
+                                                     : 0;
     size_t size = reason ? 0 : (size_t)status.st_size;
     char *buffer = reason ? NULL : malloc(size + 1);
     if (!reason && !buffer)
@@ -358,10 +360,9 @@ static int description_text(const Description *d, char *text, size_t size)
                      "spp %.17g\nseconds %.17g\nmean %.17g\nmean_std_error %.17g\n"
                      "image %zu bytes, fnv-1a %016llx\nstderr %zu bytes, fnv-1a %016llx\n",
                      (unsigned long long)d->identity.key,
-                     (unsigned long long)d->identity.scene_hash, d->identity.settings,
-                     d->width, d->height, d->spp, d->seconds, d->mean, d->mean_std_error,
-                     d->image_length, d->image_checksum, d->std_error_length,
-                     d->std_error_checksum);
+                     (unsigned long long)d->identity.scene_hash, d->identity.settings, d->width,
+                     d->height, d->spp, d->seconds, d->mean, d->mean_std_error, d->image_length,
+                     d->image_checksum, d->std_error_length, d->std_error_checksum);
     return n >= 0 && (size_t)n < size ? n : -1;
 }
 
@@ -379,22 +380,22 @@ static int read_description(const char *text, size_t length, Description *d, cha
     if (length < CHECKSUM_LINE_LENGTH ||
         (checksum_line(text, length - CHECKSUM_LINE_LENGTH, line),
          memcmp(line, text + length - CHECKSUM_LINE_LENGTH, CHECKSUM_LINE_LENGTH) != 0)) {
-        snprintf(why, why_size, "its description does not match its checksum: damaged, cut "
-                                "short, or of an older version");
+        snprintf(why, why_size,
+                 "its description does not match its checksum: damaged, cut "
+                 "short, or of an older version");
         return -1;
     }
     unsigned long long key, scene;
     int used = 0;
     *d = (Description){0};
-    int fields = sscanf(text,
-                        DESCRIPTION_HEADER
-                        "key %16llx scene %16llx settings %319[^\n] width %d height %d "
-                        "spp %lf seconds %lf mean %lf mean_std_error %lf "
-                        "image %zu bytes, fnv-1a %16llx stderr %zu bytes, fnv-1a %16llx %n",
-                        &key, &scene, d->identity.settings, &d->width, &d->height, &d->spp,
-                        &d->seconds, &d->mean, &d->mean_std_error, &d->image_length,
-                        &d->image_checksum, &d->std_error_length, &d->std_error_checksum,
-                        &used);
+    int fields = sscanf(
+        text,
+        DESCRIPTION_HEADER "key %16llx scene %16llx settings %319[^\n] width %d height %d "
+                           "spp %lf seconds %lf mean %lf mean_std_error %lf "
+                           "image %zu bytes, fnv-1a %16llx stderr %zu bytes, fnv-1a %16llx %n",
+        &key, &scene, d->identity.settings, &d->width, &d->height, &d->spp, &d->seconds,
+        &d->mean, &d->mean_std_error, &d->image_length, &d->image_checksum,
+        &d->std_error_length, &d->std_error_checksum, &used);
     if (fields != 13 || (size_t)used != length - CHECKSUM_LINE_LENGTH) {
         snprintf(why, why_size, "its description is not the one this program writes");
         return -1;
@@ -412,11 +413,14 @@ static int is_wanted(const Description *d, const ReferenceIdentity *wanted, char
         snprintf(why, why_size, "it is the entry of key %016llx, copied under this one",
                  (unsigned long long)d->identity.key);
     else if (d->identity.scene_hash != wanted->scene_hash)
-        snprintf(why, why_size, "it was rendered from other scene bytes (hash %016llx, not "
-                 "%016llx)", (unsigned long long)d->identity.scene_hash,
+        snprintf(why, why_size,
+                 "it was rendered from other scene bytes (hash %016llx, not "
+                 "%016llx)",
+                 (unsigned long long)d->identity.scene_hash,
                  (unsigned long long)wanted->scene_hash);
     else if (strcmp(d->identity.settings, wanted->settings) != 0)
-        snprintf(why, why_size, "it was rendered with other settings (%s)", d->identity.settings);
+        snprintf(why, why_size, "it was rendered with other settings (%s)",
+                 d->identity.settings);
     else
         return 1;
     return 0;
@@ -572,13 +576,22 @@ static int save_files(const EntryPaths *paths, const ReferenceIdentity *identity
 {
     if (remove(paths->description) != 0 && errno != ENOENT)
         return -1;
-    Description d = {*identity, reference->image.width, reference->image.height,
-                     reference->spp, reference->seconds, reference->mean,
-                     reference->mean_std_error, 0, 0, 0, 0};
+    Description d = {*identity,
+                     reference->image.width,
+                     reference->image.height,
+                     reference->spp,
+                     reference->seconds,
+                     reference->mean,
+                     reference->mean_std_error,
+                     0,
+                     0,
+                     0,
+                     0};
     uint64_t image_checksum, std_error_checksum;
     if (image_write_pfm(&reference->image, paths->image) != 0 ||
         image_write_pfm(&reference->std_error, paths->std_error) != 0 ||
-        file_fingerprint(paths->image, ENTRY_IMAGE_MAX, &d.image_length, &image_checksum) != 0 ||
+        file_fingerprint(paths->image, ENTRY_IMAGE_MAX, &d.image_length, &image_checksum) !=
+            0 ||
         file_fingerprint(paths->std_error, ENTRY_IMAGE_MAX, &d.std_error_length,
                          &std_error_checksum) != 0)
         return undo_save(paths);

@@ -1,5 +1,5 @@
-/* measure.h (bench, chapter 2): how far an image is from the truth, and the reference that stands for it
- * (docs/chapter2.md).
+/* measure.h (bench, chapter 2): how far an image is from the truth, and the reference that
+ * stands for it (docs/chapter2.md).
  *
  * Introduced in chapter 2. The truth is unknown, so each experiment renders a reference:
  * the same scene and quantity at many more samples, usually with a lower-variance
@@ -56,10 +56,10 @@
 typedef struct {
     Image image;
     Image std_error;
-    double noise;   /* RMS of std_error: the reference's own standard error */
+    double noise; /* RMS of std_error: the reference's own standard error */
     double spp;
-    double seconds; /* how long it took to render (when it was rendered) */
-    int cached;     /* read from the cache rather than rendered now */
+    double seconds;              /* how long it took to render (when it was rendered) */
+    int cached;                  /* read from the cache rather than rendered now */
     double mean, mean_std_error; /* the image's mean and its standard error, computed
                                     when it was rendered (measure_image_mean) */
 } Reference;
@@ -74,14 +74,14 @@ int measure_error(const Image *image, const Image *reference, double *rmse, doub
 
 /* The error of an image against a noisy reference, as derived above. */
 typedef struct {
-    double raw_mse;           /* sum (x - r)^2 / N */
-    double reference_mse;     /* sum se_r^2 / N: what the reference's noise adds to it */
-    double mse;               /* raw_mse - reference_mse: the image's own MSE, estimated */
-    double rmse;              /* sqrt(mse), or 0 when mse <= 0 */
-    double raw_rel_mse;       /* the same three, each term over (r^2 + 0.01) */
+    double raw_mse;       /* sum (x - r)^2 / N */
+    double reference_mse; /* sum se_r^2 / N: what the reference's noise adds to it */
+    double mse;           /* raw_mse - reference_mse: the image's own MSE, estimated */
+    double rmse;          /* sqrt(mse), or 0 when mse <= 0 */
+    double raw_rel_mse;   /* the same three, each term over (r^2 + 0.01) */
     double reference_rel_mse;
     double rel_mse;
-    double reference_share;   /* reference_mse / raw_mse (0 when both are 0) */
+    double reference_share; /* reference_mse / raw_mse (0 when both are 0) */
 } ErrorEstimate;
 
 /* The estimate of image's error against reference, whose per-pixel, per-channel
@@ -143,8 +143,8 @@ void measure_fill_row(TableRow *row, const Image *image, const Reference *refere
 typedef struct {
     int runs;
     double mean;
-    double std_dev;    /* sample standard deviation (n - 1 in the denominator) */
-    double std_error;  /* of the mean: std_dev / sqrt(runs) */
+    double std_dev;   /* sample standard deviation (n - 1 in the denominator) */
+    double std_error; /* of the mean: std_dev / sqrt(runs) */
     double median, min, max;
 } RunSummary;
 
@@ -203,7 +203,8 @@ typedef struct {
  * Fresnel mode ("schlick" or "exact"), seed and the roughness a chapter set
  * ("NAME=SIGMA", or "=0" for none), in the words the reference program is given. */
 void measure_reference_settings(ReferenceIdentity *identity, long width, long spp, long depth,
-                                const char *fresnel, unsigned long long seed, const char *sigma);
+                                const char *fresnel, unsigned long long seed,
+                                const char *sigma);
 
 /* Load the cached reference `wanted` from `directory`, both images width x height.
  * Returns 0; -1 when there is no entry (no description); -2 when the entry cannot be

@@ -137,8 +137,8 @@ static void tick_label(const Axis *axis, double v, char *text, size_t size)
         return;
     }
     int decimals = 0;
-    for (double scaled = axis->step; decimals < 9 && fabs(scaled - round(scaled)) > 1e-6 * scaled;
-         scaled *= 10.0)
+    for (double scaled = axis->step;
+         decimals < 9 && fabs(scaled - round(scaled)) > 1e-6 * scaled; scaled *= 10.0)
         decimals++;
     snprintf(text, size, "%.*f", decimals, fabs(v) < 1e-9 * axis->step ? 0.0 : v);
 }
@@ -159,9 +159,10 @@ static int labels_fit(const Axis *axis, const TickRoom *room)
     for (int i = 0; i < axis->tick_count; i++) {
         char text[32];
         tick_label(axis, axis->ticks[i], text, sizeof text);
-        double extent = room->vertical ? 1.3 * font_line_height(room->font, room->size)
-                                       : font_width(room->font, text, strlen(text), room->size) +
-                                             room->size;
+        double extent =
+            room->vertical
+                ? 1.3 * font_line_height(room->font, room->size)
+                : font_width(room->font, text, strlen(text), room->size) + room->size;
         if (i > 0) {
             double gap = room->pixels *
                          (fraction(axis, axis->ticks[i]) - fraction(axis, axis->ticks[i - 1]));
@@ -180,7 +181,8 @@ static int log_ticks(Axis *axis, int every_decades)
 {
     int total = 0;
     axis->minor_ticks = every_decades > 0;
-    int first = one_two_five_at_or_above(axis->low), last = one_two_five_at_or_below(axis->high);
+    int first = one_two_five_at_or_above(axis->low),
+        last = one_two_five_at_or_below(axis->high);
     for (int n = first; n <= last; n++) {
         int decade = n >= 0 ? n / 3 : -((2 - n) / 3);
         if (every_decades == 0 || (n - 3 * decade == 0 && decade % every_decades == 0)) {
@@ -357,9 +359,9 @@ static void marker(Image *image, Box clip, double x, double y, double r, double 
 /* Sizes of everything, from the text size. */
 typedef struct {
     const Font *font;
-    double size, line, ascent, pad;    /* text size, line pitch, ascent, padding (em / 2) */
-    double line_width, marker, tick;   /* pixels */
-    Box clip;                          /* where series may draw: the frame and a margin */
+    double size, line, ascent, pad;  /* text size, line pitch, ascent, padding (em / 2) */
+    double line_width, marker, tick; /* pixels */
+    Box clip;                        /* where series may draw: the frame and a margin */
 } Style;
 
 static double pixel_x(const Axis *axis, const PlotLayout *layout, double v)
@@ -374,7 +376,8 @@ static double pixel_y(const Axis *axis, const PlotLayout *layout, double v)
 
 static void draw_text(Image *image, const Style *style, const char *text, double x, double top)
 {
-    font_draw(image, style->font, text, strlen(text), x, top + style->ascent, style->size, BLACK);
+    font_draw(image, style->font, text, strlen(text), x, top + style->ascent, style->size,
+              BLACK);
 }
 
 static double text_width(const Style *style, const char *text)
@@ -383,8 +386,8 @@ static double text_width(const Style *style, const char *text)
 }
 
 /* Grid lines and tick marks (outside the frame), numbers, minor ticks on log decades. */
-static void draw_ticks(Image *image, const Style *style, const Axis *axis, const PlotLayout *layout,
-                       int vertical)
+static void draw_ticks(Image *image, const Style *style, const Axis *axis,
+                       const PlotLayout *layout, int vertical)
 {
     for (int i = 0; i < axis->tick_count; i++) {
         char text[32];
@@ -393,20 +396,26 @@ static void draw_ticks(Image *image, const Style *style, const Axis *axis, const
         if (vertical) {
             int y = (int)lround(pixel_y(axis, layout, axis->ticks[i]));
             fill(image, (Box){(int)layout->left + 1, y, (int)layout->right, y + 1}, GRID);
-            fill(image, (Box){(int)(layout->left - style->tick), y, (int)layout->left, y + 1}, BLACK);
-            draw_text(image, style, text, layout->left - style->tick - 0.3 * style->size - width,
+            fill(image, (Box){(int)(layout->left - style->tick), y, (int)layout->left, y + 1},
+                 BLACK);
+            draw_text(image, style, text,
+                      layout->left - style->tick - 0.3 * style->size - width,
                       y - 0.5 * style->line);
         } else {
             int x = (int)lround(pixel_x(axis, layout, axis->ticks[i]));
             fill(image, (Box){x, (int)layout->top, x + 1, (int)layout->bottom}, GRID);
-            fill(image, (Box){x, (int)layout->bottom + 1, x + 1,
-                              (int)(layout->bottom + 1 + style->tick)}, BLACK);
-            draw_text(image, style, text, x - 0.5 * width, layout->bottom + style->tick + 0.2 * style->pad);
+            fill(image,
+                 (Box){x, (int)layout->bottom + 1, x + 1,
+                       (int)(layout->bottom + 1 + style->tick)},
+                 BLACK);
+            draw_text(image, style, text, x - 0.5 * width,
+                      layout->bottom + style->tick + 0.2 * style->pad);
         }
     }
     if (!axis->minor_ticks)
         return;
-    for (double decade = pow(10.0, floor(log10(axis->low))); decade < axis->high; decade *= 10.0)
+    for (double decade = pow(10.0, floor(log10(axis->low))); decade < axis->high;
+         decade *= 10.0)
         for (int m = 2; m <= 9; m++) {
             double v = m * decade;
             if (v < axis->low || v > axis->high)
@@ -414,11 +423,13 @@ static void draw_ticks(Image *image, const Style *style, const Axis *axis, const
             double half = 0.5 * style->tick;
             if (vertical) {
                 int y = (int)lround(pixel_y(axis, layout, v));
-                fill(image, (Box){(int)(layout->left - half), y, (int)layout->left, y + 1}, BLACK);
+                fill(image, (Box){(int)(layout->left - half), y, (int)layout->left, y + 1},
+                     BLACK);
             } else {
                 int x = (int)lround(pixel_x(axis, layout, v));
-                fill(image, (Box){x, (int)layout->bottom + 1, x + 1,
-                                  (int)(layout->bottom + 1 + half)}, BLACK);
+                fill(image,
+                     (Box){x, (int)layout->bottom + 1, x + 1, (int)(layout->bottom + 1 + half)},
+                     BLACK);
             }
         }
 }
@@ -444,18 +455,23 @@ static void draw_series(Image *image, const Style *style, const Plot *plot,
     for (int i = 0; i < series->count; i++) {
         if (!point_shown(plot, series, i))
             continue;
-        double x = pixel_x(x_axis, layout, series->x[i]), y = pixel_y(y_axis, layout, series->y[i]);
+        double x = pixel_x(x_axis, layout, series->x[i]),
+               y = pixel_y(y_axis, layout, series->y[i]);
         if (series->y_low && series->y_high && isfinite(series->y_low[i]) &&
             isfinite(series->y_high[i])) {
             double low = series->y_low[i], high = series->y_high[i];
-            double y_low = drawable(y_axis->scale, low) ? pixel_y(y_axis, layout, low) : layout->bottom;
-            double y_high = drawable(y_axis->scale, high) ? pixel_y(y_axis, layout, high) : layout->bottom;
+            double y_low =
+                drawable(y_axis->scale, low) ? pixel_y(y_axis, layout, low) : layout->bottom;
+            double y_high =
+                drawable(y_axis->scale, high) ? pixel_y(y_axis, layout, high) : layout->bottom;
             y_low = fmax(layout->top, fmin(layout->bottom, y_low));
             y_high = fmax(layout->top, fmin(layout->bottom, y_high));
             double cap = style->marker, bar = style->line_width;
             stroke(image, style->clip, x, y_low, x, y_high, bar, series->colour, 0, 0.0);
-            stroke(image, style->clip, x - cap, y_low, x + cap, y_low, bar, series->colour, 0, 0.0);
-            stroke(image, style->clip, x - cap, y_high, x + cap, y_high, bar, series->colour, 0, 0.0);
+            stroke(image, style->clip, x - cap, y_low, x + cap, y_low, bar, series->colour, 0,
+                   0.0);
+            stroke(image, style->clip, x - cap, y_high, x + cap, y_high, bar, series->colour, 0,
+                   0.0);
         }
         if (drawn++ > 0) {
             stroke(image, style->clip, previous_x, previous_y, x, y, style->line_width,
@@ -557,7 +573,8 @@ static void draw_legend(Image *image, const Image *before, const Style *style, c
 static Style style_for(const Plot *plot, const Font *font, int width, int height)
 {
     Style style;
-    double size = plot->text_size > 0.0 ? plot->text_size : round(sqrt((double)width * height) / 32.0);
+    double size =
+        plot->text_size > 0.0 ? plot->text_size : round(sqrt((double)width * height) / 32.0);
     style.font = font;
     style.size = plot->text_size > 0.0 ? size : fmin(24.0, fmax(10.0, size));
     style.line = ceil(font_line_height(font, style.size));

@@ -1,4 +1,5 @@
-/* plot.h (bench, chapter 4): line plots with numbered axes, error bars and a legend, on linear or log axes.
+/* plot.h (bench, chapter 4): line plots with numbered axes, error bars and a legend, on linear
+ * or log axes.
  *
  * Introduced in chapter 4, for the Fresnel reflectance curves (linear axes); chapter 7
  * adds log axes for its convergence plot (error against time). A presentation file:
@@ -43,13 +44,16 @@
 #include "font.h"
 #include "image.h"
 
-typedef enum { PLOT_LINEAR, PLOT_LOG } PlotScale;
+typedef enum {
+    PLOT_LINEAR,
+    PLOT_LOG
+} PlotScale;
 
 typedef struct {
     const char *title; /* e.g. "time (s)"; NULL for none */
     PlotScale scale;
-    double low, high;  /* the range shown; low >= high (e.g. both 0): from the data */
-    double tick;       /* linear axes: spacing of the numbered ticks; 0: chosen */
+    double low, high; /* the range shown; low >= high (e.g. both 0): from the data */
+    double tick;      /* linear axes: spacing of the numbered ticks; 0: chosen */
 } PlotAxis;
 
 typedef struct {
@@ -57,10 +61,10 @@ typedef struct {
     const double *x, *y;          /* count points */
     const double *y_low, *y_high; /* point i's error bar, y_low[i] to y_high[i]; NULL: none */
     int count;
-    Vec3 colour;                  /* linear RGB in [0, 1] */
-    int markers;                  /* a dot at each point (else the line alone) */
+    Vec3 colour; /* linear RGB in [0, 1] */
+    int markers; /* a dot at each point (else the line alone) */
     int dashed;
-    int infinite_variance;        /* dashed, hollow markers, "(infinite variance)" */
+    int infinite_variance; /* dashed, hollow markers, "(infinite variance)" */
 } PlotSeries;
 
 typedef struct {
@@ -70,18 +74,20 @@ typedef struct {
     double text_size; /* pixels per em; 0: sqrt(width * height) / 32, within [10, 24] */
 } Plot;
 
-enum { PLOT_MAX_TICKS = 64 };
+enum {
+    PLOT_MAX_TICKS = 64
+};
 
 /* Where things were drawn, for a caption and for tests. Pixel coordinates are of
  * pixel centres (column, row; row 0 at the top). */
 typedef struct {
-    double x_low, x_high, y_low, y_high;  /* the ranges shown */
-    double left, right, top, bottom;      /* the frame: data area's edges */
+    double x_low, x_high, y_low, y_high;                     /* the ranges shown */
+    double left, right, top, bottom;                         /* the frame: data area's edges */
     double x_ticks[PLOT_MAX_TICKS], y_ticks[PLOT_MAX_TICKS]; /* numbered tick values */
     int x_tick_count, y_tick_count;
-    int legend[4];                        /* the legend's box: left, top, right, bottom
-                                             (exclusive); all 0 without a legend */
-    int left_out;                         /* points that could not be drawn */
+    int legend[4]; /* the legend's box: left, top, right, bottom
+                      (exclusive); all 0 without a legend */
+    int left_out;  /* points that could not be drawn */
 } PlotLayout;
 
 /* The plot on a width x height image (pixels NULL when memory runs out or a side is

@@ -78,9 +78,15 @@ int ppm_photon_map(PhotonMap *map, const Scene *scene, const PhotonMapSettings *
     pthread_t *ids = calloc((size_t)threads, sizeof *ids);
     int status = workers && ids ? 0 : -1;
     for (int i = 0; status == 0 && i < threads; i++)
-        workers[i] = (Worker){scene, settings, (int)((long)settings->emitted * i / threads),
-                              (int)((long)settings->emitted * (i + 1) / threads), NULL, 0, 0,
-                              {0, 0, 0}, 0};
+        workers[i] = (Worker){scene,
+                              settings,
+                              (int)((long)settings->emitted * i / threads),
+                              (int)((long)settings->emitted * (i + 1) / threads),
+                              NULL,
+                              0,
+                              0,
+                              {0, 0, 0},
+                              0};
     int started = 1;
     for (int i = 1; status == 0 && i < threads; i++) {
         if (pthread_create(&ids[i], NULL, shoot_thread, &workers[i]) != 0)
@@ -160,7 +166,8 @@ int ppm_budget_allows(const PpmSettings *s, int done, double cpu_used)
 {
     if (done >= s->passes)
         return 0;
-    return s->cpu_seconds <= 0.0 || done == 0 || cpu_used + 0.5 * cpu_used / done <= s->cpu_seconds;
+    return s->cpu_seconds <= 0.0 || done == 0 ||
+           cpu_used + 0.5 * cpu_used / done <= s->cpu_seconds;
 }
 
 int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettings *settings,
@@ -175,14 +182,17 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
      * independent pass images and its standard error. */
     PixelSum *passes = calloc((size_t)width * height, sizeof *passes);
     int status = r.render.image.pixels && r.render.std_error.pixels &&
-                 r.render.average_std_error.pixels && passes ? 0 : -1;
+                         r.render.average_std_error.pixels && passes
+                     ? 0
+                     : -1;
     int show = render->progress && isatty(STDERR_FILENO);
     double start = stats_now(), cpu_start = stats_cpu_now();
     long stored = 0;
     while (status == 0 && ppm_budget_allows(settings, r.passes, stats_cpu_now() - cpu_start)) {
         RenderResult pass;
         int pass_stored;
-        if (render_pass(scene, render, settings, r.passes + 1, &pass, &r.render.rays, &pass_stored) != 0) {
+        if (render_pass(scene, render, settings, r.passes + 1, &pass, &r.render.rays,
+                        &pass_stored) != 0) {
             status = -1;
             break;
         }
@@ -193,7 +203,8 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
         }
         for (int row = 0; row < height; row++)
             for (int col = 0; col < width; col++)
-                pixel_sum_add(&passes[(long)row * width + col], image_get(&pass.image, col, row));
+                pixel_sum_add(&passes[(long)row * width + col],
+                              image_get(&pass.image, col, row));
         r.passes++;
         stored += pass_stored;
         r.render.threads = pass.threads;
@@ -221,7 +232,4 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
     return status;
 }
 
-void ppm_result_free(PpmResult *result)
-{
-    render_result_free(&result->render);
-}
+void ppm_result_free(PpmResult *result) { render_result_free(&result->render); }

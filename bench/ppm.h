@@ -3,10 +3,11 @@
  *
  * Pass i shoots fresh photon maps (photon.h: the caustic map and the split one, of the
  * same photons) on the threads, renders the image with them (path_caustics.h) at radius
- * ppm_radius(r_1, alpha, i), and the result is the mean of the pass images. Each pass's photons and camera samples have their own seeds,
- * derived from the render's seed and the pass number, so the image is the same for any
- * thread count; the spread between the independent passes gives each pixel's standard
- * error. A budget of processor time can end the passes (docs/chapter8.md).
+ * ppm_radius(r_1, alpha, i), and the result is the mean of the pass images. Each pass's photons
+ * and camera samples have their own seeds, derived from the render's seed and the pass number,
+ * so the image is the same for any thread count; the spread between the independent passes
+ * gives each pixel's standard error. A budget of processor time can end the passes
+ * (docs/chapter8.md).
  */
 #ifndef PPM_H
 #define PPM_H
@@ -21,15 +22,15 @@
 #define PPM_FIRST_RADIUS_AT_800 0.0034
 
 typedef struct {
-    PathSettings path;    /* the path tracer's settings (its fresnel also for photons) */
-    int photons;          /* emitted per pass */
-    double radius;        /* r_1 */
-    double alpha;         /* of the radius schedule */
-    int spp;              /* camera samples per pixel per pass */
-    int passes;           /* passes to render */
-    double cpu_seconds;   /* > 0: a budget of processor time (stats_cpu_now): passes are
-                           * rendered while one more would end nearer the budget than
-                           * stopping (judged by the mean pass so far); at least one */
+    PathSettings path;  /* the path tracer's settings (its fresnel also for photons) */
+    int photons;        /* emitted per pass */
+    double radius;      /* r_1 */
+    double alpha;       /* of the radius schedule */
+    int spp;            /* camera samples per pixel per pass */
+    int passes;         /* passes to render */
+    double cpu_seconds; /* > 0: a budget of processor time (stats_cpu_now): passes are
+                         * rendered while one more would end nearer the budget than
+                         * stopping (judged by the mean pass so far); at least one */
 } PpmSettings;
 
 typedef struct {

@@ -110,22 +110,33 @@ static Request parse(int argc, char **argv)
         if (i + 1 >= argc)
             fail(2, "%s: missing value", flag);
         const char *value = argv[++i];
-        if (strcmp(flag, "--scene") == 0) r.scene = value;
-        else if (strcmp(flag, "--name") == 0) r.name = value;
-        else if (strcmp(flag, "--fresnel") == 0) r.fresnel = value;
-        else if (strcmp(flag, "--sigma") == 0) r.sigma = value;
-        else if (strcmp(flag, "--out") == 0) r.out = value;
-        else if (strcmp(flag, "--fallback") == 0) r.fallback = value;
+        if (strcmp(flag, "--scene") == 0)
+            r.scene = value;
+        else if (strcmp(flag, "--name") == 0)
+            r.name = value;
+        else if (strcmp(flag, "--fresnel") == 0)
+            r.fresnel = value;
+        else if (strcmp(flag, "--sigma") == 0)
+            r.sigma = value;
+        else if (strcmp(flag, "--out") == 0)
+            r.out = value;
+        else if (strcmp(flag, "--fallback") == 0)
+            r.fallback = value;
         else if (strcmp(flag, "--key") == 0) {
             r.key = unsigned_word(flag, value, 16);
             r.has_key = 1;
-        }
-        else if (strcmp(flag, "--size") == 0) r.size = whole_number(flag, value, 1, 16384);
-        else if (strcmp(flag, "--reference-spp") == 0) r.spp = whole_number(flag, value, 1, 1 << 24);
-        else if (strcmp(flag, "--depth") == 0) r.depth = whole_number(flag, value, 1, 1000);
-        else if (strcmp(flag, "--seed") == 0) r.seed = unsigned_word(flag, value, 10);
-        else if (strcmp(flag, "--parent") == 0) r.parent = whole_number(flag, value, 1, 1L << 30);
-        else fail(2, "unknown option '%s' (this program is run by the chapter programs)", flag);
+        } else if (strcmp(flag, "--size") == 0)
+            r.size = whole_number(flag, value, 1, 16384);
+        else if (strcmp(flag, "--reference-spp") == 0)
+            r.spp = whole_number(flag, value, 1, 1 << 24);
+        else if (strcmp(flag, "--depth") == 0)
+            r.depth = whole_number(flag, value, 1, 1000);
+        else if (strcmp(flag, "--seed") == 0)
+            r.seed = unsigned_word(flag, value, 10);
+        else if (strcmp(flag, "--parent") == 0)
+            r.parent = whole_number(flag, value, 1, 1L << 30);
+        else
+            fail(2, "unknown option '%s' (this program is run by the chapter programs)", flag);
     }
     if (!r.scene || !r.out || !r.has_key || r.size == 0 || r.spp == 0 || r.depth == 0)
         fail(2, "%s", "needs --scene, --size, --reference-spp, --depth, --out and --key");
@@ -194,27 +205,38 @@ int main(int argc, char **argv)
     if (mirror_light_find_planes(&scene, &mirrors) != 0)
         fail(1, "%s", "out of memory");
 
-    PathSettings path = {.max_depth = (int)request.depth, .shadow_rays = 1,
+    PathSettings path = {.max_depth = (int)request.depth,
+                         .shadow_rays = 1,
                          .fresnel = strcmp(request.fresnel, "exact") == 0 ? FRESNEL_EXACT
-                                                                         : FRESNEL_SCHLICK,
-                         .rr_throughput = 1, .mirror_light = (int)request.depth,
-                         .mirrors = &mirrors, .sphere_guide = SPHERE_GUIDE_STRENGTH};
+                                                                          : FRESNEL_SCHLICK,
+                         .rr_throughput = 1,
+                         .mirror_light = (int)request.depth,
+                         .mirrors = &mirrors,
+                         .sphere_guide = SPHERE_GUIDE_STRENGTH};
     RenderSettings settings = {0};
     settings.image.width = (int)request.size;
     settings.image.height = (int)lround(request.size / scene_file_aspect(&scene.camera));
-    settings.image.spp = (int)((request.spp + REFERENCE_BATCHES - 1) / REFERENCE_BATCHES * REFERENCE_BATCHES);
+    settings.image.spp =
+        (int)((request.spp + REFERENCE_BATCHES - 1) / REFERENCE_BATCHES * REFERENCE_BATCHES);
     settings.image.sampling = PIXEL_SUBPIXELS;
     settings.image.seed = request.seed;
     settings.progress = !request.quiet;
     settings.label = "reference";
     render_install_interrupt();
     RenderResult result;
-    if (render_batches(&scene, &settings, REFERENCE_BATCHES, path_final_radiance, &path, &result) != 0)
+    if (render_batches(&scene, &settings, REFERENCE_BATCHES, path_final_radiance, &path,
+                       &result) != 0)
         fail(1, "%s", "out of memory");
     if (result.interrupted)
         fail(130, "%s", "interrupted; nothing was cached");
-    Reference reference = {result.image, result.std_error, measure_rms(&result.std_error),
-                           render_samples_per_pixel(&result), result.seconds, 0, 0.0, 0.0};
+    Reference reference = {result.image,
+                           result.std_error,
+                           measure_rms(&result.std_error),
+                           render_samples_per_pixel(&result),
+                           result.seconds,
+                           0,
+                           0.0,
+                           0.0};
     measure_image_mean(&result.image, &result.average_std_error, &reference.mean,
                        &reference.mean_std_error);
     image_free(&result.average_std_error);

@@ -21,8 +21,8 @@ int render_batches(const Scene *scene, const RenderSettings *settings, int batch
     batch.label = label;
     for (int b = 1; b <= batches && !r.interrupted; b++) {
         batch.image.seed = rng_hash(settings->image.seed ^ rng_hash((uint64_t)b));
-        snprintf(label, sizeof label, "%s, batch %d of %d", settings->label ? settings->label : "render",
-                 b, batches);
+        snprintf(label, sizeof label, "%s, batch %d of %d",
+                 settings->label ? settings->label : "render", b, batches);
         RenderResult one;
         if (render(scene, &batch, estimate, estimator_settings, &one) != 0) {
             free(sums);

@@ -21,9 +21,9 @@
  * x_1 .. x_B are independent draws of one distribution, so with xbar their average,
  *     Var(xbar) is estimated without bias by  sum_b (x_b - xbar)^2 / (B - 1) / B,
  * whatever the samples inside a batch are like: the same sums that render() keeps of a
- * pixel's samples (PixelSum, renderer.h), kept of the batches' means. B - 1 degrees of freedom make each
- * pixel's estimate rough (with B = 8, its relative spread is about sqrt(2 / 7) = 53%),
- * but sums over many pixels, all that measure.h takes from it, are sharp. More batches
+ * pixel's samples (PixelSum, renderer.h), kept of the batches' means. B - 1 degrees of freedom
+ * make each pixel's estimate rough (with B = 8, its relative spread is about sqrt(2 / 7) =
+ * 53%), but sums over many pixels, all that measure.h takes from it, are sharp. More batches
  * mean finer per-pixel estimates but coarser strata, so more noise per sample
  * (docs/chapter7.md gives the noise measured for 4 to 32 batches).
  */
@@ -35,10 +35,10 @@
 /* Render `batches` >= 2 independent images of settings->spp / batches samples each
  * (settings->spp must be a multiple of batches), with settings->sampling, and combine
  * them into result: image their mean; std_error and average_std_error (render.h) from
- * the spread of the batches' means as above (the progress line names the batch); seconds, rays, samples and non-finite
- * samples summed. Stops after the batch in which SIGINT arrived (result->interrupted;
- * its images are then not to be used). Returns 0, or -1 for a wrong batch count or when
- * memory runs out (nothing is then allocated). */
+ * the spread of the batches' means as above (the progress line names the batch); seconds, rays,
+ * samples and non-finite samples summed. Stops after the batch in which SIGINT arrived
+ * (result->interrupted; its images are then not to be used). Returns 0, or -1 for a wrong batch
+ * count or when memory runs out (nothing is then allocated). */
 int render_batches(const Scene *scene, const RenderSettings *settings, int batches,
                    Estimator estimate, const void *estimator_settings, RenderResult *result);
 

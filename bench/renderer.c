@@ -23,7 +23,7 @@ typedef struct {
     SampleOrder order; /* which sample each pass takes of each pixel */
     int first_sample, pass;
     atomic_int next_row;
-    atomic_long rows_done;   /* over all passes, for the progress display */
+    atomic_long rows_done; /* over all passes, for the progress display */
     double start_time;
 } Job;
 
@@ -126,10 +126,7 @@ void render_end_deferred(void)
         end_program(deferred_signal);
 }
 
-int render_interrupted(void)
-{
-    return interrupt_requested != 0;
-}
+int render_interrupted(void) { return interrupt_requested != 0; }
 
 int render_core_count(void)
 {
@@ -140,11 +137,12 @@ int render_core_count(void)
 static void show_progress(Job *job)
 {
     const RenderSettings *s = job->settings;
-    double fraction = (double)atomic_load(&job->rows_done) / ((double)s->image.spp * s->image.height);
+    double fraction =
+        (double)atomic_load(&job->rows_done) / ((double)s->image.spp * s->image.height);
     double elapsed = stats_now() - job->start_time;
     fprintf(stderr, "\r%s: %3.0f%%  sample %d/%d  %.1f s elapsed, about %.0f s left   ",
-            s->label ? s->label : "render", 100.0 * fraction, job->pass + 1, s->image.spp, elapsed,
-            fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0);
+            s->label ? s->label : "render", 100.0 * fraction, job->pass + 1, s->image.spp,
+            elapsed, fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0);
 }
 
 void pixel_sum_add(PixelSum *pixel, Vec3 radiance)
@@ -169,8 +167,9 @@ static void render_row(Worker *worker, int row)
     RayCounts rays = {0, 0, 0};
     uint64_t samples = 0, nonfinite = 0;
     for (int col = 0; col < image->width; col++) {
-        int sample = job->first_sample +
-                     sample_order_sample(&job->order, (uint64_t)row * image->width + col, job->pass);
+        int sample =
+            job->first_sample +
+            sample_order_sample(&job->order, (uint64_t)row * image->width + col, job->pass);
         Vec3 radiance = render_sample(job->scene, image, col, row, sample, job->estimate,
                                       job->estimator_settings, &rays);
         samples++;
@@ -238,7 +237,8 @@ int render_from(const Scene *scene, const RenderSettings *settings, int first_sa
     r.image = image_new(settings->image.width, settings->image.height);
     r.std_error = image_new(settings->image.width, settings->image.height);
     r.average_std_error = image_new(settings->image.width, settings->image.height);
-    PixelSum *pixels = calloc((size_t)settings->image.width * settings->image.height, sizeof *pixels);
+    PixelSum *pixels =
+        calloc((size_t)settings->image.width * settings->image.height, sizeof *pixels);
     Worker *workers = calloc((size_t)r.threads, sizeof *workers);
     pthread_t *threads = calloc((size_t)r.threads, sizeof *threads);
     if (!r.image.pixels || !r.std_error.pixels || !r.average_std_error.pixels || !pixels ||
@@ -250,9 +250,13 @@ int render_from(const Scene *scene, const RenderSettings *settings, int first_sa
         return -1;
     }
 
-    Job job = {.scene = scene, .settings = settings, .estimate = estimate,
-               .estimator_settings = estimator_settings, .pixels = pixels,
-               .order = sample_order_make(&settings->image), .first_sample = first_sample,
+    Job job = {.scene = scene,
+               .settings = settings,
+               .estimate = estimate,
+               .estimator_settings = estimator_settings,
+               .pixels = pixels,
+               .order = sample_order_make(&settings->image),
+               .first_sample = first_sample,
                .start_time = stats_now()};
     for (int i = 0; i < r.threads; i++)
         workers[i] = (Worker){&job, i, {0, 0, 0}, 0, 0};

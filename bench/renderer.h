@@ -26,16 +26,16 @@ typedef struct {
 } RenderSettings;
 
 typedef struct {
-    Image image;    /* per-pixel mean */
-    Image std_error; /* per-pixel standard error of that mean, sqrt(var / n) */
+    Image image;             /* per-pixel mean */
+    Image std_error;         /* per-pixel standard error of that mean, sqrt(var / n) */
     Image average_std_error; /* grey: per pixel, in all three channels, the standard
                                 error of the mean of (R + G + B) / 3 */
     double seconds;
     int threads;
     RayCounts rays;
-    uint64_t samples;    /* samples taken (finite or not) */
-    uint64_t nonfinite;  /* samples dropped for being NaN or infinite */
-    int interrupted;     /* stopped early by SIGINT */
+    uint64_t samples;   /* samples taken (finite or not) */
+    uint64_t nonfinite; /* samples dropped for being NaN or infinite */
+    int interrupted;    /* stopped early by SIGINT */
 } RenderResult;
 
 /* What one pixel has received so far: for the three channels and their mean (index 3),
@@ -44,7 +44,7 @@ typedef struct {
 typedef struct {
     double mean[4];
     double m2[4];
-    uint32_t finite;   /* values averaged in */
+    uint32_t finite; /* values averaged in */
 } PixelSum;
 
 /* Welford's update with one finite value. */

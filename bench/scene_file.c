@@ -120,15 +120,9 @@ static int fail(Reader *r, const char *format, ...)
     return -1;
 }
 
-static Vec3 point(const double *n)
-{
-    return vec3(n[0], n[1], n[2]);
-}
+static Vec3 point(const double *n) { return vec3(n[0], n[1], n[2]); }
 
-static double distance(Vec3 a, Vec3 b)
-{
-    return vec3_length(vec3_sub(b, a));
-}
+static double distance(Vec3 a, Vec3 b) { return vec3_length(vec3_sub(b, a)); }
 
 /* The largest distance between any two of `count` points. */
 static double size_of(const Vec3 *p, int count)
@@ -162,15 +156,12 @@ static double shape_size(const Vec3 *p, int count, Vec3 *unit)
 }
 
 /* Whether a shape of this size (not 0: that is a degenerate shape) is below SIZE_MIN. */
-static int size_too_small(double size)
-{
-    return size > 0.0 && size < SIZE_MIN;
-}
+static int size_too_small(double size) { return size > 0.0 && size < SIZE_MIN; }
 
 static int fail_too_small(Reader *r, const char *what, double size)
 {
-    return fail(r, "%s %g across is too small: the reader takes sizes from %g to %g",
-                what, size, SIZE_MIN, NUMBER_MAX);
+    return fail(r, "%s %g across is too small: the reader takes sizes from %g to %g", what,
+                size, SIZE_MIN, NUMBER_MAX);
 }
 
 /* Add triangle (a, b, c), front side (b - a) x (c - a), unless it has no area. */
@@ -229,10 +220,7 @@ static int in_unit_interval(Vec3 c)
     return c.x >= 0.0 && c.x <= 1.0 && c.y >= 0.0 && c.y <= 1.0 && c.z >= 0.0 && c.z <= 1.0;
 }
 
-static int is_non_negative(Vec3 c)
-{
-    return c.x >= 0.0 && c.y >= 0.0 && c.z >= 0.0;
-}
+static int is_non_negative(Vec3 c) { return c.x >= 0.0 && c.y >= 0.0 && c.z >= 0.0; }
 
 static int read_material(Reader *r, const Statement *s)
 {
@@ -251,15 +239,18 @@ static int read_material(Reader *r, const Statement *s)
         m.ior = s->n[0];
     } else if (m.kind == MATERIAL_LIGHT) {
         if (!is_non_negative(colour))
-            return fail(r, "negative emission %.40s %.40s %.40s", s->text[0], s->text[1], s->text[2]);
+            return fail(r, "negative emission %.40s %.40s %.40s", s->text[0], s->text[1],
+                        s->text[2]);
         if (!(vec3_max_component(colour) <= EMISSION_MAX))
-            return fail(r, "emission %.40s %.40s %.40s above %g: the image's radiance must stay "
-                           "finite", s->text[0], s->text[1], s->text[2], EMISSION_MAX);
+            return fail(r,
+                        "emission %.40s %.40s %.40s above %g: the image's radiance must stay "
+                        "finite",
+                        s->text[0], s->text[1], s->text[2], EMISSION_MAX);
         m.emission = colour;
     } else {
         if (!in_unit_interval(colour))
-            return fail(r, "reflectance %.40s %.40s %.40s outside [0, 1]", s->text[0], s->text[1],
-                        s->text[2]);
+            return fail(r, "reflectance %.40s %.40s %.40s outside [0, 1]", s->text[0],
+                        s->text[1], s->text[2]);
         m.reflectance = colour;
     }
     if (s->form->kind == OREN_NAYAR) {
@@ -298,10 +289,13 @@ static int read_quad(Reader *r, const Statement *s)
         return fail(r, "non-planar quad: P3 is off the plane of P0, P1, P2");
     /* Convex: at every corner the boundary turns the same way, about the normal. */
     for (int i = 0; i < 4; i++) {
-        Vec3 in = vec3_sub(unit[i], unit[(i + 3) % 4]), out = vec3_sub(unit[(i + 1) % 4], unit[i]);
+        Vec3 in = vec3_sub(unit[i], unit[(i + 3) % 4]),
+             out = vec3_sub(unit[(i + 1) % 4], unit[i]);
         if (!(vec3_dot(vec3_cross(in, out), normal) > FLAT * unit_size * unit_size))
-            return fail(r, "non-convex quad: P%d is not a convex corner "
-                           "(the corners must go round the quad in order)", i);
+            return fail(r,
+                        "non-convex quad: P%d is not a convex corner "
+                        "(the corners must go round the quad in order)",
+                        i);
     }
     return add_quad(r, s, p);
 }
@@ -361,7 +355,8 @@ static int read_tetrahedron(Reader *r, const Statement *s)
     if (size == 0.0 || !(fabs(six_volume) > FLAT * unit_size * unit_size * unit_size))
         return fail(r, "flat tetrahedron (zero volume)");
     for (int opposite = 0; opposite < 4; opposite++) {
-        Vec3 a = unit[(opposite + 1) % 4], b = unit[(opposite + 2) % 4], c = unit[(opposite + 3) % 4];
+        Vec3 a = unit[(opposite + 1) % 4], b = unit[(opposite + 2) % 4],
+             c = unit[(opposite + 3) % 4];
         Vec3 normal = vec3_cross(vec3_sub(b, a), vec3_sub(c, a));
         int faces_opposite = vec3_dot(normal, vec3_sub(unit[opposite], a)) > 0.0;
         Vec3 pa = p[(opposite + 1) % 4], pb = p[(opposite + 2) % 4], pc = p[(opposite + 3) % 4];
@@ -377,8 +372,10 @@ static int read_point_light(Reader *r, const Statement *s)
     if (!is_non_negative(light.intensity))
         return fail(r, "negative point_light intensity");
     if (!(vec3_max_component(light.intensity) <= EMISSION_MAX))
-        return fail(r, "point_light intensity above %g: the image's radiance must stay "
-                       "finite", EMISSION_MAX);
+        return fail(r,
+                    "point_light intensity above %g: the image's radiance must stay "
+                    "finite",
+                    EMISSION_MAX);
     if (scene_add_point_light(r->scene, light) < 0)
         return fail(r, "out of memory");
     return 0;
@@ -387,30 +384,22 @@ static int read_point_light(Reader *r, const Statement *s)
 /* Every form a line can take. */
 static const Form forms[] = {
     /* keyword      kind name     kind                 words numbers reader */
-    {"camera",      NULL,         0,                   0, 12, read_camera,
+    {"camera", NULL, 0, 0, 12, read_camera,
      "camera EX EY EZ  BLX BLY BLZ  BRX BRY BRZ  TLX TLY TLZ"},
-    {"material",    "lambert",    MATERIAL_LAMBERT,    2, 3, read_material,
+    {"material", "lambert", MATERIAL_LAMBERT, 2, 3, read_material,
      "material NAME lambert R G B"},
-    {"material",    "oren_nayar", OREN_NAYAR,          2, 4, read_material,
+    {"material", "oren_nayar", OREN_NAYAR, 2, 4, read_material,
      "material NAME oren_nayar R G B SIGMA"},
-    {"material",    "mirror",     MATERIAL_MIRROR,     2, 3, read_material,
-     "material NAME mirror R G B"},
-    {"material",    "glass",      MATERIAL_GLASS,      2, 1, read_material,
-     "material NAME glass IOR"},
-    {"material",    "light",      MATERIAL_LIGHT,      2, 3, read_material,
-     "material NAME light R G B"},
-    {"triangle",    NULL,         0,                   1, 9, read_triangle,
-     "triangle MAT  X0 Y0 Z0  X1 Y1 Z1  X2 Y2 Z2"},
-    {"quad",        NULL,         0,                   1, 12, read_quad,
-     "quad MAT  P0 P1 P2 P3, each X Y Z"},
-    {"sphere",      NULL,         0,                   1, 4, read_sphere,
-     "sphere MAT  CX CY CZ R"},
-    {"box",         NULL,         0,                   1, 6, read_box,
-     "box MAT  XMIN YMIN ZMIN  XMAX YMAX ZMAX"},
-    {"tetrahedron", NULL,         0,                   1, 12, read_tetrahedron,
+    {"material", "mirror", MATERIAL_MIRROR, 2, 3, read_material, "material NAME mirror R G B"},
+    {"material", "glass", MATERIAL_GLASS, 2, 1, read_material, "material NAME glass IOR"},
+    {"material", "light", MATERIAL_LIGHT, 2, 3, read_material, "material NAME light R G B"},
+    {"triangle", NULL, 0, 1, 9, read_triangle, "triangle MAT  X0 Y0 Z0  X1 Y1 Z1  X2 Y2 Z2"},
+    {"quad", NULL, 0, 1, 12, read_quad, "quad MAT  P0 P1 P2 P3, each X Y Z"},
+    {"sphere", NULL, 0, 1, 4, read_sphere, "sphere MAT  CX CY CZ R"},
+    {"box", NULL, 0, 1, 6, read_box, "box MAT  XMIN YMIN ZMIN  XMAX YMAX ZMAX"},
+    {"tetrahedron", NULL, 0, 1, 12, read_tetrahedron,
      "tetrahedron MAT  P0 P1 P2 P3, each X Y Z"},
-    {"point_light", NULL,         0,                   0, 6, read_point_light,
-     "point_light  X Y Z  R G B"},
+    {"point_light", NULL, 0, 0, 6, read_point_light, "point_light  X Y Z  R G B"},
 };
 
 #define KIND_NAMES "lambert, oren_nayar, mirror, glass or light"
@@ -469,11 +458,15 @@ static int read_number(Reader *r, const char *token, double *value)
     errno = 0;
     *value = strtod(token, NULL);
     if ((errno == ERANGE && fabs(*value) < 1.0) || (*value != 0.0 && fabs(*value) < DBL_MIN))
-        return fail(r, "'%.40s' is too small to compute with: below %g, the smallest double "
-                       "with all its digits (write 0 for zero)", token, DBL_MIN);
+        return fail(r,
+                    "'%.40s' is too small to compute with: below %g, the smallest double "
+                    "with all its digits (write 0 for zero)",
+                    token, DBL_MIN);
     if (!(fabs(*value) <= NUMBER_MAX))
-        return fail(r, "'%.40s' is out of range: numbers are finite and within +-%g "
-                       "(the scales the reader takes)", token, NUMBER_MAX);
+        return fail(r,
+                    "'%.40s' is out of range: numbers are finite and within +-%g "
+                    "(the scales the reader takes)",
+                    token, NUMBER_MAX);
     return 0;
 }
 
@@ -548,14 +541,22 @@ static long utf8_code_point(const unsigned char *p, size_t n)
 static const char *character_name(long code)
 {
     switch (code) {
-    case 0x00A0: return " (a no-break space?)";
-    case 0x2009: return " (a thin space?)";
-    case 0x200B: return " (a zero-width space?)";
-    case 0x202F: return " (a narrow no-break space?)";
-    case 0xFEFF: return " (a byte order mark?)";
-    case 0x2212: return " (a minus sign? write '-')";
-    case 0x2013: return " (an en dash? write '-')";
-    default: return "";
+    case 0x00A0:
+        return " (a no-break space?)";
+    case 0x2009:
+        return " (a thin space?)";
+    case 0x200B:
+        return " (a zero-width space?)";
+    case 0x202F:
+        return " (a narrow no-break space?)";
+    case 0xFEFF:
+        return " (a byte order mark?)";
+    case 0x2212:
+        return " (a minus sign? write '-')";
+    case 0x2013:
+        return " (an en dash? write '-')";
+    default:
+        return "";
     }
 }
 
@@ -574,10 +575,14 @@ static int check_ascii(Reader *r, const char *line, size_t n)
             return fail(r, "control character 0x%02X in column %zu", c, i + 1);
         long code = utf8_code_point((const unsigned char *)line + i, n - i);
         if (code < 0)
-            return fail(r, "byte 0x%02X in column %zu is not ASCII (nor UTF-8): outside "
-                           "comments, a scene file is plain ASCII", c, i + 1);
-        return fail(r, "non-ASCII character U+%04lX%s in column %zu: outside comments, a "
-                       "scene file is plain ASCII", code, character_name(code), i + 1);
+            return fail(r,
+                        "byte 0x%02X in column %zu is not ASCII (nor UTF-8): outside "
+                        "comments, a scene file is plain ASCII",
+                        c, i + 1);
+        return fail(r,
+                    "non-ASCII character U+%04lX%s in column %zu: outside comments, a "
+                    "scene file is plain ASCII",
+                    code, character_name(code), i + 1);
     }
     return 0;
 }
@@ -684,8 +689,10 @@ int scene_file_read(const char *path, char **text_out, size_t *length_out, char 
     }
     if (known && S_ISREG(info.st_mode) && (uintmax_t)info.st_size > SCENE_BYTES_MAX) {
         fclose(file);
-        return fail(&r, "larger than " SCENE_BYTES_MAX_TEXT " (%jd bytes), the limit for a "
-                        "scene file", (intmax_t)info.st_size);
+        return fail(&r,
+                    "larger than " SCENE_BYTES_MAX_TEXT " (%jd bytes), the limit for a "
+                    "scene file",
+                    (intmax_t)info.st_size);
     }
     char *text = NULL;
     size_t length = 0, capacity = 0;

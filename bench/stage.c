@@ -51,8 +51,9 @@ static void print_row(FILE *out, const StageRow *row, const StageRow *first, int
     const StageResult *r = &row->result;
     double per_cpu = r->rays / r->cpu_seconds, per_wall = r->rays / r->wall_seconds;
     double first_per_cpu = first->result.rays / first->result.cpu_seconds;
-    const char *format = csv ? "%s,%s,%d,%d,%.0f,%.4f,%.4f,%.4f,%.4f,%.3f,%ld\n"
-                             : "%-28s %-6s %7d %7d %12.0f %8.2f %8.2f %9.3f %9.3f %8.2fx %9ld\n";
+    const char *format =
+        csv ? "%s,%s,%d,%d,%.0f,%.4f,%.4f,%.4f,%.4f,%.3f,%ld\n"
+            : "%-28s %-6s %7d %7d %12.0f %8.2f %8.2f %9.3f %9.3f %8.2fx %9ld\n";
     fprintf(out, format, row->stage->name, row->scene, r->threads, r->renders, r->rays,
             r->cpu_seconds, r->wall_seconds, 1e-6 * per_cpu, 1e-6 * per_wall,
             per_cpu / first_per_cpu, row->differing);
@@ -61,7 +62,8 @@ static void print_row(FILE *out, const StageRow *row, const StageRow *first, int
 int stage_write_table(const StageRow *rows, int count, const char *path)
 {
     printf("%-28s %-6s %7s %7s %12s %8s %8s %9s %9s %9s %9s\n", "panel", "scene", "threads",
-           "renders", "rays", "cpu_s", "seconds", "Mray/cpu", "Mray/wall", "x_stage1", "differ");
+           "renders", "rays", "cpu_s", "seconds", "Mray/cpu", "Mray/wall", "x_stage1",
+           "differ");
     AtomicFile file;
     if (atomic_open(&file, path) != 0)
         return -1;

@@ -19,12 +19,12 @@ typedef struct {
 } Stage;
 
 typedef struct {
-    double rays;         /* traced, over every render */
-    double cpu_seconds;  /* processor time, every thread together */
+    double rays;        /* traced, over every render */
+    double cpu_seconds; /* processor time, every thread together */
     double wall_seconds;
     int renders;
     int threads;
-    RenderResult first;  /* the first render */
+    RenderResult first; /* the first render */
 } StageResult;
 
 /* Measure a stage. Returns 0, or -1 when memory runs out (nothing is then allocated). */

@@ -52,10 +52,11 @@ void table_print(FILE *out, const TableRow *rows, int count)
 {
     int panel_width, settings_width;
     text_widths(rows, count, &panel_width, &settings_width);
-    fprintf(out, "%-*s %-*s %7s %8s %3s %10s %10s %10s %7s %10s %9s %10s %10s %5s %4s %7s %5s\n",
-            panel_width, "panel", settings_width, "settings", "spp", "seconds", "thr",
-            "camera", "bounce", "shadow", "Mray/s", "rmse", "+-sd", "rel_mse", "efficiency",
-            "ref%", "runs", "var", "nan");
+    fprintf(out,
+            "%-*s %-*s %7s %8s %3s %10s %10s %10s %7s %10s %9s %10s %10s %5s %4s %7s %5s\n",
+            panel_width, "panel", settings_width, "settings", "spp", "seconds", "thr", "camera",
+            "bounce", "shadow", "Mray/s", "rmse", "+-sd", "rel_mse", "efficiency", "ref%",
+            "runs", "var", "nan");
     int marked = 0;
     for (int i = 0; i < count; i++) {
         const TableRow *r = &rows[i];
@@ -131,8 +132,8 @@ int table_write_csv(const char *path, const TableRow *rows, int count)
     return atomic_close(&file, 0);
 }
 
-int table_write_numbers_csv(const char *path, const char *header, const double *values, int rows,
-                            int columns, const int *decimals)
+int table_write_numbers_csv(const char *path, const char *header, const double *values,
+                            int rows, int columns, const int *decimals)
 {
     AtomicFile file;
     if (atomic_open(&file, path) != 0)

@@ -41,17 +41,17 @@ typedef struct {
     /* Measured over several independent runs (chapter 2 on): rmse and rel_mse are then
      * the means over the runs, seconds the mean time of one run, and efficiency
      * 1 / (mean rel_mse x mean seconds). */
-    int runs;                      /* 0 or 1: a single run */
-    double rmse_spread;            /* standard deviation of the runs' RMSE; NaN for one */
-    double rel_mse_spread;         /* and of their relative MSE */
-    double reference_share;        /* of the raw MSE, what the reference's noise makes */
-    int infinite_variance;         /* the estimator's variance is infinite: its error
-                                      cannot be pinned down by any number of runs */
+    int runs;               /* 0 or 1: a single run */
+    double rmse_spread;     /* standard deviation of the runs' RMSE; NaN for one */
+    double rel_mse_spread;  /* and of their relative MSE */
+    double reference_share; /* of the raw MSE, what the reference's noise makes */
+    int infinite_variance;  /* the estimator's variance is infinite: its error
+                               cannot be pinned down by any number of runs */
 } TableRow;
 
 /* Printed under a table that has a row marked infinite_variance. */
-#define TABLE_INFINITE_VARIANCE_NOTE                                                      \
-    "inf-var: roulette with alpha <= rho^2 has infinite variance (chapter 6): its error " \
+#define TABLE_INFINITE_VARIANCE_NOTE                                                           \
+    "inf-var: roulette with alpha <= rho^2 has infinite variance (chapter 6): its error "      \
     "over runs does not settle, so it cannot be pinned down or ranked."
 
 void table_print(FILE *out, const TableRow *rows, int count);
@@ -62,8 +62,8 @@ int table_write_csv(const char *path, const TableRow *rows, int count);
 /* A table of numbers as CSV through an atomic file: the header line, then `rows` lines of
  * `columns` values (values[r * columns + c]), column c with decimals[c] decimals.
  * Returns 0, or -1 with errno set. */
-int table_write_numbers_csv(const char *path, const char *header, const double *values, int rows,
-                            int columns, const int *decimals);
+int table_write_numbers_csv(const char *path, const char *header, const double *values,
+                            int rows, int columns, const int *decimals);
 
 /* Mrays/s of a row. */
 double table_mrays_per_second(const TableRow *row);

@@ -32,7 +32,8 @@ static inline double test_uniform(TestRandom *random)
 static inline TestRandom test_random(uint64_t a, uint64_t b, uint64_t c)
 {
     TestRandom random = {((a + 1) * 0x9e3779b97f4a7c15ULL ^ (b + 1) * 0xbf58476d1ce4e5b9ULL ^
-                          (c + 1) * 0x94d049bb133111ebULL) | 1u};
+                          (c + 1) * 0x94d049bb133111ebULL) |
+                         1u};
     for (int i = 0; i < 8; i++)
         test_uniform(&random);
     return random;

@@ -3,8 +3,7 @@
 
 #include <math.h>
 
-int view_position(const Camera *camera, int width, int height, Vec3 p, double *col,
-                  double *row)
+int view_position(const Camera *camera, int width, int height, Vec3 p, double *col, double *row)
 {
     Vec3 normal = vec3_cross(camera->right, camera->up);
     Vec3 to_point = vec3_sub(p, camera->eye);

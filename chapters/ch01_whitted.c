@@ -15,7 +15,10 @@ int main(int argc, char **argv)
     ProgramInfo info = {
         "Chapter 1, Whitted ray tracing: reproduces the report's Figure 1.",
         FLAGS_COMMON | FLAG_DEPTH,
-        {.scene = "scenes/room_whitted.scene", .size = 800, .depth = 10, .seed = 1,
+        {.scene = "scenes/room_whitted.scene",
+         .size = 800,
+         .depth = 10,
+         .seed = 1,
          .out = "build/figures"},
     };
     Options options;

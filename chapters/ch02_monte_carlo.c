@@ -1,4 +1,5 @@
-/* ch02_monte_carlo.c (chapter 2): Monte Carlo diffuse (report §2.2, §3.3, §3.5.3; Figures 2 and 8).
+/* ch02_monte_carlo.c (chapter 2): Monte Carlo diffuse (report §2.2, §3.3, §3.5.3).
+ * Figures 2 and 8.
  *
  * New concepts (lib/): lambert (eq. 8), hemisphere (cosine-weighted sampling by
  * inverting the CDF, eqs. 9-12), diffuse, pixel_sampling (sub-pixels and random
@@ -38,8 +39,14 @@ int main(int argc, char **argv)
         "Chapter 2, Monte Carlo diffuse: reproduces the report's Figures 2 and 8 and compares\n"
         "sub-pixels with random positions.",
         FLAGS_COMMON | FLAG_SPP | FLAG_DEPTH | FLAG_REFERENCE_SPP | FLAG_RUNS,
-        {.scene = "scenes/room.scene", .size = 800, .spp = 64, .depth = 8, .seed = 1,
-         .out = "build/figures", .reference_spp = DEPTH8_REFERENCE_SPP, .runs = CLI_RUNS},
+        {.scene = "scenes/room.scene",
+         .size = 800,
+         .spp = 64,
+         .depth = 8,
+         .seed = 1,
+         .out = "build/figures",
+         .reference_spp = DEPTH8_REFERENCE_SPP,
+         .runs = CLI_RUNS},
     };
     Options options;
     Scene scene;
@@ -55,7 +62,9 @@ int main(int argc, char **argv)
         {"ch02_subpixels", "Figure 2", options.spp, PIXEL_SUBPIXELS},
         {"ch02_random", "random positions", options.spp, PIXEL_RANDOM},
     };
-    enum { PANELS = sizeof panels / sizeof panels[0] };
+    enum {
+        PANELS = sizeof panels / sizeof panels[0]
+    };
     TableRow rows[PANELS];
     Image images[PANELS];
     char captions[PANELS][256];
@@ -63,8 +72,9 @@ int main(int argc, char **argv)
         char settings_text[96];
         snprintf(settings_text, sizeof settings_text, "%d spp %s, M=0 depth=%d", panels[i].spp,
                  panels[i].sampling == PIXEL_RANDOM ? "random" : "sub-pixels", options.depth);
-        rows[i] = experiment_path_row(&options, &scene, path_radiance, &hitting, panels[i].spp, panels[i].sampling,
-                                      panels[i].name, settings_text, &reference, &images[i]);
+        rows[i] = experiment_path_row(&options, &scene, path_radiance, &hitting, panels[i].spp,
+                                      panels[i].sampling, panels[i].name, settings_text,
+                                      &reference, &images[i]);
         experiment_caption(&rows[i], panels[i].title, captions[i], sizeof captions[i]);
     }
 

@@ -14,7 +14,10 @@
 #include "path_direct.h"
 
 static const int SWEEP[] = {0, 1, 2, 4, 8, 16, 30};
-enum { SWEEP_COUNT = sizeof SWEEP / sizeof SWEEP[0], SWEEP_SPP = 4 };
+enum {
+    SWEEP_COUNT = sizeof SWEEP / sizeof SWEEP[0],
+    SWEEP_SPP = 4
+};
 
 /* One setting of M as a table row; with `image`, a panel (experiment_path_row). */
 static TableRow render_m(const Options *options, const Scene *scene, const Reference *reference,
@@ -22,10 +25,11 @@ static TableRow render_m(const Options *options, const Scene *scene, const Refer
 {
     PathSettings path = {.max_depth = options->depth, .shadow_rays = m};
     char settings_text[96];
-    snprintf(settings_text, sizeof settings_text, "%d spp, M=%d depth=%d", spp, m, options->depth);
+    snprintf(settings_text, sizeof settings_text, "%d spp, M=%d depth=%d", spp, m,
+             options->depth);
     Estimator estimate = m == 0 ? path_radiance : path_direct_radiance;
-    return experiment_path_row(options, scene, estimate, &path, spp, sampling, name, settings_text,
-                               reference, image);
+    return experiment_path_row(options, scene, estimate, &path, spp, sampling, name,
+                               settings_text, reference, image);
 }
 
 /* Every M estimates the same image; the reference uses one shadow ray. */
@@ -41,21 +45,23 @@ static void print_conclusions(const TableRow sweep[SWEEP_COUNT])
     int best = measure_most_efficient(sweep, SWEEP_COUNT);
     if (best >= 0)
         printf("measured: the most efficient setting is M=%d (M=0, chapter 2's estimator, "
-               "included).\n", SWEEP[best]);
+               "included).\n",
+               SWEEP[best]);
     double ratio = sweep[1].efficiency / sweep[0].efficiency;
     if (ratio > 1.0)
         printf("  one shadow ray reaches the error of M=0 in %.1f times less time.\n", ratio);
     else
-        printf("  one shadow ray was not more efficient than M=0 here (efficiency ratio %.2f).\n",
-               ratio);
+        printf(
+            "  one shadow ray was not more efficient than M=0 here (efficiency ratio %.2f).\n",
+            ratio);
     const TableRow *one = &sweep[1], *most = &sweep[SWEEP_COUNT - 1];
     /* The relative error, because the RMSE of a small image is mostly the edges of the
      * lamp (radiance 25), which no number of shadow rays changes. */
     if (measure_clearly_lower(most, one))
         printf("  M=%d lowered the error of M=1 measurably (relative MSE %.4g +- %.2g against "
-               "%.4g +- %.2g), at %.1f times the time.\n", SWEEP[SWEEP_COUNT - 1],
-               most->rel_mse, most->rel_mse_spread, one->rel_mse, one->rel_mse_spread,
-               most->seconds / one->seconds);
+               "%.4g +- %.2g), at %.1f times the time.\n",
+               SWEEP[SWEEP_COUNT - 1], most->rel_mse, most->rel_mse_spread, one->rel_mse,
+               one->rel_mse_spread, most->seconds / one->seconds);
     else
         printf("  M=%d did not lower the error of M=1 measurably (relative MSE %.4g +- %.2g "
                "against %.4g +- %.2g), at %.1f times the time:\n  the error that remains is "
@@ -71,8 +77,14 @@ int main(int argc, char **argv)
         "Chapter 3, shadow rays: reproduces the report's Figure 11 (1 vs 30 shadow rays) and\n"
         "sweeps the number of shadow rays M.",
         FLAGS_COMMON | FLAG_SPP | FLAG_DEPTH | FLAG_REFERENCE_SPP | FLAG_RUNS,
-        {.scene = "scenes/room.scene", .size = 800, .spp = 4, .depth = 8, .seed = 1,
-         .out = "build/figures", .reference_spp = DEPTH8_REFERENCE_SPP, .runs = CLI_RUNS},
+        {.scene = "scenes/room.scene",
+         .size = 800,
+         .spp = 4,
+         .depth = 8,
+         .seed = 1,
+         .out = "build/figures",
+         .reference_spp = DEPTH8_REFERENCE_SPP,
+         .runs = CLI_RUNS},
     };
     Options options;
     Scene scene;

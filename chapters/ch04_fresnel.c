@@ -1,4 +1,5 @@
-/* ch04_fresnel.c (chapter 4): Fresnel glass and ray depth (report §3.5.1-3.5.2, §4.4; Figure 9).
+/* ch04_fresnel.c (chapter 4): Fresnel glass and ray depth (report §3.5.1-3.5.2, §4.4; Figure
+ * 9).
  *
  * New concepts (lib/): fresnel (the exact reflectance, eqs. 3-5, the labels R_s and R_p
  * corrected), chosen in glass.c by the path settings; Snell's law and Schlick (eqs. 2,
@@ -19,13 +20,18 @@
 #define TIMING_CALLS 10000000
 
 static const int FIGURE_DEPTH[2] = {3, 8};
-enum { FULL_DEPTH = 64, FRESNEL_DEPTH = 8 };
+enum {
+    FULL_DEPTH = 64,
+    FRESNEL_DEPTH = 8
+};
 
 /* The report's red square: the part of the mirror wall that shows the glass sphere, as
  * fractions of the image's width and height (the sphere's mirror image is centred near
  * (0.40, 0.53)), enlarged CROP_SCALE times. */
 static const double CROP_LEFT = 0.32, CROP_TOP = 0.445, CROP_SIDE = 0.16;
-enum { CROP_SCALE = 3 };
+enum {
+    CROP_SCALE = 3
+};
 
 /* The reference for the full rendering equation up to `depth` segments (the reference
  * program keeps its long paths cheap with Russian roulette, chapter 6). */
@@ -41,11 +47,13 @@ static TableRow render_panel(const Options *options, const Scene *scene,
                              const Reference *reference, int depth, FresnelMode fresnel,
                              PixelSampling sampling, const char *name, RenderResult *result)
 {
-    PathSettings path = {.max_depth = depth, .shadow_rays = options->shadow_rays, .fresnel = fresnel};
+    PathSettings path = {
+        .max_depth = depth, .shadow_rays = options->shadow_rays, .fresnel = fresnel};
     char description[64], settings_text[96];
     describe_path(&path, description, sizeof description);
     snprintf(settings_text, sizeof settings_text, "%d spp, %s", options->spp, description);
-    RenderSettings settings = experiment_render_settings(options, scene, options->spp, sampling, name);
+    RenderSettings settings =
+        experiment_render_settings(options, scene, options->spp, sampling, name);
     return experiment_runs(options, scene, &settings, path_direct_radiance, &path, name,
                            settings_text, reference, 1, result);
 }
@@ -126,7 +134,8 @@ static void fresnel_curves(const Options *options)
     double angles[200], table[24][7], r[4];
     int count = angles_with_critical(5.0, angles);
     printf("\nglass reflectance R (n = %.1f), Schlick minus exact; the critical angle "
-           "leaving glass is %.2f degrees:\n", GLASS_IOR, snell_critical_angle(GLASS_IOR, 1.0) * 180.0 / PI);
+           "leaving glass is %.2f degrees:\n",
+           GLASS_IOR, snell_critical_angle(GLASS_IOR, 1.0) * 180.0 / PI);
     printf("  angle   entering: exact  Schlick  differ.   leaving: exact  Schlick  differ.\n");
     for (int i = 0; i < count; i++) {
         reflectances(angles[i], r);
@@ -138,14 +147,16 @@ static void fresnel_curves(const Options *options)
                t[1], t[2], t[3], t[4], t[5], t[6]);
     }
     const int decimals[7] = {4, 6, 6, 6, 6, 6, 6};
-    experiment_write_numbers(options, "ch04_fresnel_curve",
-                             "angle_degrees,entering_exact,entering_schlick,entering_difference,"
-                             "leaving_exact,leaving_schlick,leaving_difference",
-                             &table[0][0], count, 7, decimals);
+    experiment_write_numbers(
+        options, "ch04_fresnel_curve",
+        "angle_degrees,entering_exact,entering_schlick,entering_difference,"
+        "leaving_exact,leaving_schlick,leaving_difference",
+        &table[0][0], count, 7, decimals);
 
     const char *labels[4] = {"exact, entering glass", "Schlick, entering glass",
                              "exact, leaving glass", "Schlick, leaving glass"};
-    const Vec3 colours[4] = {{0.8, 0.0, 0.0}, {1.0, 0.5, 0.0}, {0.0, 0.0, 0.9}, {0.0, 0.6, 0.8}};
+    const Vec3 colours[4] = {
+        {0.8, 0.0, 0.0}, {1.0, 0.5, 0.0}, {0.0, 0.0, 0.9}, {0.0, 0.6, 0.8}};
     double curves[4][200];
     count = angles_with_critical(0.5, angles);
     for (int i = 0; i < count; i++) {
@@ -155,10 +166,17 @@ static void fresnel_curves(const Options *options)
     }
     PlotSeries series[4];
     for (int c = 0; c < 4; c++)
-        series[c] = (PlotSeries){.label = labels[c], .x = angles, .y = curves[c], .count = count,
-                                 .colour = colours[c], .dashed = c % 2};
+        series[c] = (PlotSeries){.label = labels[c],
+                                 .x = angles,
+                                 .y = curves[c],
+                                 .count = count,
+                                 .colour = colours[c],
+                                 .dashed = c % 2};
     Plot plot = {{"angle of incidence (degrees)", PLOT_LINEAR, 0.0, 90.0, 15.0},
-                 {"reflectance R", PLOT_LINEAR, 0.0, 1.0, 0.25}, series, 4, 0.0};
+                 {"reflectance R", PLOT_LINEAR, 0.0, 1.0, 0.25},
+                 series,
+                 4,
+                 0.0};
     experiment_write_plot(options, "ch04_fresnel_curve", &plot, 800, 450,
                           "glass reflectance R (n = 1.5) against the angle of incidence:\n"
                           "exact Fresnel (solid) and Schlick's approximation (dashed)");
@@ -208,7 +226,8 @@ static void schlick_against_exact(const Options *options, const Scene *scene)
            "pixels) where the noise makes %.4f.\n",
            schlick_ns, exact_ns, rows[0].seconds, rows[1].seconds,
            100.0 * (rows[0].seconds / rows[1].seconds - 1.0), difference,
-           100.0 * measure_changed_fraction(&renders[0].image, &renders[1].image), rows[1].rmse);
+           100.0 * measure_changed_fraction(&renders[0].image, &renders[1].image),
+           rows[1].rmse);
     render_result_free(&renders[0]);
     render_result_free(&renders[1]);
     measure_reference_free(&reference);
@@ -219,9 +238,17 @@ int main(int argc, char **argv)
     ProgramInfo info = {
         "Chapter 4, Fresnel glass and ray depth: reproduces the report's Figure 9 (depth 3\n"
         "vs 8) and compares Schlick's approximation with the exact Fresnel equations.",
-        FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_FRESNEL | FLAG_REFERENCE_SPP | FLAG_RUNS,
-        {.scene = "scenes/room.scene", .size = 800, .spp = 4, .shadow_rays = 1, .seed = 1,
-         .out = "build/figures", .fresnel = FRESNEL_SCHLICK, .reference_spp = REFERENCE_SPP, .runs = CLI_RUNS},
+        FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_FRESNEL | FLAG_REFERENCE_SPP |
+            FLAG_RUNS,
+        {.scene = "scenes/room.scene",
+         .size = 800,
+         .spp = 4,
+         .shadow_rays = 1,
+         .seed = 1,
+         .out = "build/figures",
+         .fresnel = FRESNEL_SCHLICK,
+         .reference_spp = REFERENCE_SPP,
+         .runs = CLI_RUNS},
     };
     Options options;
     Scene scene;

@@ -16,7 +16,9 @@
 #include "view.h"
 
 static const double SIGMAS[] = {0.0, 0.25, 0.5, 1.0};
-enum { SIGMA_COUNT = sizeof SIGMAS / sizeof SIGMAS[0] };
+enum {
+    SIGMA_COUNT = sizeof SIGMAS / sizeof SIGMAS[0]
+};
 #define RIM_FRACTION 0.8
 
 /* The reference for the scene with the roughness of `rough` set to `sigma`. */
@@ -36,8 +38,8 @@ static TableRow render_panel(const Options *options, const Scene *scene,
     char settings_text[96];
     snprintf(settings_text, sizeof settings_text, "%d spp, M=%d depth=%d, sigma=%g",
              options->spp, options->shadow_rays, options->depth, sigma);
-    return experiment_path_row(options, scene, path_direct_radiance, &path, options->spp, sampling, name,
-                               settings_text, reference, image);
+    return experiment_path_row(options, scene, path_direct_radiance, &path, options->spp,
+                               sampling, name, settings_text, reference, image);
 }
 
 typedef struct {
@@ -56,7 +58,8 @@ static Measured brightness(const Reference *reference, double col, double row, i
 /* Brightness at RIM_FRACTION of the sphere's radius, left and right of its centre
  * (averaged), over the brightness at its centre. The rim points are found by
  * projecting the centre moved sideways, perpendicular to the line of sight. */
-static Measured rim_to_centre(const Scene *scene, const Reference *reference, const Sphere *sphere)
+static Measured rim_to_centre(const Scene *scene, const Reference *reference,
+                              const Sphere *sphere)
 {
     const Camera *camera = &scene->camera;
     int width = reference->image.width, height = reference->image.height;
@@ -65,8 +68,10 @@ static Measured rim_to_centre(const Scene *scene, const Reference *reference, co
     Vec3 offset = vec3_scale(vec3_normalize(sideways), RIM_FRACTION * sphere->radius);
     double col, row, left_col, left_row, right_col, right_row;
     view_position(camera, width, height, sphere->center, &col, &row);
-    view_position(camera, width, height, vec3_sub(sphere->center, offset), &left_col, &left_row);
-    view_position(camera, width, height, vec3_add(sphere->center, offset), &right_col, &right_row);
+    view_position(camera, width, height, vec3_sub(sphere->center, offset), &left_col,
+                  &left_row);
+    view_position(camera, width, height, vec3_add(sphere->center, offset), &right_col,
+                  &right_row);
     double radius_pixels = fabs(right_col - left_col) / (2.0 * RIM_FRACTION);
     int half = (int)(radius_pixels / 10.0); /* a window small beside the sphere */
     Measured centre = brightness(reference, col, row, half);
@@ -101,8 +106,10 @@ static void find_spheres(const Options *options, const Scene *scene, int rough,
             *lambert_sphere = s;
     }
     if (!*rough_sphere || !*lambert_sphere)
-        cli_fail(2, "%s:%d: no sphere of material 'rough', or no Lambertian sphere: %s "
-                    "compares the two", options->scene, options->scene_lines, cli_program);
+        cli_fail(2,
+                 "%s:%d: no sphere of material 'rough', or no Lambertian sphere: %s "
+                 "compares the two",
+                 options->scene, options->scene_lines, cli_program);
 }
 
 int main(int argc, char **argv)
@@ -113,8 +120,15 @@ int main(int argc, char **argv)
         "Chapter 5, the Oren-Nayar reflector: reproduces the report's Figure 10 (a rough\n"
         "sphere beside a Lambertian one) and sweeps the roughness sigma.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_REFERENCE_SPP | FLAG_RUNS,
-        {.scene = "scenes/oren_nayar.scene", .size = 800, .spp = 16, .shadow_rays = 4,
-         .depth = 8, .seed = 1, .out = "build/figures", .reference_spp = 2 * REFERENCE_SPP, .runs = CLI_RUNS},
+        {.scene = "scenes/oren_nayar.scene",
+         .size = 800,
+         .spp = 16,
+         .shadow_rays = 4,
+         .depth = 8,
+         .seed = 1,
+         .out = "build/figures",
+         .reference_spp = 2 * REFERENCE_SPP,
+         .runs = CLI_RUNS},
     };
     Options options;
     Scene scene;
@@ -159,13 +173,15 @@ int main(int argc, char **argv)
         lambert_ratio[i] = rim_to_centre(&scene, &reference, lambert_sphere);
         measure_reference_free(&reference);
     }
-    experiment_write_panels(&options, "ch05_sigma_sweep", images, rows, title_list, SIGMA_COUNT);
+    experiment_write_panels(&options, "ch05_sigma_sweep", images, rows, title_list,
+                            SIGMA_COUNT);
     printf("\nsweep of sigma at %d pixels wide:\n", sweep_options.size);
     experiment_write_table(&options, "ch05_sigma_sweep", rows, SIGMA_COUNT);
 
     printf("\nbrightness at %.0f%% of the radius over the brightness at the centre (on the "
            "references):\n  sigma    rough sphere        Lambertian sphere   eq. 13, light at "
-           "the eye\n", 100.0 * RIM_FRACTION);
+           "the eye\n",
+           100.0 * RIM_FRACTION);
     for (int i = 0; i < SIGMA_COUNT; i++) {
         printf("  %-5g    %.3f +- %.3f     %.3f +- %.3f       %.3f\n", SIGMAS[i],
                rough_ratio[i].value, rough_ratio[i].error, lambert_ratio[i].value,

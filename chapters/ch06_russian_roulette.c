@@ -14,7 +14,10 @@
 
 /* The last point, 0, is not a constant alpha but roulette with bounded weights. */
 static const double SWEEP[] = {0.01, 0.05, 0.1, 0.25, 0.5, 0.75, 0.9, 1.0, 0.0};
-enum { SWEEP_COUNT = sizeof SWEEP / sizeof SWEEP[0], SWEEP_SPP = 16 };
+enum {
+    SWEEP_COUNT = sizeof SWEEP / sizeof SWEEP[0],
+    SWEEP_SPP = 16
+};
 
 static void settings_text_for(const Options *options, double alpha, char *text, size_t size)
 {
@@ -27,8 +30,8 @@ static void settings_text_for(const Options *options, double alpha, char *text, 
 static TableRow measure_alpha(const Options *options, const Scene *scene,
                               const Reference *reference, double alpha, RenderResult *result)
 {
-    PathSettings path = {.max_depth = options->depth, .shadow_rays = options->shadow_rays,
-                         .rr_survival = alpha};
+    PathSettings path = {
+        .max_depth = options->depth, .shadow_rays = options->shadow_rays, .rr_survival = alpha};
     char name[64], settings_text[96];
     if (alpha > 0.0) {
         snprintf(name, sizeof name, "sweep, alpha=%g", alpha);
@@ -41,8 +44,8 @@ static TableRow measure_alpha(const Options *options, const Scene *scene,
     }
     RenderSettings settings =
         experiment_render_settings(options, scene, options->spp, PIXEL_RANDOM, name);
-    TableRow row = experiment_runs(options, scene, &settings, path_roulette_radiance, &path, name,
-                                   settings_text, reference, 0, result);
+    TableRow row = experiment_runs(options, scene, &settings, path_roulette_radiance, &path,
+                                   name, settings_text, reference, 0, result);
     row.infinite_variance = experiment_infinite_variance(scene, &path);
     return row;
 }
@@ -51,7 +54,8 @@ static TableRow measure_alpha(const Options *options, const Scene *scene,
  * estimator (bench/reference.c): only the depth is taken from here. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
 {
-    PathSettings estimator = {.max_depth = options->depth, .shadow_rays = 1, .rr_survival = 0.75};
+    PathSettings estimator = {
+        .max_depth = options->depth, .shadow_rays = 1, .rr_survival = 0.75};
     experiment_path_reference(options, scene, &estimator, NULL, 0.0, reference);
 }
 
@@ -60,9 +64,17 @@ int main(int argc, char **argv)
     ProgramInfo info = {
         "Chapter 6, Russian roulette: reproduces the report's Figure 12 (alpha 0.01 vs 0.5)\n"
         "and sweeps alpha, the survival probability.",
-        FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_DEPTH | FLAG_REFERENCE_SPP | FLAG_RUNS,
-        {.scene = "scenes/room.scene", .size = 800, .spp = 4, .shadow_rays = 1, .depth = 64,
-         .seed = 1, .out = "build/figures", .reference_spp = REFERENCE_SPP, .runs = CLI_RUNS},
+        FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_DEPTH | FLAG_REFERENCE_SPP |
+            FLAG_RUNS,
+        {.scene = "scenes/room.scene",
+         .size = 800,
+         .spp = 4,
+         .shadow_rays = 1,
+         .depth = 64,
+         .seed = 1,
+         .out = "build/figures",
+         .reference_spp = REFERENCE_SPP,
+         .runs = CLI_RUNS},
     };
     Options options;
     Scene scene;
@@ -77,10 +89,12 @@ int main(int argc, char **argv)
         char name[64], settings_text[96];
         snprintf(name, sizeof name, "ch06_figure12_alpha%g", figure_alpha[i]);
         settings_text_for(&options, figure_alpha[i], settings_text, sizeof settings_text);
-        PathSettings path = {.max_depth = options.depth, .shadow_rays = options.shadow_rays,
+        PathSettings path = {.max_depth = options.depth,
+                             .shadow_rays = options.shadow_rays,
                              .rr_survival = figure_alpha[i]};
-        rows[i] = experiment_path_row(&options, &scene, path_roulette_radiance, &path, options.spp,
-                                      PIXEL_SUBPIXELS, name, settings_text, &reference, &images[i]);
+        rows[i] =
+            experiment_path_row(&options, &scene, path_roulette_radiance, &path, options.spp,
+                                PIXEL_SUBPIXELS, name, settings_text, &reference, &images[i]);
     }
     const char *titles[] = {"Figure 12, left", "Figure 12, right"};
     experiment_write_panels(&options, "ch06_figure12", images, rows, titles, 2);
@@ -95,7 +109,8 @@ int main(int argc, char **argv)
     TableRow sweep[SWEEP_COUNT];
     sweep_options.spp = SWEEP_SPP;
     printf("\nsweep of alpha at %d pixels wide, %d spp each; mean radiance of the image "
-           "(first run):\n", sweep_options.size, SWEEP_SPP);
+           "(first run):\n",
+           sweep_options.size, SWEEP_SPP);
     printf("  reference        %.5f +- %.5f\n", reference_mean, reference_error);
     int finite = 0, finite_far = 0, infinite = 0, infinite_short = 0;
     for (int i = 0; i < SWEEP_COUNT; i++) {
@@ -122,8 +137,8 @@ int main(int argc, char **argv)
     printf("measured: %d of the %d settings of finite variance have a mean more than 3 "
            "standard errors\nfrom the reference; %d of the %d of infinite variance fall short "
            "of it by more than 2\n(their standard errors cannot be trusted: a rare, very "
-           "bright path is missing from them).\n", finite_far, finite, infinite_short,
-           infinite);
+           "bright path is missing from them).\n",
+           finite_far, finite, infinite_short, infinite);
     experiment_write_table(&options, "ch06_sweep", sweep, SWEEP_COUNT);
     int best = measure_most_efficient(sweep, SWEEP_COUNT);
     if (best == SWEEP_COUNT - 1)
@@ -131,13 +146,15 @@ int main(int argc, char **argv)
                "ranked): bounded weights\n");
     else if (best >= 0)
         printf("most efficient of the settings of finite variance (the others cannot be "
-               "ranked): alpha = %g\n", SWEEP[best]);
+               "ranked): alpha = %g\n",
+               SWEEP[best]);
     /* Against the best constant alpha of finite variance (alpha = 1 always is). */
     int best_alpha = measure_most_efficient(sweep, SWEEP_COUNT - 1);
     if (best_alpha >= 0)
         printf("bounded weights (q = min(1, max throughput)): %.2f times the efficiency of the "
                "best constant alpha of finite variance (%g)\n",
-               sweep[SWEEP_COUNT - 1].efficiency / sweep[best_alpha].efficiency, SWEEP[best_alpha]);
+               sweep[SWEEP_COUNT - 1].efficiency / sweep[best_alpha].efficiency,
+               SWEEP[best_alpha]);
 
     measure_reference_free(&reference);
     scene_free(&scene);

@@ -20,10 +20,12 @@ static const struct {
     int spp, shadow_rays;
     double rr, report_minutes;
 } TABLE1[] = {
-    {16, 1, 0.25, 7}, {16, 30, 0.25, 132}, {1, 20, 0.25, 5},
-    {4, 20, 0.25, 23}, {4, 20, 0.01, 5},   {4, 20, 0.9, 51},
+    {16, 1, 0.25, 7},  {16, 30, 0.25, 132}, {1, 20, 0.25, 5},
+    {4, 20, 0.25, 23}, {4, 20, 0.01, 5},    {4, 20, 0.9, 51},
 };
-enum { TABLE1_ROWS = sizeof TABLE1 / sizeof TABLE1[0] };
+enum {
+    TABLE1_ROWS = sizeof TABLE1 / sizeof TABLE1[0]
+};
 
 /* The convergence plot's estimators: Table 1's, once each, with their colours. */
 static const struct {
@@ -36,7 +38,10 @@ static const struct {
     {20, 0.25, "blue", {0.1, 0.2, 0.9}},  {20, 0.01, "orange", {0.95, 0.55, 0.0}},
     {20, 0.9, "purple", {0.6, 0.1, 0.7}},
 };
-enum { ESTIMATOR_COUNT = sizeof ESTIMATORS / sizeof ESTIMATORS[0], CONVERGENCE_STEPS = 5 };
+enum {
+    ESTIMATOR_COUNT = sizeof ESTIMATORS / sizeof ESTIMATORS[0],
+    CONVERGENCE_STEPS = 5
+};
 
 /* Every setting estimates the same image; the reference program renders it with its
  * own estimator (bench/reference.c): only the depth and Fresnel mode are taken from
@@ -49,9 +54,9 @@ static void reference_for(const Options *options, const Scene *scene, Reference 
 
 /* The final estimator with these settings as a table row; with `image`, a panel
  * (experiment_path_row). */
-static TableRow render_path(const Options *options, const Scene *scene, const Reference *reference,
-                            const PathSettings *path, int spp, const char *name, const char *note,
-                            Image *image)
+static TableRow render_path(const Options *options, const Scene *scene,
+                            const Reference *reference, const PathSettings *path, int spp,
+                            const char *name, const char *note, Image *image)
 {
     char description[128], settings_text[192];
     describe_path(path, description, sizeof description);
@@ -66,12 +71,15 @@ static TableRow render_setting(const Options *options, const Scene *scene,
                                const Reference *reference, int spp, int shadow_rays, double rr,
                                const char *name, const char *note, Image *image)
 {
-    PathSettings path = {.max_depth = options->depth, .shadow_rays = shadow_rays,
-                         .fresnel = options->fresnel, .rr_survival = rr};
+    PathSettings path = {.max_depth = options->depth,
+                         .shadow_rays = shadow_rays,
+                         .fresnel = options->fresnel,
+                         .rr_survival = rr};
     char settings_text[96];
-    snprintf(settings_text, sizeof settings_text, "%d spp, M=%d, rr=%g%s", spp, shadow_rays, rr, note);
-    return experiment_path_row(options, scene, path_roulette_radiance, &path, spp, PIXEL_SUBPIXELS,
-                               name, settings_text, reference, image);
+    snprintf(settings_text, sizeof settings_text, "%d spp, M=%d, rr=%g%s", spp, shadow_rays, rr,
+             note);
+    return experiment_path_row(options, scene, path_roulette_radiance, &path, spp,
+                               PIXEL_SUBPIXELS, name, settings_text, reference, image);
 }
 
 static void final_image(const Options *options, const Scene *scene, const Reference *reference,
@@ -82,7 +90,8 @@ static void final_image(const Options *options, const Scene *scene, const Refere
     TableRow row = render_path(options, scene, reference, &path, options->spp, "ch07_figure7",
                                options->strata ? " strata" : "", &image);
     char title[256];
-    snprintf(title, sizeof title, "Figure 7: final image, with chapter 7's levers (bounded-weight "
+    snprintf(title, sizeof title,
+             "Figure 7: final image, with chapter 7's levers (bounded-weight "
              "roulette, the mirror's image of the lamp, the sphere guide%s)",
              options->strata ? ", stratified pairs" : "");
     const char *titles[] = {title};
@@ -98,8 +107,8 @@ static void table1(const Options *options, const Scene *scene, const Reference *
         char name[48], note[48];
         snprintf(name, sizeof name, "Table 1, row %d", i + 1);
         snprintf(note, sizeof note, " (report: %g min)", TABLE1[i].report_minutes);
-        rows[i] = render_setting(options, scene, reference, TABLE1[i].spp, TABLE1[i].shadow_rays,
-                                 TABLE1[i].rr, name, note, NULL);
+        rows[i] = render_setting(options, scene, reference, TABLE1[i].spp,
+                                 TABLE1[i].shadow_rays, TABLE1[i].rr, name, note, NULL);
     }
     printf("\nTable 1 of the report, measured here:\n");
     experiment_write_table(options, "ch07_table1", rows, TABLE1_ROWS);
@@ -128,10 +137,13 @@ static void levers(const Options *options, const Scene *scene, const MirrorPlane
     Reference reference;
     reference_for(&small, scene, &reference);
     PathSettings steps[LEVER_STEPS];
-    const char *names[LEVER_STEPS] = {"report: M=4, alpha=0.75", "M=1", "+ bounded weights",
-                                      "+ mis", "+ mirror light", "without mis",
-                                      "+ sphere guide", "final: + stratified pairs"};
-    steps[0] = (PathSettings){.max_depth = small.depth, .shadow_rays = 4, .fresnel = small.fresnel,
+    const char *names[LEVER_STEPS] = {"report: M=4, alpha=0.75", "M=1",
+                                      "+ bounded weights",       "+ mis",
+                                      "+ mirror light",          "without mis",
+                                      "+ sphere guide",          "final: + stratified pairs"};
+    steps[0] = (PathSettings){.max_depth = small.depth,
+                              .shadow_rays = 4,
+                              .fresnel = small.fresnel,
                               .rr_survival = 0.75};
     steps[1] = steps[0];
     steps[1].shadow_rays = 1;
@@ -150,11 +162,12 @@ static void levers(const Options *options, const Scene *scene, const MirrorPlane
     TableRow rows[LEVER_STEPS];
     for (int i = 0; i < LEVER_STEPS; i++) {
         int last = i == LEVER_STEPS - 1;
-        rows[i] = render_path(last ? &stratified : &small, scene, &reference, &steps[i], LEVER_SPP,
-                              names[i], last ? " strata" : "", NULL);
+        rows[i] = render_path(last ? &stratified : &small, scene, &reference, &steps[i],
+                              LEVER_SPP, names[i], last ? " strata" : "", NULL);
     }
-    printf("\nthe levers at %d pixels wide, %d spp each (efficiency = 1 / (rel_mse * seconds)):\n",
-           small.size, LEVER_SPP);
+    printf(
+        "\nthe levers at %d pixels wide, %d spp each (efficiency = 1 / (rel_mse * seconds)):\n",
+        small.size, LEVER_SPP);
     experiment_write_table(options, "ch07_levers", rows, LEVER_STEPS);
     printf("final estimator: %.2f times the efficiency of the report's (row 1); the stratified"
            " pairs alone: %.2f times\n",
@@ -189,15 +202,18 @@ static void convergence(const Options *options, const Scene *scene)
         label_list[e] = labels[e];
         colours[e] = ESTIMATORS[e].colour;
     }
-    printf("\nconvergence at %d pixels wide, 1 to %d spp:\n", small.size, 1 << (CONVERGENCE_STEPS - 1));
-    experiment_write_table(options, "ch07_convergence", rows, ESTIMATOR_COUNT * CONVERGENCE_STEPS);
+    printf("\nconvergence at %d pixels wide, 1 to %d spp:\n", small.size,
+           1 << (CONVERGENCE_STEPS - 1));
+    experiment_write_table(options, "ch07_convergence", rows,
+                           ESTIMATOR_COUNT * CONVERGENCE_STEPS);
     printf("measured: does the mean RMSE fall at every doubling, and its log-log slope "
            "against time\n(an estimator of finite variance follows -1/2):\n");
     for (int e = 0; e < ESTIMATOR_COUNT; e++) {
         const TableRow *series = &rows[e * CONVERGENCE_STEPS];
         printf("  %-14s %-30s slope %+.2f%s\n", labels[e],
-               convergence_falls(series, CONVERGENCE_STEPS) ? "falls at every doubling,"
-                                                            : "does not fall at every doubling,",
+               convergence_falls(series, CONVERGENCE_STEPS)
+                   ? "falls at every doubling,"
+                   : "does not fall at every doubling,",
                convergence_slope(series, CONVERGENCE_STEPS),
                series[0].infinite_variance ? "   (infinite variance)" : "");
     }
@@ -221,8 +237,16 @@ int main(int argc, char **argv)
         "unless --rr is given.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_RR | FLAG_DEPTH | FLAG_FRESNEL |
             FLAG_REFERENCE_SPP | FLAG_RUNS | FLAG_STRATA,
-        {.scene = "scenes/room.scene", .size = 800, .spp = 64, .shadow_rays = 1, .rr = 0.75,
-         .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = REFERENCE_SPP, .runs = CLI_RUNS,
+        {.scene = "scenes/room.scene",
+         .size = 800,
+         .spp = 64,
+         .shadow_rays = 1,
+         .rr = 0.75,
+         .depth = 64,
+         .seed = 1,
+         .out = "build/figures",
+         .reference_spp = REFERENCE_SPP,
+         .runs = CLI_RUNS,
          .strata = 1},
     };
     Options options;

@@ -29,7 +29,12 @@
 
 /* The table: seeds per setting, steps of doubling passes (and samples), camera samples
  * per pass; the crops' enlargement. */
-enum { SEEDS = 4, STEPS = 5, TABLE_SPP_PER_PASS = 2, CROP_SCALE = 5 };
+enum {
+    SEEDS = 4,
+    STEPS = 5,
+    TABLE_SPP_PER_PASS = 2,
+    CROP_SCALE = 5
+};
 
 /* The reference: the same image as chapter 7's, shared with it through the cache. */
 static void reference_for(const Options *options, const Scene *scene, Reference *reference)
@@ -45,20 +50,24 @@ static PpmSettings photon_settings(const PathSettings *path, const Scene *scene,
 {
     /* No more photons per pass than a grid takes: a pass then never stores too many. */
     double photons = fmin(PHOTONS_PER_PIXEL * width * height + 0.5, POINT_GRID_MAX_POINTS);
-    PpmSettings ppm = {*path, (int)photons,
-                       ppm_first_radius(scene, PPM_FIRST_RADIUS_AT_800) * 800.0 / width, PPM_ALPHA,
-                       spp, passes, 0.0};
+    PpmSettings ppm = {*path,
+                       (int)photons,
+                       ppm_first_radius(scene, PPM_FIRST_RADIUS_AT_800) * 800.0 / width,
+                       PPM_ALPHA,
+                       spp,
+                       passes,
+                       0.0};
     ppm.path.mirror_light = PHOTON_MIRROR_LIGHT;
     return ppm;
 }
 
 /* The figure: chapter 7's final estimator, then the photon version in the same
  * processor time; what each bought; and the crops. */
-static void equal_time_figure(const Options *options, const Scene *scene, const PathSettings *path,
-                              const Reference *reference)
+static void equal_time_figure(const Options *options, const Scene *scene,
+                              const PathSettings *path, const Reference *reference)
 {
-    RenderSettings settings = experiment_render_settings(options, scene, options->spp,
-                                                         PIXEL_STRATIFIED, "chapter 7's final estimator");
+    RenderSettings settings = experiment_render_settings(
+        options, scene, options->spp, PIXEL_STRATIFIED, "chapter 7's final estimator");
     char description[128], text[192];
     describe_path(path, description, sizeof description);
     snprintf(text, sizeof text, "%d spp, %s strata", options->spp, description);
@@ -98,11 +107,11 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
            path_cpu, photons.cpu_seconds, photons.passes, ppm.photons, photons.stored,
            rows[0].seconds, rows[1].seconds);
     printf("RMSE against the reference: %.4f and %.4f, ratio %.3f; without the reference's "
-           "own variance (its noise %.4f): %.4f and %.4f, ratio %.3f\n", raw[0], raw[1],
-           raw[1] / raw[0], reference->noise, rows[0].rmse, rows[1].rmse,
+           "own variance (its noise %.4f): %.4f and %.4f, ratio %.3f\n",
+           raw[0], raw[1], raw[1] / raw[0], reference->noise, rows[0].rmse, rows[1].rmse,
            rows[1].rmse / rows[0].rmse);
-    printf("efficiency (1 / (rel_mse x seconds)): %.3g and %.3g, ratio %.2f\n", rows[0].efficiency,
-           rows[1].efficiency, rows[1].efficiency / rows[0].efficiency);
+    printf("efficiency (1 / (rel_mse x seconds)): %.3g and %.3g, ratio %.2f\n",
+           rows[0].efficiency, rows[1].efficiency, rows[1].efficiency / rows[0].efficiency);
     double ours[3], theirs[3];
     measure_channel_means(&photons.render.image, ours);
     measure_channel_means(&reference->image, theirs);
@@ -140,8 +149,8 @@ static void equal_time_figure(const Options *options, const Scene *scene, const 
  * neighbours: bright in the image without caustics (the photon version with an empty
  * map), which nothing else is. Their noise is the same estimator in both here and, at a
  * quarter size, dominates the RMSE; the bias and variance are measured without them. */
-static unsigned char *lamp_mask(const Options *small, const Scene *scene, const PathSettings *path,
-                                int *left_out)
+static unsigned char *lamp_mask(const Options *small, const Scene *scene,
+                                const PathSettings *path, int *left_out)
 {
     PhotonMap empty;
     if (photon_map_build(&empty, NULL, 0, 0, 1.0) != 0)
@@ -149,7 +158,8 @@ static unsigned char *lamp_mask(const Options *small, const Scene *scene, const 
     CausticPathSettings without = {*path, &empty, &empty, 1.0};
     Options quiet = *small;
     quiet.quiet = 1;
-    RenderSettings settings = experiment_render_settings(&quiet, scene, 16, PIXEL_STRATIFIED, "mask");
+    RenderSettings settings =
+        experiment_render_settings(&quiet, scene, 16, PIXEL_STRATIFIED, "mask");
     RenderResult result;
     experiment_render(scene, &settings, path_caustics_radiance, &without, &result);
     experiment_exit_if_interrupted(&result, NULL);
@@ -162,20 +172,23 @@ static unsigned char *lamp_mask(const Options *small, const Scene *scene, const 
 }
 
 /* A row of the table: chapter 7's final estimator at `spp` (ppm NULL), or the photon map. */
-static SettingError table_row(const Options *small, const Scene *scene, const PathSettings *path,
-                              const PpmSettings *ppm, int spp, const Reference references[2],
-                              const unsigned char *lamp)
+static SettingError table_row(const Options *small, const Scene *scene,
+                              const PathSettings *path, const PpmSettings *ppm, int spp,
+                              const Reference references[2], const unsigned char *lamp)
 {
-    BiasVariance error = experiment_seeds(small, scene, path, ppm, spp, SEEDS, references, lamp);
+    BiasVariance error =
+        experiment_seeds(small, scene, path, ppm, spp, SEEDS, references, lamp);
     if (!ppm)
         return (SettingError){"chapter 7 final", spp, 0, 0, 0.0, 0.0, error};
-    SettingError row = {"", ppm->spp, ppm->photons, ppm->passes, ppm->radius, ppm->alpha, error};
+    SettingError row = {"",          ppm->spp,   ppm->photons, ppm->passes,
+                        ppm->radius, ppm->alpha, error};
     snprintf(row.estimator, sizeof row.estimator, "photon map a=%.2g", ppm->alpha);
     return row;
 }
 
 /* The table and the plot, on a quarter-size image. */
-static void error_against_time(const Options *options, const Scene *scene, const PathSettings *path)
+static void error_against_time(const Options *options, const Scene *scene,
+                               const PathSettings *path)
 {
     Options small = experiment_quarter_size(options);
     /* Two references of independent seeds: the product of an image's errors against the
@@ -184,7 +197,8 @@ static void error_against_time(const Options *options, const Scene *scene, const
     reference_for(&small, scene, &references[0]);
     Options other = small;
     other.seed = small.seed + 1000; /* references use ~seed; the panels seed .. seed + SEEDS */
-    printf("a second reference of the same image, of another seed (the table's errors use both):\n");
+    printf("a second reference of the same image, of another seed (the table's errors use "
+           "both):\n");
     reference_for(&other, scene, &references[1]);
     int width, height, left_out;
     experiment_image_size(&small, scene, &width, &height);
@@ -194,53 +208,73 @@ static void error_against_time(const Options *options, const Scene *scene, const
      * (BLUR^2 times the photons in each estimate: far less variance, but a wide blur),
      * shrinking and fixed. Then, at the most passes, the figure's settings with 4 times
      * and a quarter of the photons, and half the radius. */
-    enum { SERIES = 4, EXTRA = 3, BLUR = 8, ROWS = SERIES * STEPS + EXTRA };
-    const double series_radius[SERIES] = {0, 1, BLUR, BLUR}, series_alpha[SERIES] = {0, PPM_ALPHA, PPM_ALPHA, 1};
-    const double photon_factor[EXTRA] = {4.0, 0.25, 1.0}, radius_factor[EXTRA] = {1.0, 1.0, 0.5};
+    enum {
+        SERIES = 4,
+        EXTRA = 3,
+        BLUR = 8,
+        ROWS = SERIES * STEPS + EXTRA
+    };
+    const double series_radius[SERIES] = {0, 1, BLUR, BLUR},
+                 series_alpha[SERIES] = {0, PPM_ALPHA, PPM_ALPHA, 1};
+    const double photon_factor[EXTRA] = {4.0, 0.25, 1.0},
+                 radius_factor[EXTRA] = {1.0, 1.0, 0.5};
     SettingError rows[ROWS];
     double x[SERIES][STEPS], y[SERIES][STEPS];
     for (int s = 0; s < SERIES; s++)
         for (int step = 0; step < STEPS; step++) {
             SettingError *row = &rows[s * STEPS + step];
-            PpmSettings ppm = photon_settings(path, scene, width, height, TABLE_SPP_PER_PASS, 1 << step);
+            PpmSettings ppm =
+                photon_settings(path, scene, width, height, TABLE_SPP_PER_PASS, 1 << step);
             ppm.radius *= series_radius[s];
             ppm.alpha = series_alpha[s];
-            *row = table_row(&small, scene, path, s == 0 ? NULL : &ppm, TABLE_SPP_PER_PASS << step,
-                             references, lamp);
+            *row = table_row(&small, scene, path, s == 0 ? NULL : &ppm,
+                             TABLE_SPP_PER_PASS << step, references, lamp);
             x[s][step] = row->error.cpu;
             y[s][step] = row->error.error;
         }
     for (int e = 0; e < EXTRA; e++) {
-        PpmSettings ppm = photon_settings(path, scene, width, height, TABLE_SPP_PER_PASS, 1 << (STEPS - 1));
+        PpmSettings ppm =
+            photon_settings(path, scene, width, height, TABLE_SPP_PER_PASS, 1 << (STEPS - 1));
         ppm.photons = (int)(ppm.photons * photon_factor[e] + 0.5);
         ppm.radius *= radius_factor[e];
-        rows[SERIES * STEPS + e] = table_row(&small, scene, path, &ppm, ppm.spp, references, lamp);
+        rows[SERIES * STEPS + e] =
+            table_row(&small, scene, path, &ppm, ppm.spp, references, lamp);
     }
-    printf("\nerror against time at %d x %d, %d seeds per setting. rmse: the whole image "
-           "(mean, lowest and highest of the seeds); error: without the lamp and its images "
-           "(%d pixels of %d) and without the reference's noise, split into bias and variance:\n",
-           width, height, SEEDS, left_out, width * height);
+    printf(
+        "\nerror against time at %d x %d, %d seeds per setting. rmse: the whole image "
+        "(mean, lowest and highest of the seeds); error: without the lamp and its images "
+        "(%d pixels of %d) and without the reference's noise, split into bias and variance:\n",
+        width, height, SEEDS, left_out, width * height);
     experiment_write_error_table(options, "ch08_error_table", rows, ROWS);
 
-    const Vec3 colours[SERIES] = {{0.85, 0.1, 0.1}, {0.1, 0.2, 0.9}, {0.1, 0.6, 0.1}, {0.95, 0.55, 0.0}};
+    const Vec3 colours[SERIES] = {
+        {0.85, 0.1, 0.1}, {0.1, 0.2, 0.9}, {0.1, 0.6, 0.1}, {0.95, 0.55, 0.0}};
     char labels[SERIES][64];
     snprintf(labels[0], sizeof labels[0], "chapter 7 final, %d to %d spp", TABLE_SPP_PER_PASS,
              TABLE_SPP_PER_PASS << (STEPS - 1));
-    snprintf(labels[1], sizeof labels[1], "photon map, 1 to %d passes of %d spp", 1 << (STEPS - 1),
-             TABLE_SPP_PER_PASS);
+    snprintf(labels[1], sizeof labels[1], "photon map, 1 to %d passes of %d spp",
+             1 << (STEPS - 1), TABLE_SPP_PER_PASS);
     snprintf(labels[2], sizeof labels[2], "%d x the radius, shrinking", BLUR);
     snprintf(labels[3], sizeof labels[3], "%d x the radius, fixed", BLUR);
     PlotSeries series[SERIES];
     for (int s = 0; s < SERIES; s++)
-        series[s] = (PlotSeries){.label = labels[s], .x = x[s], .y = y[s], .count = STEPS,
-                                 .colour = colours[s], .markers = 1, .dashed = s == 3};
+        series[s] = (PlotSeries){.label = labels[s],
+                                 .x = x[s],
+                                 .y = y[s],
+                                 .count = STEPS,
+                                 .colour = colours[s],
+                                 .markers = 1,
+                                 .dashed = s == 3};
     Plot figure = {{"processor time (s)", PLOT_LOG, 0.0, 0.0, 0.0},
                    {"error (no lamp, no reference noise)", PLOT_LOG, 0.0, 0.0, 0.0},
-                   series, SERIES, 0.0};
+                   series,
+                   SERIES,
+                   0.0};
     char caption[512];
     snprintf(caption, sizeof caption,
              "error against processor time, log-log, each point the mean of %d seeds; the "
-             "shrinking radius's blur (bias) fades, the fixed one's stays", SEEDS);
+             "shrinking radius's blur (bias) fades, the fixed one's stays",
+             SEEDS);
     experiment_write_plot(options, "ch08_error_plot", &figure, 720, 480, caption);
     free(lamp);
     measure_reference_free(&references[0]);
@@ -251,12 +285,20 @@ int main(int argc, char **argv)
 {
     ProgramInfo info = {
         "Chapter 8, caustics from a photon map: chapter 7's final estimator against the same\n"
-        "estimator with progressive photon-mapped caustics at equal time, and their error against\n"
+        "estimator with progressive photon-mapped caustics at equal time, and their error "
+        "against\n"
         "time. Both use roulette with bounded weights unless --rr is given.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_RR | FLAG_DEPTH | FLAG_FRESNEL |
             FLAG_REFERENCE_SPP,
-        {.scene = "scenes/room.scene", .size = 800, .spp = 64, .shadow_rays = 1, .rr = 0.75,
-         .depth = 64, .seed = 1, .out = "build/figures", .reference_spp = REFERENCE_SPP},
+        {.scene = "scenes/room.scene",
+         .size = 800,
+         .spp = 64,
+         .shadow_rays = 1,
+         .rr = 0.75,
+         .depth = 64,
+         .seed = 1,
+         .out = "build/figures",
+         .reference_spp = REFERENCE_SPP},
     };
     Options options;
     Scene scene;

@@ -26,10 +26,7 @@ static Box box_union(Box a, Box b)
                    vec3(b.corner[1][0], b.corner[1][1], b.corner[1][2]));
 }
 
-static double box_extent(Box box, int k)
-{
-    return box.corner[1][k] - box.corner[0][k];
-}
+static double box_extent(Box box, int k) { return box.corner[1][k] - box.corner[0][k]; }
 
 /* Half the surface area: the heuristic compares areas, so the factor 2 is left out. */
 static double box_area(Box box)
@@ -124,7 +121,8 @@ static int build(Bvh *bvh, const Box *boxes, Item *items, int count, int first, 
     for (int i = 0; i < count; i++) {
         const double(*c)[3] = boxes[items[i].primitive].corner;
         box = box_union(box, boxes[items[i].primitive]);
-        centres = box_add(centres, vec3(c[0][0] + c[1][0], c[0][1] + c[1][1], c[0][2] + c[1][2]));
+        centres =
+            box_add(centres, vec3(c[0][0] + c[1][0], c[0][1] + c[1][1], c[0][2] + c[1][2]));
     }
     bvh->nodes[index] = (BvhNode){widened(box), -1, first, count};
     double spread = box_extent(centres, 0) + box_extent(centres, 1) + box_extent(centres, 2);
@@ -135,7 +133,8 @@ static int build(Bvh *bvh, const Box *boxes, Item *items, int count, int first, 
     }
     int split = best_split(boxes, items, count, scratch);
     build(bvh, boxes, items, split, first, level + 1, scratch);
-    int right = build(bvh, boxes, items + split, count - split, first + split, level + 1, scratch);
+    int right =
+        build(bvh, boxes, items + split, count - split, first + split, level + 1, scratch);
     bvh->nodes[index].right = right;
     bvh->nodes[index].count = 0;
     return index;
@@ -182,7 +181,8 @@ typedef struct {
 /* Narrow [*near, *far] to where the ray is between the two planes of axis k, the one
  * it meets first being the upper where d < 0. A slab the ray runs along (d = 0) gives
  * t = +-inf, or NaN on a plane, which the comparisons skip: the slab counts as met. */
-static inline void clip_to_slab(const Box *box, const BoxRay *r, int k, double *near, double *far)
+static inline void clip_to_slab(const Box *box, const BoxRay *r, int k, double *near,
+                                double *far)
 {
     int first = r->inverse[k] < 0.0;
     double t_in = (box->corner[first][k] - r->origin[k]) * r->inverse[k];

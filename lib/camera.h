@@ -19,6 +19,7 @@ typedef struct {
 Camera camera_make(Vec3 eye, Vec3 bottom_left, Vec3 bottom_right, Vec3 top_left);
 
 /* Exercise 1.3: the unit-direction ray through point (u, v) of pixel (col, row). */
-Ray camera_ray(const Camera *camera, int width, int height, int col, int row, double u, double v);
+Ray camera_ray(const Camera *camera, int width, int height, int col, int row, double u,
+               double v);
 
 #endif

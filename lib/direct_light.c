@@ -26,8 +26,9 @@ Vec3 direct_light(const Scene *scene, const Vertex *x, int images, const PathSet
     if (s->mis && s->sphere_guide > 0.0)
         sphere_guide_at(scene, p, n, s->sphere_guide, &bounce);
     for (int k = 0; k < s->shadow_rays; k++)
-        sum = vec3_add(sum, weighted(area_light_shadow_ray(scene, p, n, x->wo, x->material, rng,
-                                                           counts), n, &bounce, s));
+        sum = vec3_add(
+            sum, weighted(area_light_shadow_ray(scene, p, n, x->wo, x->material, rng, counts),
+                          n, &bounce, s));
     for (int plane = 0; images && plane < s->mirrors->count; plane++)
         for (int k = 0; k < s->shadow_rays; k++) {
             ShadowRay sample = mirror_light_shadow_ray(scene, &s->mirrors->planes[plane], p, n,

@@ -5,7 +5,9 @@
 
 #include "snell.h"
 
-typedef struct { double s, p; } Polarised;
+typedef struct {
+    double s, p;
+} Polarised;
 
 static double squared_ratio(double numerator, double denominator)
 {

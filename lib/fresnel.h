@@ -12,7 +12,10 @@
 
 /* Which reflectance a renderer uses at glass: Schlick's approximation (schlick.h, the
  * report's choice) or the exact equations below. */
-typedef enum { FRESNEL_SCHLICK, FRESNEL_EXACT } FresnelMode;
+typedef enum {
+    FRESNEL_SCHLICK,
+    FRESNEL_EXACT
+} FresnelMode;
 
 /* The reflectances for incidence cosine cos_i in [0, 1] (clamped), from index n_i
  * into n_t, both > 0. All three return 1 for total internal reflection. */

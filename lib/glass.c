@@ -11,8 +11,9 @@ Vec3 glass_scatter(Vec3 d, Vec3 n, int entering, double ior, const PathSettings 
     double n_i = entering ? 1.0 : ior, n_t = entering ? ior : 1.0;
     double cos_i = -vec3_dot(d, n);
 #if CHAPTER >= 4
-    double reflectance = settings->fresnel == FRESNEL_EXACT ? fresnel_reflectance(cos_i, n_i, n_t)
-                                                            : schlick_reflectance(cos_i, n_i, n_t);
+    double reflectance = settings->fresnel == FRESNEL_EXACT
+                             ? fresnel_reflectance(cos_i, n_i, n_t)
+                             : schlick_reflectance(cos_i, n_i, n_t);
 #else
     double reflectance = schlick_reflectance(cos_i, n_i, n_t);
 #endif

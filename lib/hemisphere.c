@@ -10,7 +10,4 @@ Vec3 hemisphere_sample_cosine(double u1, double u2)
     return vec3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
 }
 
-double hemisphere_pdf_cosine(Vec3 w_local)
-{
-    return w_local.z > 0.0 ? w_local.z / PI : 0.0;
-}
+double hemisphere_pdf_cosine(Vec3 w_local) { return w_local.z > 0.0 ? w_local.z / PI : 0.0; }

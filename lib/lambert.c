@@ -2,7 +2,4 @@
 #include "lambert.h"
 
 /* Eq. 8. */
-Vec3 lambert_brdf(Vec3 rho)
-{
-    return vec3_scale(rho, 1.0 / PI);
-}
+Vec3 lambert_brdf(Vec3 rho) { return vec3_scale(rho, 1.0 / PI); }

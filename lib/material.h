@@ -24,7 +24,7 @@ typedef struct {
     Vec3 emission;    /* emitted radiance Le, from the front side only */
     double ior;       /* glass: index of refraction; the outside medium has index 1 */
 #if CHAPTER >= 5
-    double sigma;     /* Oren-Nayar roughness: std. dev. of facet slope, radians */
+    double sigma; /* Oren-Nayar roughness: std. dev. of facet slope, radians */
 #endif
 } Material;
 

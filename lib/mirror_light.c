@@ -14,10 +14,7 @@
 #define PLANE_TOLERANCE 1e-12
 
 /* The largest term of n . v, what the rounding of the dot product is relative to. */
-static double largest_term(Vec3 n, Vec3 v)
-{
-    return vec3_max_abs(vec3_mul(n, v));
-}
+static double largest_term(Vec3 n, Vec3 v) { return vec3_max_abs(vec3_mul(n, v)); }
 
 static int in_plane(const MirrorPlane *plane, const Triangle *triangle)
 {
@@ -90,8 +87,7 @@ ShadowRay mirror_light_shadow_ray(const Scene *scene, const MirrorPlane *plane, 
     Hit hit;
     /* The segment to the image, offset at x as scene_occluded offsets its ends. */
     Ray to_mirror = ray_spawn(x, n, wi, max2(vec3_max_abs(x), vec3_max_abs(image)));
-    if (!scene_intersect(scene, to_mirror, distance, &hit) ||
-        hit.triangle < 0)
+    if (!scene_intersect(scene, to_mirror, distance, &hit) || hit.triangle < 0)
         return ray;
     const Material *mirror = &scene->materials[hit.material];
     if (mirror->kind != MATERIAL_MIRROR || !in_plane(plane, &scene->triangles[hit.triangle]))

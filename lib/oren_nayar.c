@@ -14,16 +14,10 @@ static double roughness_ratio(double sigma, double c)
 }
 
 /* Exercise 5.1, eq. 14: A with the "1 -" the report leaves out. */
-double oren_nayar_a(double sigma)
-{
-    return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);
-}
+double oren_nayar_a(double sigma) { return 1.0 - 0.5 * roughness_ratio(sigma, 0.33); }
 
 /* Exercise 5.2, eq. 14: B. */
-double oren_nayar_b(double sigma)
-{
-    return 0.45 * roughness_ratio(sigma, 0.09);
-}
+double oren_nayar_b(double sigma) { return 0.45 * roughness_ratio(sigma, 0.09); }
 
 /* Exercise 5.3: eq. 13 divided by rho / pi, with sin(alpha) tan(beta) (not sin(beta)),
  * written as max(0, x_i x_o + y_i y_o) / max(z_i, z_o) (see oren_nayar.h). */

@@ -49,8 +49,9 @@ Vec3 path_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
         if (x.material->kind == MATERIAL_LIGHT || segment >= s->max_depth)
             break;
         Vec3 direction;
-        Vec3 weight = material_is_diffuse(x.material) ? path_diffuse_bounce(&x, rng, &direction)
-                                                      : path_specular(&x, ray.dir, s, rng, &direction);
+        Vec3 weight = material_is_diffuse(x.material)
+                          ? path_diffuse_bounce(&x, rng, &direction)
+                          : path_specular(&x, ray.dir, s, rng, &direction);
         throughput = vec3_mul(throughput, weight);
         counts->bounce++;
         ray = ray_spawn(x.hit.point, x.normal, direction, x.hit.scale);

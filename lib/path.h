@@ -33,8 +33,8 @@ typedef struct {
     int rr_throughput;  /* k >= 1: bounded-weight roulette from segment k on, instead */
 #endif
 #if CHAPTER >= 7
-    int mis;             /* 1: light and BRDF sampling combined by the power heuristic */
-    int mirror_light;    /* K: at the first K diffuse hits, shadow rays to the lamps' images */
+    int mis;          /* 1: light and BRDF sampling combined by the power heuristic */
+    int mirror_light; /* K: at the first K diffuse hits, shadow rays to the lamps' images */
     const MirrorPlanes *mirrors; /* ... in these planar mirrors */
     double sphere_guide; /* > 0: bounces aimed at the mirror and glass spheres, this strongly */
 #endif

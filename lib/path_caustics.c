@@ -10,7 +10,11 @@
 /* How much of the emission a path hits it adds: all (no other estimator finds that
  * light), the share mis leaves to the bounce (the shadow rays or the images found the
  * rest), or none (a photon map's). */
-typedef enum { EMISSION_ALL, EMISSION_SHARE, EMISSION_NONE } Emission;
+typedef enum {
+    EMISSION_ALL,
+    EMISSION_SHARE,
+    EMISSION_NONE
+} Emission;
 
 Vec3 path_caustics_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                             RayCounts *counts)
@@ -26,11 +30,13 @@ Vec3 path_caustics_radiance(const Scene *scene, Ray ray, Rng *rng, const void *s
     Vertex x;
     for (int segment = 1; path_vertex(scene, ray, &x); segment++) {
         if (x.front && material_emits(x.material) && emission != EMISSION_NONE) {
-            double share = emission == EMISSION_ALL ? 1.0
-                           : s->mis ? direct_light_hit_weight(scene, s, bounce_pdf, travelled + x.hit.t,
-                                                              vec3_dot(x.wo, x.hit.normal))
-                                    : 0.0;
-            radiance = vec3_add(radiance, vec3_mul(throughput, vec3_scale(x.material->emission, share)));
+            double share =
+                emission == EMISSION_ALL ? 1.0
+                : s->mis ? direct_light_hit_weight(scene, s, bounce_pdf, travelled + x.hit.t,
+                                                   vec3_dot(x.wo, x.hit.normal))
+                         : 0.0;
+            radiance = vec3_add(radiance,
+                                vec3_mul(throughput, vec3_scale(x.material->emission, share)));
         }
         if (x.material->kind == MATERIAL_LIGHT || segment >= s->max_depth)
             break;
@@ -54,7 +60,8 @@ Vec3 path_caustics_radiance(const Scene *scene, Ray ray, Rng *rng, const void *s
             emission = s->shadow_rays > 0 ? EMISSION_SHARE : EMISSION_ALL;
             if (!roulette_continues(s, segment, &throughput, rng))
                 break;
-            weight = sphere_guide_bounce(scene, &x, s->sphere_guide, rng, &direction, &bounce_pdf);
+            weight =
+                sphere_guide_bounce(scene, &x, s->sphere_guide, rng, &direction, &bounce_pdf);
             if (weight.x == 0.0 && weight.y == 0.0 && weight.z == 0.0)
                 break; /* a guided direction below the surface */
             diffuse_vertices++;

@@ -22,7 +22,8 @@ Vec3 path_final_radiance(const Scene *scene, Ray ray, Rng *rng, const void *sett
         } else if (x.front && s->mis && material_emits(x.material)) {
             double weight = direct_light_hit_weight(scene, s, bounce_pdf, travelled + x.hit.t,
                                                     vec3_dot(x.wo, x.hit.normal));
-            radiance = vec3_add(radiance, vec3_mul(throughput, vec3_scale(x.material->emission, weight)));
+            radiance = vec3_add(radiance,
+                                vec3_mul(throughput, vec3_scale(x.material->emission, weight)));
         }
         if (x.material->kind == MATERIAL_LIGHT || segment >= s->max_depth)
             break;
@@ -38,7 +39,8 @@ Vec3 path_final_radiance(const Scene *scene, Ray ray, Rng *rng, const void *sett
             add_emission = s->shadow_rays == 0;
             if (!roulette_continues(s, segment, &throughput, rng))
                 break;
-            weight = sphere_guide_bounce(scene, &x, s->sphere_guide, rng, &direction, &bounce_pdf);
+            weight =
+                sphere_guide_bounce(scene, &x, s->sphere_guide, rng, &direction, &bounce_pdf);
             if (weight.x == 0.0 && weight.y == 0.0 && weight.z == 0.0)
                 break; /* a guided direction below the surface */
             diffuse_vertices++;

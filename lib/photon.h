@@ -48,7 +48,7 @@ int photon_trace(const Scene *scene, PhotonRay photon, PhotonPaths paths, Fresne
                  Rng *rng, Photon *stored, RayCounts *counts);
 
 typedef struct {
-    int emitted;         /* N, photons shot from the lights */
+    int emitted; /* N, photons shot from the lights */
     PhotonPaths paths;
     FresnelMode fresnel; /* the glass reflectance, as the path tracer's */
     uint64_t seed;       /* photon k uses rng_for_sample(seed, k, 0) */
@@ -61,9 +61,9 @@ int photon_shoot(const Scene *scene, const PhotonMapSettings *settings, int k, P
 
 typedef struct PhotonMap {
     Photon *photons;
-    int count;       /* stored */
+    int count; /* stored */
     int emitted;
-    PointGrid grid;  /* over the photons' positions */
+    PointGrid grid; /* over the photons' positions */
 } PhotonMap;
 
 /* The map of `count` photons stored out of `emitted` shot: a grid over their positions

@@ -24,7 +24,9 @@ static void add_photon(int index, double distance2, void *context)
     const Photon *p = &g->map->photons[index];
     if (vec3_dot(p->normal, g->n) < PHOTON_NORMAL_COS || vec3_dot(p->incoming, g->n) <= 0.0)
         return;
-    Vec3 weighted = g->lambert ? p->power : vec3_mul(diffuse_brdf(g->m, g->n, p->incoming, g->wo), p->power);
+    Vec3 weighted = g->lambert
+                        ? p->power
+                        : vec3_mul(diffuse_brdf(g->m, g->n, p->incoming, g->wo), p->power);
     g->sum = vec3_add(g->sum, weighted);
 }
 
@@ -41,7 +43,8 @@ static double reachable_area(const Scene *scene, const Vertex *x, double r)
     Vec3 above = vec3_add_scaled(p, n, 0.1 * r);
     uint64_t bits[3];
     memcpy(bits, &p, sizeof bits);
-    double turn = 2.0 * PI * (rng_hash(bits[0] ^ rng_hash(bits[1] ^ rng_hash(bits[2]))) >> 11) * 0x1p-53;
+    double turn =
+        2.0 * PI * (rng_hash(bits[0] ^ rng_hash(bits[1] ^ rng_hash(bits[2]))) >> 11) * 0x1p-53;
     int reached = 0;
     for (int i = 0; i < EDGE_POINTS; i++) {
         double rho = r * sqrt((i + 0.5) / EDGE_POINTS), angle = turn + 2.39996322972865332 * i;
@@ -68,7 +71,8 @@ Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 
 Vec3 photon_estimate_reachable(const Scene *scene, const PhotonMap *map, double radius,
                                const Vertex *x)
 {
-    Vec3 box = photon_estimate_radiance(map, radius, x->hit.point, x->normal, x->wo, x->material);
+    Vec3 box =
+        photon_estimate_radiance(map, radius, x->hit.point, x->normal, x->wo, x->material);
     if (box.x == 0.0 && box.y == 0.0 && box.z == 0.0)
         return box; /* no photons: no need to know the area */
     return vec3_scale(box, PI * radius * radius / reachable_area(scene, x, radius));
@@ -105,7 +109,8 @@ static double view_depth(const Scene *scene, Vec3 axis, double plane_depth)
     for (int i = 0; i < scene->light_count; i++) {
         const Triangle *t = &scene->triangles[scene->light_triangles[i]];
         for (int k = 0; k < 3; k++)
-            farthest = fmax(farthest, vec3_length(vec3_sub(triangle_point(t, k == 1, k == 2), c->eye)));
+            farthest = fmax(farthest,
+                            vec3_length(vec3_sub(triangle_point(t, k == 1, k == 2), c->eye)));
     }
     return farthest;
 }
@@ -119,7 +124,8 @@ double ppm_first_radius(const Scene *scene, double fraction)
         axis = vec3_neg(axis);
         plane_depth = -plane_depth;
     }
-    return fraction * vec3_length(c->right) * view_depth(scene, axis, plane_depth) / plane_depth;
+    return fraction * vec3_length(c->right) * view_depth(scene, axis, plane_depth) /
+           plane_depth;
 }
 
 double ppm_radius(double first_radius, double alpha, int pass)

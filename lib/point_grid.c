@@ -17,7 +17,8 @@
 static Vec3 cube_of(Vec3 p, double reach)
 {
     double inverse_side = 0.5 / reach;
-    return vec3(floor(p.x * inverse_side), floor(p.y * inverse_side), floor(p.z * inverse_side));
+    return vec3(floor(p.x * inverse_side), floor(p.y * inverse_side),
+                floor(p.z * inverse_side));
 }
 
 /* Teschner et al.'s spatial hash of a cube: each coordinate times a large prime, XORed. */
@@ -150,8 +151,8 @@ static void visit_if_near(const PointGrid *grid, int i, Vec3 center, double radi
         visit(i, distance2, context);
 }
 
-void point_grid_query_radius(const PointGrid *grid, Vec3 center, double radius, PointVisit visit,
-                             void *context)
+void point_grid_query_radius(const PointGrid *grid, Vec3 center, double radius,
+                             PointVisit visit, void *context)
 {
     double radius2 = radius * radius;
     if (!(radius <= grid->radius) || radius2 == INFINITY || grid->buckets == 0) {

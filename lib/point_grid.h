@@ -19,13 +19,14 @@
 #define POINT_GRID_MAX_POINTS (1 << 24)
 
 typedef struct {
-    Vec3 *points;       /* copies of the points, in the order given */
-    Vec3 *filed_cube;   /* filing f: points[filed_point[f]] under the cube filed_cube[f] */
+    Vec3 *points;     /* copies of the points, in the order given */
+    Vec3 *filed_cube; /* filing f: points[filed_point[f]] under the cube filed_cube[f] */
     int *filed_point;
-    int *start;         /* bucket b holds filings start[b] .. start[b + 1] - 1 */
-    int count, buckets; /* buckets = 0: no cubes (radius beyond ~1e300), queries test every point */
-    double radius;      /* R */
-    double reach;       /* R': R widened for rounding, half a cube's side */
+    int *start; /* bucket b holds filings start[b] .. start[b + 1] - 1 */
+    int count,
+        buckets;   /* buckets = 0: no cubes (radius beyond ~1e300), queries test every point */
+    double radius; /* R */
+    double reach;  /* R': R widened for rounding, half a cube's side */
 } PointGrid;
 
 /* Build over `count` points (count may be 0; the points are copied) for queries of a
@@ -45,7 +46,7 @@ typedef void (*PointVisit)(int index, double distance2, void *context);
 
 /* Every point p with |p - center|^2 <= radius^2 (as computed in doubles), each once,
  * in no particular order. A radius above the grid's tests every point. */
-void point_grid_query_radius(const PointGrid *grid, Vec3 center, double radius, PointVisit visit,
-                             void *context);
+void point_grid_query_radius(const PointGrid *grid, Vec3 center, double radius,
+                             PointVisit visit, void *context);
 
 #endif

@@ -20,10 +20,12 @@ void queries_free(Scene *scene)
 static int every_primitive(const Scene *scene, Ray ray, double *tmax, int any_hit)
 {
     int nearest = -1;
-    for (int i = 0; i < scene->triangle_count + scene->sphere_count && !(any_hit && nearest >= 0); i++) {
-        double t = i < scene->triangle_count
-                       ? triangle_intersect(&scene->triangles[i], ray, 0.0, *tmax)
-                       : sphere_intersect(&scene->spheres[i - scene->triangle_count], ray, 0.0, *tmax);
+    for (int i = 0;
+         i < scene->triangle_count + scene->sphere_count && !(any_hit && nearest >= 0); i++) {
+        double t =
+            i < scene->triangle_count
+                ? triangle_intersect(&scene->triangles[i], ray, 0.0, *tmax)
+                : sphere_intersect(&scene->spheres[i - scene->triangle_count], ray, 0.0, *tmax);
         if (t < *tmax) {
             *tmax = t;
             nearest = i;

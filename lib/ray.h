@@ -13,7 +13,9 @@
 
 #define RAY_OFFSET 1e-10
 
-typedef struct { Vec3 origin, dir; } Ray;
+typedef struct {
+    Vec3 origin, dir;
+} Ray;
 
 static inline Vec3 ray_at(Ray ray, double t) { return vec3_add_scaled(ray.origin, ray.dir, t); }
 

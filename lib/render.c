@@ -3,8 +3,8 @@
 
 #include <stddef.h>
 
-Vec3 render_sample(const Scene *scene, const ImageSettings *image, int col, int row,
-                   int sample, Estimator estimate, const void *settings, RayCounts *counts)
+Vec3 render_sample(const Scene *scene, const ImageSettings *image, int col, int row, int sample,
+                   Estimator estimate, const void *settings, RayCounts *counts)
 {
 #if CHAPTER >= 2
     uint64_t pixel = (uint64_t)row * (uint64_t)image->width + (uint64_t)col;
@@ -22,7 +22,8 @@ Vec3 render_sample(const Scene *scene, const ImageSettings *image, int col, int 
 #if CHAPTER >= 8
     if (image->sampling == PIXEL_PROGRESSIVE) {
         rng_stratify(rng, image->seed, pixel, (uint32_t)sample);
-        sobol_pair((uint32_t)sample, rng_hash(~rng->strata_key), &u, &v); /* a key no pair uses */
+        sobol_pair((uint32_t)sample, rng_hash(~rng->strata_key), &u,
+                   &v); /* a key no pair uses */
     }
 #endif
     Ray ray = camera_ray(&scene->camera, image->width, image->height, col, row, u, v);

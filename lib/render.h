@@ -40,7 +40,7 @@ typedef struct {
 
 /* Sample `sample` of pixel (col, row): the radiance that estimate() brings back along
  * the sample's camera ray. */
-Vec3 render_sample(const Scene *scene, const ImageSettings *image, int col, int row,
-                   int sample, Estimator estimate, const void *settings, RayCounts *counts);
+Vec3 render_sample(const Scene *scene, const ImageSettings *image, int col, int row, int sample,
+                   Estimator estimate, const void *settings, RayCounts *counts);
 
 #endif

@@ -31,10 +31,7 @@ uint32_t rng_next(Rng *rng)
     return (xorshifted >> rotation) | (xorshifted << ((32u - rotation) & 31u));
 }
 
-double rng_uniform(Rng *rng)
-{
-    return rng_next(rng) * 0x1p-32;
-}
+double rng_uniform(Rng *rng) { return rng_next(rng) * 0x1p-32; }
 
 #if CHAPTER < 7
 void rng_pair(Rng *rng, double *u, double *v)

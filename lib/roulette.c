@@ -15,8 +15,9 @@ int roulette_continues(const PathSettings *settings, int segment, Vec3 *throughp
 {
     double survival = settings->rr_survival;
     if (settings->rr_throughput > 0)
-        survival = segment >= settings->rr_throughput ? roulette_survival_from_throughput(*throughput)
-                                                      : 1.0;
+        survival = segment >= settings->rr_throughput
+                       ? roulette_survival_from_throughput(*throughput)
+                       : 1.0;
     if (!(survival > 0.0 && survival < 1.0))
         return 1; /* no roulette */
     if (!roulette_survives(survival, rng))

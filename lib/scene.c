@@ -8,7 +8,10 @@
 #include "query_method.h" /* the queries as scene->query says */
 #else
 /* The queries go through the tree (bvh.h). */
-static int queries_prepare(Scene *scene) { return bvh_build(&scene->bvh, scene_primitives(scene)); }
+static int queries_prepare(Scene *scene)
+{
+    return bvh_build(&scene->bvh, scene_primitives(scene));
+}
 static void queries_free(Scene *scene) { bvh_free(&scene->bvh); }
 static int queries_nearest(const Scene *scene, Ray ray, double *tmax)
 {
@@ -20,10 +23,7 @@ static int queries_any(const Scene *scene, Ray ray, double tmax)
 }
 #endif
 
-void scene_init(Scene *scene)
-{
-    memset(scene, 0, sizeof *scene);
-}
+void scene_init(Scene *scene) { memset(scene, 0, sizeof *scene); }
 
 void scene_free(Scene *scene)
 {
@@ -57,12 +57,14 @@ static int append(void **array, int *count, const void *element, size_t size)
 
 int scene_add_material(Scene *scene, Material material)
 {
-    return append((void **)&scene->materials, &scene->material_count, &material, sizeof material);
+    return append((void **)&scene->materials, &scene->material_count, &material,
+                  sizeof material);
 }
 
 int scene_add_triangle(Scene *scene, Triangle triangle)
 {
-    return append((void **)&scene->triangles, &scene->triangle_count, &triangle, sizeof triangle);
+    return append((void **)&scene->triangles, &scene->triangle_count, &triangle,
+                  sizeof triangle);
 }
 
 int scene_add_sphere(Scene *scene, Sphere sphere)
@@ -72,7 +74,8 @@ int scene_add_sphere(Scene *scene, Sphere sphere)
 
 int scene_add_point_light(Scene *scene, PointLight light)
 {
-    return append((void **)&scene->point_lights, &scene->point_light_count, &light, sizeof light);
+    return append((void **)&scene->point_lights, &scene->point_light_count, &light,
+                  sizeof light);
 }
 
 int scene_prepare(Scene *scene)

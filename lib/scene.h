@@ -14,7 +14,11 @@
 #include "wide_bvh.h"
 
 /* How the ray queries find a hit: chapter 9 measures each. */
-typedef enum { QUERY_WIDE_TREE, QUERY_BINARY_TREE, QUERY_EVERY_PRIMITIVE } QueryMethod;
+typedef enum {
+    QUERY_WIDE_TREE,
+    QUERY_BINARY_TREE,
+    QUERY_EVERY_PRIMITIVE
+} QueryMethod;
 #endif
 #include "camera.h"
 #include "material.h"
@@ -37,16 +41,16 @@ typedef struct {
     PointLight *point_lights;
     int point_light_count;
     /* Built by scene_prepare(): */
-    Bvh bvh;                  /* over all triangles and spheres */
+    Bvh bvh; /* over all triangles and spheres */
 #if CHAPTER >= 3
     int *light_triangles;     /* indices of the emitting triangles */
     double *light_cumulative; /* running sum of their areas, for choosing one by area */
     int light_count;
-    double light_area;        /* total emitting area */
+    double light_area; /* total emitting area */
 #endif
 #if CHAPTER >= 9
-    WideBvh wide;             /* the same tree made four-wide */
-    QueryMethod query;        /* QUERY_WIDE_TREE unless set after scene_prepare() */
+    WideBvh wide;      /* the same tree made four-wide */
+    QueryMethod query; /* QUERY_WIDE_TREE unless set after scene_prepare() */
 #endif
 } Scene;
 
@@ -54,7 +58,7 @@ typedef struct {
 typedef struct {
     double t;
     Vec3 point;
-    Vec3 normal;  /* unit geometric normal of the front side (outward on spheres) */
+    Vec3 normal; /* unit geometric normal of the front side (outward on spheres) */
     int material;
     int triangle; /* index of the triangle hit, or -1 for a sphere */
     double scale; /* the surface's numbers behind the point's error (ray.h) */
@@ -63,7 +67,8 @@ typedef struct {
 /* The primitives the hierarchy is built over (bvh.h). */
 static inline BvhPrimitives scene_primitives(const Scene *scene)
 {
-    BvhPrimitives p = {scene->triangles, scene->triangle_count, scene->spheres, scene->sphere_count};
+    BvhPrimitives p = {scene->triangles, scene->triangle_count, scene->spheres,
+                       scene->sphere_count};
     return p;
 }
 

@@ -46,10 +46,12 @@ static Vec3 cone_sample(Vec3 axis, double cos_max, double u1, double u2)
     double sin_theta = sqrt(fmax(0.0, 1.0 - cos_theta * cos_theta)), phi = 2.0 * PI * u2;
     Vec3 t, b;
     vec3_basis(axis, &t, &b);
-    return vec3_from_local(vec3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta), t, b, axis);
+    return vec3_from_local(vec3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta), t, b,
+                           axis);
 }
 
-Vec3 sphere_guide_sample(const SphereGuide *guide, Vec3 n, double u_select, double u1, double u2)
+Vec3 sphere_guide_sample(const SphereGuide *guide, Vec3 n, double u_select, double u1,
+                         double u2)
 {
     double below = guide->cosine_share;
     if (u_select < below || guide->count == 0) {
@@ -94,5 +96,6 @@ Vec3 sphere_guide_bounce(const Scene *scene, const Vertex *x, double strength, R
     double cos_theta = vec3_dot(x->normal, *direction);
     if (cos_theta <= 0.0)
         return vec3(0, 0, 0);
-    return vec3_scale(diffuse_brdf(x->material, x->normal, *direction, x->wo), cos_theta / *pdf);
+    return vec3_scale(diffuse_brdf(x->material, x->normal, *direction, x->wo),
+                      cos_theta / *pdf);
 }

@@ -20,7 +20,7 @@
 
 typedef struct {
     int count;
-    Vec3 axis[SPHERE_GUIDE_MAX];     /* unit, from x to the sphere's centre */
+    Vec3 axis[SPHERE_GUIDE_MAX];      /* unit, from x to the sphere's centre */
     double cos_max[SPHERE_GUIDE_MAX]; /* cos theta_k */
     double density[SPHERE_GUIDE_MAX]; /* q_k / Omega_k */
     double share[SPHERE_GUIDE_MAX];   /* q_k */
@@ -31,7 +31,8 @@ typedef struct {
 void sphere_guide_at(const Scene *scene, Vec3 x, Vec3 n, double strength, SphereGuide *guide);
 
 /* A direction drawn from the mixture, from u_select, u1, u2 uniform in [0, 1). */
-Vec3 sphere_guide_sample(const SphereGuide *guide, Vec3 n, double u_select, double u1, double u2);
+Vec3 sphere_guide_sample(const SphereGuide *guide, Vec3 n, double u_select, double u1,
+                         double u2);
 
 /* The mixture's density p(w) in solid angle. */
 double sphere_guide_pdf(const SphereGuide *guide, Vec3 n, Vec3 w);

@@ -11,9 +11,15 @@
 
 #define PI 3.14159265358979323846
 
-typedef struct { double x, y, z; } Vec3;
+typedef struct {
+    double x, y, z;
+} Vec3;
 
-static inline Vec3 vec3(double x, double y, double z) { Vec3 v = {x, y, z}; return v; }
+static inline Vec3 vec3(double x, double y, double z)
+{
+    Vec3 v = {x, y, z};
+    return v;
+}
 static inline Vec3 vec3_add(Vec3 a, Vec3 b) { return vec3(a.x + b.x, a.y + b.y, a.z + b.z); }
 static inline Vec3 vec3_sub(Vec3 a, Vec3 b) { return vec3(a.x - b.x, a.y - b.y, a.z - b.z); }
 static inline Vec3 vec3_scale(Vec3 a, double s) { return vec3(a.x * s, a.y * s, a.z * s); }
@@ -36,9 +42,15 @@ static inline Vec3 vec3_add_scaled(Vec3 a, Vec3 b, double s)
  * rules and are library calls in the renderer's inner loops. */
 static inline double max2(double a, double b) { return a > b ? a : b; }
 static inline double min2(double a, double b) { return a < b ? a : b; }
-static inline double vec3_max_abs(Vec3 a) { return max2(fabs(a.x), max2(fabs(a.y), fabs(a.z))); }
+static inline double vec3_max_abs(Vec3 a)
+{
+    return max2(fabs(a.x), max2(fabs(a.y), fabs(a.z)));
+}
 static inline double vec3_max_component(Vec3 a) { return max2(a.x, max2(a.y, a.z)); }
 static inline double vec3_average(Vec3 a) { return (a.x + a.y + a.z) / 3.0; }
-static inline int vec3_is_finite(Vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+static inline int vec3_is_finite(Vec3 a)
+{
+    return isfinite(a.x) && isfinite(a.y) && isfinite(a.z);
+}
 
 #endif

@@ -36,7 +36,8 @@ static Vec3 trace(const Scene *scene, Ray ray, int depth, int max_depth, RayCoun
     Vec3 radiance = front ? m->emission : vec3(0, 0, 0);
 
     if (material_is_diffuse(m))
-        return vec3_add(radiance, point_lights_direct(scene, hit.point, n, m->reflectance, counts));
+        return vec3_add(radiance,
+                        point_lights_direct(scene, hit.point, n, m->reflectance, counts));
     if (depth >= max_depth || (m->kind != MATERIAL_MIRROR && m->kind != MATERIAL_GLASS))
         return radiance;
 

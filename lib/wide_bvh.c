@@ -33,7 +33,8 @@ static int gather_children(const Bvh *binary, int index, int children[WIDE_BVH_W
         int largest = -1;
         for (int k = 0; k < n; k++)
             if (nodes[children[k]].count == 0 &&
-                (largest < 0 || node_area(&nodes[children[k]]) > node_area(&nodes[children[largest]])))
+                (largest < 0 ||
+                 node_area(&nodes[children[k]]) > node_area(&nodes[children[largest]])))
                 largest = k;
         if (largest < 0)
             break;
@@ -74,7 +75,9 @@ static int make_wide(WideBvh *wide, const Bvh *binary, int index)
             }
         }
         node->is_leaf[k] = c && c->count > 0;
-        node->child[k] = !c ? -1 : c->count > 0 ? make_leaf(wide, c) : make_wide(wide, binary, children[k]);
+        node->child[k] = !c             ? -1
+                         : c->count > 0 ? make_leaf(wide, c)
+                                        : make_wide(wide, binary, children[k]);
     }
     return number;
 }
@@ -133,7 +136,7 @@ void wide_bvh_free(WideBvh *wide)
 typedef struct {
     float origin[2][3][WIDE_BVH_WIDTH]; /* [0] for the near planes, [1] for the far ones */
     float inverse[3][WIDE_BVH_WIDTH];
-    int near[3];                        /* 0: the lower plane is met first, 1: the upper */
+    int near[3]; /* 0: the lower plane is met first, 1: the upper */
     double exact_origin[3], exact_inverse[3];
 } BoxRay;
 
@@ -144,7 +147,8 @@ static inline void box_ray_axis(BoxRay *r, int axis, double origin, double dir, 
     double inverse = 1.0 / dir;
     float below, above;
     float_bracket((origin - centre) * scale, &below, &above);
-    float inverse_float = fabs(inverse) > FLT_MAX ? (float)copysign(INFINITY, inverse) : (float)inverse;
+    float inverse_float =
+        fabs(inverse) > FLT_MAX ? (float)copysign(INFINITY, inverse) : (float)inverse;
     for (int k = 0; k < WIDE_BVH_WIDTH; k++) {
         r->origin[0][axis][k] = near ? below : above;
         r->origin[1][axis][k] = near ? above : below;
@@ -189,8 +193,10 @@ static int leaf_hit(const WideBvhLeaf *leaf, const BoxRay *r, double tmax)
 {
     double near = 0.0, far = tmax;
     for (int k = 0; k < 3; k++) {
-        double t_near = (leaf->box.corner[r->near[k]][k] - r->exact_origin[k]) * r->exact_inverse[k];
-        double t_far = (leaf->box.corner[1 - r->near[k]][k] - r->exact_origin[k]) * r->exact_inverse[k];
+        double t_near =
+            (leaf->box.corner[r->near[k]][k] - r->exact_origin[k]) * r->exact_inverse[k];
+        double t_far =
+            (leaf->box.corner[1 - r->near[k]][k] - r->exact_origin[k]) * r->exact_inverse[k];
         near = t_near > near ? t_near : near;
         far = t_far < far ? t_far : far;
     }

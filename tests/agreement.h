@@ -27,11 +27,11 @@
 #include "image.h"
 
 typedef struct {
-    int tests;          /* values compared */
-    double level;       /* Sidak-corrected level of each test */
-    double smallest_p;  /* the smallest p-value, at ... */
+    int tests;         /* values compared */
+    double level;      /* Sidak-corrected level of each test */
+    double smallest_p; /* the smallest p-value, at ... */
     int col, row, channel;
-    double z;           /* ... where z was this */
+    double z; /* ... where z was this */
 } Agreement;
 
 static inline Agreement agreement_test(const Image *a, const Image *se_a, const Image *b,
@@ -41,7 +41,8 @@ static inline Agreement agreement_test(const Image *a, const Image *se_a, const 
     long n = 3L * a->width * a->height;
     for (long i = 0; i < n; i++) {
         double sa = se_a->pixels[i], sb = se_b->pixels[i];
-        double difference = (double)a->pixels[i] - b->pixels[i], spread = sqrt(sa * sa + sb * sb);
+        double difference = (double)a->pixels[i] - b->pixels[i],
+               spread = sqrt(sa * sa + sb * sb);
         if (spread == 0.0 && difference == 0.0)
             continue;
         result.tests++;

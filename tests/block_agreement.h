@@ -38,9 +38,9 @@ static inline void block_means(const RenderResult *r, int bx, int by, int c, dou
 /* Estimator a with settings a (spp_a samples) and b (spp_b) agree on a scene at
  * SIDE x SIDE pixels: the block chi-square above at significance level 0.1%, and the
  * image means within 4 standard errors. */
-static inline void assert_agree_on(const Scene *scene, Estimator a, const PathSettings *a_settings,
-                                   int spp_a, Estimator b, const PathSettings *b_settings,
-                                   int spp_b)
+static inline void assert_agree_on(const Scene *scene, Estimator a,
+                                   const PathSettings *a_settings, int spp_a, Estimator b,
+                                   const PathSettings *b_settings, int spp_b)
 {
     RenderSettings first = {{SIDE, SIDE, spp_a, PIXEL_RANDOM, 1}, 0, 0, "test"};
     RenderSettings second = {{SIDE, SIDE, spp_b, PIXEL_RANDOM, 2}, 0, 0, "test"};

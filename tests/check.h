@@ -10,11 +10,11 @@
 #include "triangle.h"
 #include "test_random.h"
 
-#define assert_close(a, b, tol) \
-    do { \
-        double a_ = (a), b_ = (b); \
-        if (!(fabs(a_ - b_) <= (tol))) \
-            fail_msg("%s = %.17g, expected %.17g within %.3g", #a, a_, b_, (double)(tol)); \
+#define assert_close(a, b, tol)                                                                \
+    do {                                                                                       \
+        double a_ = (a), b_ = (b);                                                             \
+        if (!(fabs(a_ - b_) <= (tol)))                                                         \
+            fail_msg("%s = %.17g, expected %.17g within %.3g", #a, a_, b_, (double)(tol));     \
     } while (0)
 
 /* Two unit vectors t, b that with the unit vector n make a right-handed orthonormal
@@ -30,7 +30,8 @@ static inline void test_frame(Vec3 n, Vec3 *t, Vec3 *b)
 /* x t + y b + z n for local = (x, y, z). */
 static inline Vec3 test_from_frame(Vec3 local, Vec3 t, Vec3 b, Vec3 n)
 {
-    return vec3_add(vec3_add(vec3_scale(t, local.x), vec3_scale(b, local.y)), vec3_scale(n, local.z));
+    return vec3_add(vec3_add(vec3_scale(t, local.x), vec3_scale(b, local.y)),
+                    vec3_scale(n, local.z));
 }
 
 /* The point at barycentric (u, v) of a triangle: v0 + u e1 + v e2 (eq. 16). */

@@ -54,7 +54,9 @@ static inline void furnace_wall_piece(Scene *scene, int axis, int side, double u
 static inline void furnace_box_uniform(Scene *scene, double rho, double emission)
 {
     scene_init(scene);
-    Material m = {.name = "furnace", .kind = MATERIAL_LAMBERT, .reflectance = vec3(rho, rho, rho),
+    Material m = {.name = "furnace",
+                  .kind = MATERIAL_LAMBERT,
+                  .reflectance = vec3(rho, rho, rho),
                   .emission = vec3(emission, emission, emission)};
     int material = scene_add_material(scene, m);
     for (int axis = 0; axis < 3; axis++)
@@ -65,8 +67,12 @@ static inline void furnace_box_uniform(Scene *scene, double rho, double emission
 static inline void furnace_box_bordered(Scene *scene)
 {
     scene_init(scene);
-    Material light = {.name = "light", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5), .emission = vec3(1, 1, 1)};
-    Material border = {.name = "border", .kind = MATERIAL_LAMBERT, .reflectance = vec3(1, 1, 1)};
+    Material light = {.name = "light",
+                      .kind = MATERIAL_LAMBERT,
+                      .reflectance = vec3(0.5, 0.5, 0.5),
+                      .emission = vec3(1, 1, 1)};
+    Material border = {
+        .name = "border", .kind = MATERIAL_LAMBERT, .reflectance = vec3(1, 1, 1)};
     int light_index = scene_add_material(scene, light);
     int border_index = scene_add_material(scene, border);
     const double cuts[4] = {-1.0, -FURNACE_LIGHT_HALF_WIDTH, FURNACE_LIGHT_HALF_WIDTH, 1.0};
@@ -75,8 +81,8 @@ static inline void furnace_box_bordered(Scene *scene)
             for (int i = 0; i < 3; i++)
                 for (int j = 0; j < 3; j++)
                     furnace_wall_piece(scene, axis, side, cuts[i], cuts[i + 1], cuts[j],
-                                       cuts[j + 1], i == 1 && j == 1 ? light_index : border_index);
+                                       cuts[j + 1],
+                                       i == 1 && j == 1 ? light_index : border_index);
 }
-
 
 #endif

@@ -73,29 +73,34 @@ static inline void radiance_two_furnace(void (*make_box)(Scene *), Estimator pat
 /* A coloured mirror in a glowing box: the uniform box with rho = 0 and Le = 1, and a
  * mirror sphere of reflectance (0.9, 0.5, 0.2) in it. A ray that meets the mirror is
  * reflected onto a wall, which adds Le weighted by the mirror's colour; the black wall
- * then adds nothing more (and its shadow rays, from chapter 3, see rho = 0). So every ray aimed at the sphere returns exactly (0.9, 0.5,
- * 0.2), and every ray that misses it exactly 1. A path tracer that forgets the mirror's
- * colour returns (1, 1, 1) for both: the room's only mirrors are white, so no other test
- * sees it. */
-static inline void coloured_mirror(Estimator path, const PathSettings *settings, uint64_t stream)
+ * then adds nothing more (and its shadow rays, from chapter 3, see rho = 0). So every ray aimed
+ * at the sphere returns exactly (0.9, 0.5, 0.2), and every ray that misses it exactly 1. A path
+ * tracer that forgets the mirror's colour returns (1, 1, 1) for both: the room's only mirrors
+ * are white, so no other test sees it. */
+static inline void coloured_mirror(Estimator path, const PathSettings *settings,
+                                   uint64_t stream)
 {
     Scene scene;
     furnace_box_uniform(&scene, 0.0, 1.0);
-    Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(0.9, 0.5, 0.2)};
+    Material mirror = {
+        .name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(0.9, 0.5, 0.2)};
     Vec3 centre = vec3(0.4, 0.1, -0.2);
-    assert_true(scene_add_sphere(&scene, (Sphere){centre, 0.3, scene_add_material(&scene, mirror)}) >= 0);
+    assert_true(scene_add_sphere(
+                    &scene, (Sphere){centre, 0.3, scene_add_material(&scene, mirror)}) >= 0);
     assert_int_equal(scene_prepare(&scene), 0);
     RayCounts counts = {0, 0, 0};
     for (int i = 0; i < 1000; i++) {
         Rng rng = rng_for_sample(21, stream, (uint64_t)i);
         /* Aimed at a point inside the sphere (within 0.15 sqrt 3 = 0.26 of its centre):
          * the ray meets its surface. */
-        Vec3 offset = vec3(rng_uniform(&rng) - 0.5, rng_uniform(&rng) - 0.5, rng_uniform(&rng) - 0.5);
+        Vec3 offset =
+            vec3(rng_uniform(&rng) - 0.5, rng_uniform(&rng) - 0.5, rng_uniform(&rng) - 0.5);
         Ray ray = ray_through(vec3(-0.5, 0, 0), vec3_add_scaled(centre, offset, 0.3));
         Vec3 hit = path(&scene, ray, &rng, settings, &counts);
         assert_true(fabs(hit.x - 0.9) < 1e-12 && fabs(hit.y - 0.5) < 1e-12 &&
                     fabs(hit.z - 0.2) < 1e-12);
-        Vec3 away = path(&scene, (Ray){vec3(-0.5, 0, 0), vec3(-1, 0, 0)}, &rng, settings, &counts);
+        Vec3 away =
+            path(&scene, (Ray){vec3(-0.5, 0, 0), vec3(-1, 0, 0)}, &rng, settings, &counts);
         assert_true(away.x == 1.0 && away.y == 1.0 && away.z == 1.0);
     }
     scene_free(&scene);

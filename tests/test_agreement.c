@@ -62,7 +62,8 @@ static Scene load(const char *path)
 static RenderResult render_path(const Scene *scene, int side, Estimator estimate,
                                 const PathSettings *path, int spp, uint64_t seed)
 {
-    RenderSettings settings = {{side, side, spp, PIXEL_RANDOM, seed}, side < 8 ? 1 : 0, 0, "test"};
+    RenderSettings settings = {
+        {side, side, spp, PIXEL_RANDOM, seed}, side < 8 ? 1 : 0, 0, "test"};
     RenderResult result;
     assert_int_equal(render(scene, &settings, estimate, path, &result), 0);
     return result;
@@ -70,7 +71,8 @@ static RenderResult render_path(const Scene *scene, int side, Estimator estimate
 
 static Agreement agree(const char *what, const RenderResult *a, const RenderResult *b)
 {
-    Agreement agreement = agreement_test(&a->image, &a->std_error, &b->image, &b->std_error, LEVEL);
+    Agreement agreement =
+        agreement_test(&a->image, &a->std_error, &b->image, &b->std_error, LEVEL);
     agreement_print(what, &agreement);
     return agreement;
 }
@@ -95,7 +97,8 @@ static Agreement compare(const char *what, const Scene *scene, int side, Estimat
 static void test_shadow_rays_agree_with_hitting(void **state)
 {
     Scene scene = load("scenes/room.scene");
-    PathSettings shadow = {.max_depth = DEPTH, .shadow_rays = 1}, hitting = {.max_depth = DEPTH};
+    PathSettings shadow = {.max_depth = DEPTH, .shadow_rays = 1},
+                 hitting = {.max_depth = DEPTH};
     RenderResult reference = render_path(&scene, ROOM_SIDE, path_radiance, &hitting, 8192, 2);
     RenderResult image = render_path(&scene, ROOM_SIDE, path_direct_radiance, &shadow, 1024, 1);
     Agreement agreement = agree("M=1 against M=0", &image, &reference);
@@ -129,7 +132,8 @@ static void test_exact_fresnel(void **state)
 {
     Scene scene = load("scenes/room.scene");
     look_at_the_glass(&scene);
-    PathSettings shadow = {.max_depth = DEPTH, .shadow_rays = 1, .fresnel = FRESNEL_EXACT}, hitting = {.max_depth = DEPTH, .fresnel = FRESNEL_EXACT};
+    PathSettings shadow = {.max_depth = DEPTH, .shadow_rays = 1, .fresnel = FRESNEL_EXACT},
+                 hitting = {.max_depth = DEPTH, .fresnel = FRESNEL_EXACT};
     Agreement agreement =
         compare("exact Fresnel, M=1 against M=0", &scene, ROOM_SIDE, path_direct_radiance,
                 &shadow, 1024, path_radiance, &hitting, 8192);
@@ -144,8 +148,8 @@ static void test_exact_fresnel(void **state)
 static void look_at_the_rough_sphere(Scene *scene)
 {
     Vec3 eye = scene->camera.eye;
-    scene->camera = camera_make(eye, vec3(1, 0.3867, -0.17), vec3(1, 0.0467, -0.17),
-                                vec3(1, 0.3867, 0.17));
+    scene->camera =
+        camera_make(eye, vec3(1, 0.3867, -0.17), vec3(1, 0.0467, -0.17), vec3(1, 0.3867, 0.17));
 }
 #endif
 
@@ -154,7 +158,8 @@ static void test_oren_nayar(void **state)
 {
     Scene scene = load("scenes/oren_nayar.scene");
     look_at_the_rough_sphere(&scene);
-    PathSettings shadow = {.max_depth = DEPTH, .shadow_rays = 1}, hitting = {.max_depth = DEPTH};
+    PathSettings shadow = {.max_depth = DEPTH, .shadow_rays = 1},
+                 hitting = {.max_depth = DEPTH};
     Agreement agreement =
         compare("Oren-Nayar, M=1 against M=0", &scene, 6, path_direct_radiance, &shadow, 4096,
                 path_radiance, &hitting, 65536);
@@ -167,7 +172,8 @@ static void test_oren_nayar(void **state)
 static void test_roulette_agrees_with_none(void **state)
 {
     Scene scene = load("scenes/room.scene");
-    PathSettings roulette = {.max_depth = 8, .shadow_rays = 1, .rr_survival = 0.75}, none = {.max_depth = 8, .shadow_rays = 1};
+    PathSettings roulette = {.max_depth = 8, .shadow_rays = 1, .rr_survival = 0.75},
+                 none = {.max_depth = 8, .shadow_rays = 1};
     Agreement agreement =
         compare("roulette alpha=0.75 against none", &scene, ROOM_SIDE, path_roulette_radiance,
                 &roulette, 1024, path_direct_radiance, &none, 2048);

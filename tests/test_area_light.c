@@ -1,5 +1,5 @@
-/* test_area_light.c (chapter 3): Tests of area-light sampling and the direct-light estimator of eq. 21
- * (lib/area_light.c, chapter 3).
+/* test_area_light.c (chapter 3): Tests of area-light sampling and the direct-light estimator of
+ * eq. 21 (lib/area_light.c, chapter 3).
  *
  * 1. Chi-square goodness of fit (chi_square.h) of area_light_sample: two lights of
  *    different areas; each sample is binned by which light it landed on and where, in
@@ -13,8 +13,8 @@
  *    (the correct sampler: X^2 = 83.8, p = 0.14).
  * 2. Eq. 21 against a closed form: a point on the floor right under the corner of a
  *    parallel a x b rectangular light at height h. Its configuration factor is
- *        F = 1/(2 pi) [ A/sqrt(1+A^2) atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2) atan(A/sqrt(1+B^2)) ],
- *    A = a/h, B = b/h, so a Lambertian point there reflects L = rho Le F
+ *        F = 1/(2 pi) [ A/sqrt(1+A^2) atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2) atan(A/sqrt(1+B^2))
+ * ], A = a/h, B = b/h, so a Lambertian point there reflects L = rho Le F
  *    (configuration_factor.h, shared with the photon tests).
  *    The mean of many estimates must be within 4 standard errors of it, for M = 1 and
  *    M = 64 shadow rays; and M = 64 must have about 1/64 of the variance of M = 1.
@@ -81,7 +81,9 @@ static double area_sampling_p_value(Sampler sample)
 {
     Scene scene;
     two_lights(&scene);
-    enum { BINS = 2 * GRID * GRID };
+    enum {
+        BINS = 2 * GRID * GRID
+    };
     double observed[BINS] = {0}, expected[BINS];
     for (int i = 0; i < SAMPLES; i++) {
         Rng rng = rng_for_sample(99, 0, (uint64_t)i);
@@ -144,7 +146,8 @@ static void rectangle_light(Scene *scene, double a, double b, double h, int occl
 {
     scene_init(scene);
     Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(2, 2, 2)};
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     int light = scene_add_material(scene, lamp), diffuse = scene_add_material(scene, white);
     Vec3 p0 = vec3(0, 0, h), p1 = vec3(0, b, h), p2 = vec3(a, b, h), p3 = vec3(a, 0, h);
     scene_add_triangle(scene, triangle_make(p0, p1, p2, light)); /* facing down */
@@ -260,7 +263,8 @@ static void test_unequal_triangles_match_closed_form(void **state)
     Scene scene;
     scene_init(&scene);
     Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(2, 2, 2)};
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     int light = scene_add_material(&scene, lamp);
     scene_add_material(&scene, white);
     Vec3 p0 = vec3(0, 0, h), p1 = vec3(0, b, h), q = vec3(a / 4, b, h), p2 = vec3(a, b, h),
@@ -291,12 +295,15 @@ static void test_pdf_is_the_samplers_density(void **state)
     scene_init(&scene);
     Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(1, 1, 1)};
     int m = scene_add_material(&scene, lamp);
-    Vec3 p0 = vec3(1, 0, 1), p1 = vec3(1, 1, 1.6), p2 = vec3(2.5, 1, 2.2), p3 = vec3(2.5, 0, 1.6);
+    Vec3 p0 = vec3(1, 0, 1), p1 = vec3(1, 1, 1.6), p2 = vec3(2.5, 1, 2.2),
+         p3 = vec3(2.5, 0, 1.6);
     scene_add_triangle(&scene, triangle_make(p0, p1, p2, m)); /* facing down, to x */
     scene_add_triangle(&scene, triangle_make(p0, p2, p3, m));
     assert_int_equal(scene_prepare(&scene), 0);
     const Vec3 x = vec3(0, 0.3, 0);
-    enum { CELLS = 400 };
+    enum {
+        CELLS = 400
+    };
     double integral = 0.0, solid_angle = 0.0;
     for (int t = 0; t < scene.light_count; t++) {
         const Triangle *tri = &scene.triangles[scene.light_triangles[t]];
@@ -310,7 +317,8 @@ static void test_pdf_is_the_samplers_density(void **state)
                     continue;
                 Vec3 y = triangle_point(tri, u, v), to_x = vec3_sub(x, y);
                 double d = vec3_length(to_x), cos_beta = vec3_dot(tri->normal, to_x) / d;
-                double dw = weight * 2.0 * tri->area / ((double)CELLS * CELLS) * cos_beta / (d * d);
+                double dw =
+                    weight * 2.0 * tri->area / ((double)CELLS * CELLS) * cos_beta / (d * d);
                 integral += area_light_pdf(&scene, d, cos_beta) * dw;
                 solid_angle += dw;
             }
@@ -321,11 +329,13 @@ static void test_pdf_is_the_samplers_density(void **state)
         double u_select = rng_uniform(&rng), u1 = rng_uniform(&rng), u2 = rng_uniform(&rng);
         LightSample y = area_light_sample(&scene, u_select, u1, u2);
         Vec3 to_x = vec3_sub(x, y.point);
-        double d = vec3_length(to_x), inverse = 1.0 / area_light_pdf(&scene, d, vec3_dot(y.normal, to_x) / d);
+        double d = vec3_length(to_x),
+               inverse = 1.0 / area_light_pdf(&scene, d, vec3_dot(y.normal, to_x) / d);
         sum += inverse;
         sum_squares += inverse * inverse;
     }
-    double mean = sum / SAMPLES, error = sqrt((sum_squares / SAMPLES - mean * mean) / (SAMPLES - 1));
+    double mean = sum / SAMPLES,
+           error = sqrt((sum_squares / SAMPLES - mean * mean) / (SAMPLES - 1));
     print_message("    integral of the pdf %.6f; mean 1 / pdf %.6f +- %.6f, solid angle %.6f\n",
                   integral, mean, error, solid_angle);
     assert_true(fabs(integral - 1.0) < 1e-3);
@@ -337,7 +347,8 @@ static void test_pdf_is_the_samplers_density(void **state)
 static int add_material(Scene *scene, double emission)
 {
     Material m = {.kind = emission > 0.0 ? MATERIAL_LIGHT : MATERIAL_LAMBERT,
-                  .reflectance = vec3(0.5, 0.5, 0.5), .emission = vec3(emission, emission, emission)};
+                  .reflectance = vec3(0.5, 0.5, 0.5),
+                  .emission = vec3(emission, emission, emission)};
     return scene_add_material(scene, m);
 }
 
@@ -350,10 +361,14 @@ static void test_light_list(void **state)
     scene_init(&scene);
     int white = add_material(&scene, 0);
     int lamp = add_material(&scene, 25);
-    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 0), vec3(9, 0, 0), vec3(0, 9, 0), white));
-    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 5), vec3(0, 2, 5), vec3(2, 0, 5), lamp));
-    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 1), vec3(3, 0, 1), vec3(0, 3, 1), white));
-    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 6), vec3(0, 1, 6), vec3(1, 0, 6), lamp));
+    scene_add_triangle(&scene,
+                       triangle_make(vec3(0, 0, 0), vec3(9, 0, 0), vec3(0, 9, 0), white));
+    scene_add_triangle(&scene,
+                       triangle_make(vec3(0, 0, 5), vec3(0, 2, 5), vec3(2, 0, 5), lamp));
+    scene_add_triangle(&scene,
+                       triangle_make(vec3(0, 0, 1), vec3(3, 0, 1), vec3(0, 3, 1), white));
+    scene_add_triangle(&scene,
+                       triangle_make(vec3(0, 0, 6), vec3(0, 1, 6), vec3(1, 0, 6), lamp));
     Sphere ball = {vec3(5, 5, 5), 1, lamp}; /* emitting spheres are not area lights */
     scene_add_sphere(&scene, ball);
     for (int round = 0; round < 2; round++) {
@@ -369,7 +384,8 @@ static void test_light_list(void **state)
 
     scene_init(&scene);
     white = add_material(&scene, 0);
-    scene_add_triangle(&scene, triangle_make(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), white));
+    scene_add_triangle(&scene,
+                       triangle_make(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), white));
     assert_int_equal(scene_prepare(&scene), 0);
     assert_int_equal(scene.light_count, 0);
     assert_close(scene.light_area, 0, 0);

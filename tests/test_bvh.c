@@ -27,8 +27,9 @@
 
 static double primitive_t(BvhPrimitives p, int i, Ray ray)
 {
-    return i < p.triangle_count ? triangle_intersect(&p.triangles[i], ray, 0.0, INFINITY)
-                                : sphere_intersect(&p.spheres[i - p.triangle_count], ray, 0.0, INFINITY);
+    return i < p.triangle_count
+               ? triangle_intersect(&p.triangles[i], ray, 0.0, INFINITY)
+               : sphere_intersect(&p.spheres[i - p.triangle_count], ray, 0.0, INFINITY);
 }
 
 /* The reference: every primitive tested, the nearest kept. */
@@ -96,11 +97,13 @@ static int check_ray_within(const Scene *scene, Ray ray, double tmax, double tol
         int found = tree->intersect(scene, ray, &t_tree);
         if (!(t_tree == t_all || fabs(t_tree - t_all) <= tolerance * t_all))
             fail_msg("%s ray %d from (%.17g %.17g %.17g) dir (%.17g %.17g %.17g): %s tree %d "
-                     "t=%.17g, all %d t=%.17g", what, i, ray.origin.x, ray.origin.y, ray.origin.z,
-                     ray.dir.x, ray.dir.y, ray.dir.z, tree->name, found, t_tree, all, t_all);
+                     "t=%.17g, all %d t=%.17g",
+                     what, i, ray.origin.x, ray.origin.y, ray.origin.z, ray.dir.x, ray.dir.y,
+                     ray.dir.z, tree->name, found, t_tree, all, t_all);
         /* Different primitives only where both are hit at this t (a tie). */
         if (found != all)
-            assert_true(primitive_t(p, found, ray) == t_tree && primitive_t(p, all, ray) == t_all);
+            assert_true(primitive_t(p, found, ray) == t_tree &&
+                        primitive_t(p, all, ray) == t_all);
         double limits[2] = {tmax, 0.5 * t_all};
         for (int j = 0; j < 2; j++) {
             double limit = limits[j];
@@ -129,14 +132,16 @@ static Scene grey_scene(int *material)
 {
     Scene scene;
     scene_init(&scene);
-    Material grey = {.name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material grey = {
+        .name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     *material = scene_add_material(&scene, grey);
     return scene;
 }
 
 /* A triangle with a corner at `corner` and the other two `size` away from it in random
  * directions. */
-static void add_random_triangle(Scene *scene, TestRandom *rng, Vec3 corner, double size, int material)
+static void add_random_triangle(Scene *scene, TestRandom *rng, Vec3 corner, double size,
+                                int material)
 {
     Vec3 a = vec3_add_scaled(corner, random_unit_vector(rng), size);
     Vec3 b = vec3_add_scaled(corner, random_unit_vector(rng), size);
@@ -198,10 +203,11 @@ static void test_room_bounce_and_shadow_rays(void **state)
                 break;
             Vec3 n = vec3_dot(hit.normal, ray.dir) > 0.0 ? vec3_neg(hit.normal) : hit.normal;
             Vec3 lamp = point_on_triangle(lamp_triangle(&scene, i), 0.5 * test_uniform(&rng),
-                                       0.5 * test_uniform(&rng));
+                                          0.5 * test_uniform(&rng));
             double segment = fmax(vec3_max_abs(hit.point), vec3_max_abs(lamp));
             Vec3 start = ray_offset_origin(hit.point, n, vec3_sub(lamp, hit.point), segment);
-            Vec3 end = ray_offset_origin(lamp, vec3(0, 0, -1), vec3_sub(hit.point, lamp), segment);
+            Vec3 end =
+                ray_offset_origin(lamp, vec3(0, 0, -1), vec3_sub(hit.point, lamp), segment);
             Vec3 span = vec3_sub(end, start);
             Ray shadow = {start, vec3_normalize(span)};
             shadowed += check_ray(&scene, shadow, vec3_length(span), "shadow", i);
@@ -216,12 +222,13 @@ static void test_room_bounce_and_shadow_rays(void **state)
 /* Rays arriving at a random point of a random triangle, half of them on an edge and
  * some at a vertex, within `angle_min` .. `angle_max` radians of its plane, from up to
  * `distance` away, and rays leaving it as grazingly. */
-static void grazing_rays(const Scene *scene, double angle_min, double angle_max, double distance,
-                         double tolerance)
+static void grazing_rays(const Scene *scene, double angle_min, double angle_max,
+                         double distance, double tolerance)
 {
     for (int i = 0; i < 40000; i++) {
         TestRandom rng = test_random(44, 0, (uint64_t)i);
-        const Triangle *tri = &scene->triangles[(int)(test_uniform(&rng) * scene->triangle_count)];
+        const Triangle *tri =
+            &scene->triangles[(int)(test_uniform(&rng) * scene->triangle_count)];
         double u = test_uniform(&rng), v = test_uniform(&rng);
         if (u + v > 1.0) {
             u = 1.0 - u;
@@ -239,13 +246,15 @@ static void grazing_rays(const Scene *scene, double angle_min, double angle_max,
         double phi = 2 * PI * test_uniform(&rng);
         double angle = angle_min * pow(angle_max / angle_min, test_uniform(&rng));
         Vec3 along = vec3_add(vec3_scale(t, cos(phi)), vec3_scale(b, sin(phi)));
-        Vec3 dir = vec3_normalize(vec3_add_scaled(along, tri->normal, (i % 2 ? 1 : -1) * tan(angle)));
+        Vec3 dir =
+            vec3_normalize(vec3_add_scaled(along, tri->normal, (i % 2 ? 1 : -1) * tan(angle)));
         Ray arriving = {vec3_add_scaled(point, dir, -distance * test_uniform(&rng)), dir};
         check_ray_within(scene, arriving, INFINITY, tolerance, "grazing", i);
-        double corners = fmax(vec3_max_abs(tri->v0), fmax(vec3_max_abs(vec3_add(tri->v0, tri->e1)),
-                                                          vec3_max_abs(vec3_add(tri->v0, tri->e2))));
-        Ray leaving = ray_spawn(point, tri->normal, vec3_dot(dir, tri->normal) < 0 ? vec3_neg(dir) : dir,
-                                corners);
+        double corners =
+            fmax(vec3_max_abs(tri->v0), fmax(vec3_max_abs(vec3_add(tri->v0, tri->e1)),
+                                             vec3_max_abs(vec3_add(tri->v0, tri->e2))));
+        Ray leaving = ray_spawn(point, tri->normal,
+                                vec3_dot(dir, tri->normal) < 0 ? vec3_neg(dir) : dir, corners);
         check_ray_within(scene, leaving, INFINITY, tolerance, "grazing, leaving", i);
     }
 }
@@ -291,7 +300,8 @@ static void test_small_triangles_from_afar(void **state)
 static void test_room_rays_along_axes(void **state)
 {
     Scene scene = load_room();
-    static const Vec3 dirs[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1},
+    static const Vec3 dirs[] = {{1, 0, 0},     {-1, 0, 0},     {0, 1, 0},
+                                {0, -1, 0},    {0, 0, 1},      {0, 0, -1},
                                 {0.6, 0.8, 0}, {0, -0.6, 0.8}, {-0.8, 0, -0.6}};
     int n = 0;
     for (int i = 0; i < scene.triangle_count; i++) {
@@ -299,8 +309,9 @@ static void test_room_rays_along_axes(void **state)
         Vec3 corner = vec3_add(tri->v0, tri->e1);
         for (int j = 0; j < 30; j++) {
             TestRandom rng = test_random(45, (uint64_t)i, (uint64_t)j);
-            Vec3 origin = vec3(5 + 8 * (2 * test_uniform(&rng) - 1), 7 * (2 * test_uniform(&rng) - 1),
-                               6 * (2 * test_uniform(&rng) - 1));
+            Vec3 origin =
+                vec3(5 + 8 * (2 * test_uniform(&rng) - 1), 7 * (2 * test_uniform(&rng) - 1),
+                     6 * (2 * test_uniform(&rng) - 1));
             if (j % 3 == 0)
                 origin.x = corner.x;
             if (j % 3 == 1)
@@ -384,8 +395,10 @@ static int check_enclosed(const Scene *scene, int index)
         if (prim < scene->triangle_count) {
             const Triangle *t = &scene->triangles[prim];
             Vec3 a = t->v0, b = vec3_add(t->v0, t->e1), c = vec3_add(t->v0, t->e2);
-            lower = vec3(fmin(a.x, fmin(b.x, c.x)), fmin(a.y, fmin(b.y, c.y)), fmin(a.z, fmin(b.z, c.z)));
-            upper = vec3(fmax(a.x, fmax(b.x, c.x)), fmax(a.y, fmax(b.y, c.y)), fmax(a.z, fmax(b.z, c.z)));
+            lower = vec3(fmin(a.x, fmin(b.x, c.x)), fmin(a.y, fmin(b.y, c.y)),
+                         fmin(a.z, fmin(b.z, c.z)));
+            upper = vec3(fmax(a.x, fmax(b.x, c.x)), fmax(a.y, fmax(b.y, c.y)),
+                         fmax(a.z, fmax(b.z, c.z)));
         } else {
             const Sphere *s = &scene->spheres[prim - scene->triangle_count];
             Vec3 r = vec3(s->radius, s->radius, s->radius);
@@ -433,7 +446,8 @@ static Triangle same_triangle(int i, int material)
 static Triangle centred_triangle(int i, int material)
 {
     double w = 1.0 + 0.001 * i, h = 2.0 - 0.0005 * i;
-    return triangle_make(vec3(-w, -h, 0), vec3(w, -h, 0.001 * i), vec3(0, h, -0.001 * i), material);
+    return triangle_make(vec3(-w, -h, 0), vec3(w, -h, 0.001 * i), vec3(0, h, -0.001 * i),
+                         material);
 }
 
 /* No split by box centre separates primitives whose centres coincide (copies of one
@@ -500,8 +514,10 @@ static void test_rays_that_are_not_rays(void **state)
     char error[256];
     assert_int_equal(scene_load("scenes/room.scene", &room, error, sizeof error), 0);
     Scene one = scene_of_triangles(1, same_triangle);
-    const Ray rays[] = {{vec3(0, 0, 0), vec3(NAN, NAN, NAN)}, {vec3(NAN, 0, 0), vec3(0, 0, 1)},
-                        {vec3(0, 0, 0), vec3(INFINITY, 0, 0)}, {vec3(1, -INFINITY, 0), vec3(0, 1, 0)}};
+    const Ray rays[] = {{vec3(0, 0, 0), vec3(NAN, NAN, NAN)},
+                        {vec3(NAN, 0, 0), vec3(0, 0, 1)},
+                        {vec3(0, 0, 0), vec3(INFINITY, 0, 0)},
+                        {vec3(1, -INFINITY, 0), vec3(0, 1, 0)}};
     for (int i = 0; i < 4; i++) {
         Hit hit;
         assert_int_equal(scene_intersect(&room, rays[i], INFINITY, &hit), 0);

@@ -15,19 +15,19 @@
 #include "check.h"
 #include "camera.h"
 
-typedef struct { Vec3 eye, bl, br, tl; } Corners;
+typedef struct {
+    Vec3 eye, bl, br, tl;
+} Corners;
 
 /* The camera of scenes/room.scene: a 2 x 2 plane at x = 0 seen from
  * (-1,0,0), its left at +y. */
 static const Corners room = {{-1, 0, 0}, {0, 1, -1}, {0, -1, -1}, {0, 1, 1}};
 /* A 4 x 2 plane, tilted and far from the origin: BR - BL = 4 (0.36, 0.48, 0.8),
  * TL - BL = 2 (0.8, -0.6, 0). */
-static const Corners tilted = {{10, 20, 30}, {13, 21.2, 29.4}, {14.44, 23.12, 32.6}, {14.6, 20, 29.4}};
+static const Corners tilted = {
+    {10, 20, 30}, {13, 21.2, 29.4}, {14.44, 23.12, 32.6}, {14.6, 20, 29.4}};
 
-static Camera make(const Corners *c)
-{
-    return camera_make(c->eye, c->bl, c->br, c->tl);
-}
+static Camera make(const Corners *c) { return camera_make(c->eye, c->bl, c->br, c->tl); }
 
 /* The ray starts at the eye, has unit direction and passes through `point`. */
 static void assert_through(Ray ray, const Corners *c, Vec3 point)
@@ -35,7 +35,8 @@ static void assert_through(Ray ray, const Corners *c, Vec3 point)
     Vec3 to_point = vec3_sub(point, c->eye);
     double along = vec3_dot(to_point, ray.dir);
     Vec3 miss = vec3_sub(to_point, vec3_scale(ray.dir, along));
-    assert_true(ray.origin.x == c->eye.x && ray.origin.y == c->eye.y && ray.origin.z == c->eye.z);
+    assert_true(ray.origin.x == c->eye.x && ray.origin.y == c->eye.y &&
+                ray.origin.z == c->eye.z);
     assert_close(vec3_length(ray.dir), 1, 1e-15);
     assert_true(along > 0);
     assert_close(vec3_length(miss), 0, 1e-13 * vec3_length(to_point));
@@ -54,7 +55,8 @@ static void test_corners_and_centre(void **state)
         Camera camera = make(c);
         int w = widths[i], h = heights[i];
         assert_through(camera_ray(&camera, w, h, 0, 0, 0, 0), c, c->tl);
-        assert_through(camera_ray(&camera, w, h, w - 1, h - 1, almost_one, almost_one), c, c->br);
+        assert_through(camera_ray(&camera, w, h, w - 1, h - 1, almost_one, almost_one), c,
+                       c->br);
         Vec3 centre = vec3_scale(vec3_add(c->br, c->tl), 0.5);
         assert_through(camera_ray(&camera, w, h, w / 2, h / 2, 0.5, 0.5), c, centre);
         /* the bottom-left corner: column 0, the bottom edge of the last row */
@@ -71,8 +73,8 @@ static void test_mapping(void **state)
     Vec3 right = vec3_sub(tilted.br, tilted.bl), up = vec3_sub(tilted.tl, tilted.bl);
     for (int row = 0; row < h; row++)
         for (int col = 0; col < w; col++) {
-            Vec3 corner = vec3_add_scaled(vec3_add_scaled(tilted.bl, right, (double)col / w), up,
-                                          1.0 - (double)row / h);
+            Vec3 corner = vec3_add_scaled(vec3_add_scaled(tilted.bl, right, (double)col / w),
+                                          up, 1.0 - (double)row / h);
             assert_through(camera_ray(&camera, w, h, col, row, 0, 0), &tilted, corner);
         }
     Camera r = make(&room);
@@ -87,7 +89,8 @@ static void test_unit_directions(void **state)
     TestRandom rng = test_random(1, 1, 1);
     for (int row = 0; row < 60; row++)
         for (int col = 0; col < 120; col++) {
-            Ray ray = camera_ray(&camera, 120, 60, col, row, test_uniform(&rng), test_uniform(&rng));
+            Ray ray =
+                camera_ray(&camera, 120, 60, col, row, test_uniform(&rng), test_uniform(&rng));
             assert_close(vec3_length(ray.dir), 1, 1e-15);
         }
 }

@@ -1,6 +1,6 @@
-/* test_caustic_path.c (chapter 8): Tests of chapter 8's estimator (lib/path_caustics.c: chapter 7's final
- * estimator plus the photon maps) and of progressive photon mapping
- * (bench/ppm.c): the images, the map and the path count every light path exactly once.
+/* test_caustic_path.c (chapter 8): Tests of chapter 8's estimator (lib/path_caustics.c: chapter
+ * 7's final estimator plus the photon maps) and of progressive photon mapping (bench/ppm.c):
+ * the images, the map and the path count every light path exactly once.
  *
  * 1. A room without mirrors or glass (the report's room with both made white Lambert):
  *    the map is empty, and chapter 8's estimator draws exactly chapter 7's final
@@ -69,8 +69,12 @@
 /* Chapter 7's final estimator (Figure 7's), with the scene's mirror planes. */
 static PathSettings final_estimator(const MirrorPlanes *mirrors)
 {
-    PathSettings path = {.max_depth = 64, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
-                         .rr_throughput = 1, .mirror_light = 64, .mirrors = mirrors,
+    PathSettings path = {.max_depth = 64,
+                         .shadow_rays = 1,
+                         .fresnel = FRESNEL_EXACT,
+                         .rr_throughput = 1,
+                         .mirror_light = 64,
+                         .mirrors = mirrors,
                          .sphere_guide = SPHERE_GUIDE_STRENGTH};
     return path;
 }
@@ -114,7 +118,8 @@ static double block_p_value(const RenderResult *a, const RenderResult *b)
                     for (int x = bx * BLOCK; x < (bx + 1) * BLOCK; x++) {
                         int i = 3 * (y * SIDE + x) + c;
                         difference += a->image.pixels[i] - b->image.pixels[i];
-                        variance += pow(a->std_error.pixels[i], 2) + pow(b->std_error.pixels[i], 2);
+                        variance +=
+                            pow(a->std_error.pixels[i], 2) + pow(b->std_error.pixels[i], 2);
                     }
                 sum_z2 += difference * difference / variance;
                 blocks++;
@@ -141,7 +146,8 @@ static void test_room_without_specular_is_chapter7(void **state)
     RenderResult a, b;
     assert_int_equal(render(&scene, &settings, path_final_radiance, &CHAPTER7, &a), 0);
     assert_int_equal(render(&scene, &settings, path_caustics_radiance, &with_map, &b), 0);
-    assert_int_equal(memcmp(a.image.pixels, b.image.pixels, sizeof(float) * 3 * SIDE * SIDE), 0);
+    assert_int_equal(memcmp(a.image.pixels, b.image.pixels, sizeof(float) * 3 * SIDE * SIDE),
+                     0);
     photon_map_free(&map);
     render_result_free(&b);
 
@@ -171,7 +177,8 @@ static void test_empty_maps_are_chapter7_with_the_mirror_wall(void **state)
 {
     Scene scene;
     load_room(&scene, 1);
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.75, 0.75, 0.75)};
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.75, 0.75, 0.75)};
     int w = scene_add_material(&scene, white);
     assert_true(w >= 0);
     for (int i = 0; i < scene.sphere_count; i++)
@@ -191,12 +198,13 @@ static void test_empty_maps_are_chapter7_with_the_mirror_wall(void **state)
             RenderSettings settings = {{SIDE, SIDE, 64, PIXEL_RANDOM, 17}, 0, 0, "test"};
             RenderResult a, b;
             assert_int_equal(render(&scene, &settings, path_final_radiance, &chapter7, &a), 0);
-            assert_int_equal(render(&scene, &settings, path_caustics_radiance, &chapter8, &b), 0);
+            assert_int_equal(render(&scene, &settings, path_caustics_radiance, &chapter8, &b),
+                             0);
             int differ = 0;
             for (int i = 0; i < 3 * SIDE * SIDE; i++)
                 differ += a.image.pixels[i] != b.image.pixels[i];
-            print_message("    depth %2d%s: %d of %d values differ\n", depths[d], mis ? ", mis" : "",
-                          differ, 3 * SIDE * SIDE);
+            print_message("    depth %2d%s: %d of %d values differ\n", depths[d],
+                          mis ? ", mis" : "", differ, 3 * SIDE * SIDE);
             assert_int_equal(differ, 0);
             render_result_free(&a);
             render_result_free(&b);
@@ -217,7 +225,9 @@ static void masked_mean(const RenderResult *r, const Image *mask, double *mean, 
     for (int p = 0; p < SIDE * SIDE; p++) {
         if (vec3_max_component(image_get(mask, p % SIDE, p / SIDE)) >= 1.5)
             continue;
-        sum += (r->image.pixels[3 * p] + r->image.pixels[3 * p + 1] + r->image.pixels[3 * p + 2]) / 3.0;
+        sum +=
+            (r->image.pixels[3 * p] + r->image.pixels[3 * p + 1] + r->image.pixels[3 * p + 2]) /
+            3.0;
         variance += pow(r->average_std_error.pixels[3 * p], 2);
         n++;
     }
@@ -244,7 +254,8 @@ static void test_room_converges_and_counts_once(void **state)
     CausticPathSettings without = {CHAPTER7, &empty, &empty, 0.15};
     RenderSettings path_only = {{SIDE, SIDE, 1024, PIXEL_RANDOM, 13}, 0, 0, "test"};
     RenderResult path_part;
-    assert_int_equal(render(&scene, &path_only, path_caustics_radiance, &without, &path_part), 0);
+    assert_int_equal(render(&scene, &path_only, path_caustics_radiance, &without, &path_part),
+                     0);
     /* Leave out the lamp and its images in the mirrors (the path tracer's own image
      * says where): the same in every estimator, and the noisiest pixels. */
     double ref_mean, ref_error, path_mean, path_error;
@@ -261,17 +272,20 @@ static void test_room_converges_and_counts_once(void **state)
         PpmResult combined;
         assert_int_equal(ppm_render(&scene, &passes, &ppm, &combined), 0);
         assert_true(combined.stored > 100);
-        print_message("    images at the first %d diffuse vertices: %d passes of %d photons (%.0f "
-                      "stored), radius %.3f to %.3f\n", images_at[k], combined.passes, ppm.photons,
-                      combined.stored, ppm.radius, combined.radius);
+        print_message(
+            "    images at the first %d diffuse vertices: %d passes of %d photons (%.0f "
+            "stored), radius %.3f to %.3f\n",
+            images_at[k], combined.passes, ppm.photons, combined.stored, ppm.radius,
+            combined.radius);
         double p = block_p_value(&reference, &combined.render);
         double mean, error;
         masked_mean(&combined.render, &path_part.image, &mean, &error);
-        double share = mean - path_mean, share_error = sqrt(error * error + path_error * path_error);
+        double share = mean - path_mean,
+               share_error = sqrt(error * error + path_error * path_error);
         double difference_error = sqrt(error * error + ref_error * ref_error);
         print_message("    means: reference %.5f +- %.5f, combined %.5f +- %.5f; the maps' "
-                      "share %.5f +- %.5f (%.1f%%)\n", ref_mean, ref_error, mean, error, share,
-                      share_error, 100 * share / mean);
+                      "share %.5f +- %.5f (%.1f%%)\n",
+                      ref_mean, ref_error, mean, error, share, share_error, 100 * share / mean);
         assert_true(fabs(mean - ref_mean) < 4 * difference_error);
         /* The test can see a double count: the share, counted twice or not at all, would
          * move the mean by more than 8 standard errors of the difference. */
@@ -326,14 +340,21 @@ static void mirrored_furnace(Material ball, const FurnaceSetting *settings, int 
     print_message("    a %s sphere: %d photons stored of %d, %d of them in the split map\n",
                   ball.name, caustics.count, photons.emitted, split.count);
     for (int k = 0; k < count; k++) {
-        CausticPathSettings c = {{.max_depth = 200, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
-                                  .rr_throughput = 3, .mis = settings[k].mis,
-                                  .mirror_light = settings[k].images_at, .mirrors = &mirrors,
+        CausticPathSettings c = {{.max_depth = 200,
+                                  .shadow_rays = 1,
+                                  .fresnel = FRESNEL_EXACT,
+                                  .rr_throughput = 3,
+                                  .mis = settings[k].mis,
+                                  .mirror_light = settings[k].images_at,
+                                  .mirrors = &mirrors,
                                   .sphere_guide = SPHERE_GUIDE_STRENGTH},
-                                 &split, &caustics, 0.01};
+                                 &split,
+                                 &caustics,
+                                 0.01};
         double mean, std_error;
         /* The path settings are the first member: the estimator is handed the whole. */
-        estimate(&scene, path_caustics_radiance, &c.path, vec3(0.6, 0.1, 0.05), 7, &mean, &std_error);
+        estimate(&scene, path_caustics_radiance, &c.path, vec3(0.6, 0.1, 0.05), 7, &mean,
+                 &std_error);
         print_message("    images at the first %d diffuse vertices%s:\n", settings[k].images_at,
                       settings[k].mis ? ", mis" : "");
         assert_estimate(mean, std_error, FURNACE_BORDERED_RADIANCE, 0.01);

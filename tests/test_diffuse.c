@@ -68,7 +68,8 @@ static Vec3 random_above(TestRandom *rng, Vec3 n)
 #if CHAPTER >= 5
 static Material rough_material(double sigma)
 {
-    Material m = {.name = "rough", .kind = MATERIAL_OREN_NAYAR, .reflectance = RHO, .sigma = sigma};
+    Material m = {
+        .name = "rough", .kind = MATERIAL_OREN_NAYAR, .reflectance = RHO, .sigma = sigma};
     return m;
 }
 
@@ -224,15 +225,17 @@ static void test_oren_nayar_sample_weight(void **state)
  * this g the ratio is bounded, so its standard error can be trusted). */
 static void test_pdf_integrates_to_one_and_matches_the_samples(void **state)
 {
-    enum { STEPS = 400 };
+    enum {
+        STEPS = 400
+    };
     Vec3 n = vec3_normalize(vec3(0.3, -0.8, 0.5)), t, b;
     own_frame(n, &t, &b);
     double integral = 0.0;
     for (int i = 0; i < STEPS; i++)
         for (int j = 0; j < 2 * STEPS; j++) {
             double theta = (i + 0.5) * PI / STEPS, phi = (j + 0.5) * PI / STEPS;
-            Vec3 w = vec3_from_local(vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta)),
-                                     t, b, n);
+            Vec3 w = vec3_from_local(
+                vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta)), t, b, n);
             integral += diffuse_pdf(n, w) * sin(theta) * (PI / STEPS) * (PI / STEPS);
         }
     Material lambert = lambert_material();
@@ -247,8 +250,8 @@ static void test_pdf_integrates_to_one_and_matches_the_samples(void **state)
         sum_squares += ratio * ratio;
     }
     double mean = sum / PAIRS, error = sqrt((sum_squares / PAIRS - mean * mean) / (PAIRS - 1));
-    print_message("    integral %.6f; mean cos^2 / pdf %.5f +- %.5f, 2 pi / 3 = %.5f\n", integral,
-                  mean, error, 2.0 * PI / 3.0);
+    print_message("    integral %.6f; mean cos^2 / pdf %.5f +- %.5f, 2 pi / 3 = %.5f\n",
+                  integral, mean, error, 2.0 * PI / 3.0);
     assert_true(fabs(integral - 1.0) < 1e-4);
     assert_true(fabs(mean - 2.0 * PI / 3.0) < 4.0 * error);
 }

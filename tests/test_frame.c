@@ -41,13 +41,23 @@ static void assert_right_handed_frame(Vec3 n, double tol)
 static void test_basis_special_normals(void **state)
 {
     Vec3 normals[] = {
-        vec3(0, 0, 1), vec3(0, 0, -1), vec3(1, 0, 0), vec3(-1, 0, 0),
-        vec3(0, 1, 0), vec3(0, -1, 0), vec3(1, 0, -0.0), vec3(0, 1, -0.0),
-        vec3_normalize(vec3(1e-6, 1e-6, -1)), vec3_normalize(vec3(1e-6, -2e-6, -1)),
+        vec3(0, 0, 1),
+        vec3(0, 0, -1),
+        vec3(1, 0, 0),
+        vec3(-1, 0, 0),
+        vec3(0, 1, 0),
+        vec3(0, -1, 0),
+        vec3(1, 0, -0.0),
+        vec3(0, 1, -0.0),
+        vec3_normalize(vec3(1e-6, 1e-6, -1)),
+        vec3_normalize(vec3(1e-6, -2e-6, -1)),
         vec3_normalize(vec3(sqrt(2e-12), 0, -1 + 1e-12)),
-        vec3_normalize(vec3(3e-9, -4e-9, -1)), vec3_normalize(vec3(-1e-160, 1e-160, -1)),
-        vec3_normalize(vec3(1e-300, 0, -1)), vec3_normalize(vec3(1e-6, 1e-6, 1)),
-        vec3_normalize(vec3(1, 1, 1)), vec3_normalize(vec3(-1, 1, -1)),
+        vec3_normalize(vec3(3e-9, -4e-9, -1)),
+        vec3_normalize(vec3(-1e-160, 1e-160, -1)),
+        vec3_normalize(vec3(1e-300, 0, -1)),
+        vec3_normalize(vec3(1e-6, 1e-6, 1)),
+        vec3_normalize(vec3(1, 1, 1)),
+        vec3_normalize(vec3(-1, 1, -1)),
     };
     for (size_t i = 0; i < sizeof normals / sizeof normals[0]; i++)
         assert_right_handed_frame(normals[i], 1e-15);

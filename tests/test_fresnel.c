@@ -1,5 +1,5 @@
-/* test_fresnel.c (chapter 4): the exact Fresnel reflectance with the errata of fresnel.h and snell.h
- * (fresnel.h, chapter 4).
+/* test_fresnel.c (chapter 4): the exact Fresnel reflectance with the errata of fresnel.h and
+ * snell.h (fresnel.h, chapter 4).
  *
  * Landmark values (normal and grazing incidence, Brewster's angle, the critical angle,
  * no interface), a value at 80 degrees against Schlick's approximation, the unpolarised
@@ -116,7 +116,8 @@ static void test_unpolarised_by_hand(void **state)
     brewster = 0.5 * brewster * brewster;
     assert_float_equal(brewster, 0.0739645, 1e-7);
     assert_float_equal(fresnel_reflectance(cos(atan(GLASS)), 1.0, GLASS), brewster, 1e-12);
-    assert_float_equal(fresnel_reflectance(cos(atan(1.0 / GLASS)), GLASS, 1.0), brewster, 1e-12);
+    assert_float_equal(fresnel_reflectance(cos(atan(1.0 / GLASS)), GLASS, 1.0), brewster,
+                       1e-12);
     assert_float_equal(fresnel_reflectance(cos(45.0 * DEGREES), 1.0, GLASS), 0.0502399, 1e-7);
     assert_float_equal(fresnel_reflectance(cos(30.0 * DEGREES), GLASS, 1.0), 0.0551902, 1e-7);
 }

@@ -50,7 +50,7 @@
 /* The rays aimed at the sphere leave it towards the middle of the wall x = -1. */
 static const Vec3 SPHERE_CENTRE = {-0.2, 0.0, 0.0};
 #define SPHERE_RADIUS 0.5
-static const Vec3 OUTSIDE_POINT = {0.6, 0.1, 0.05}; /* in the box, outside the sphere */
+static const Vec3 OUTSIDE_POINT = {0.6, 0.1, 0.05};  /* in the box, outside the sphere */
 static const Vec3 INSIDE_POINT = {-0.1, 0.15, -0.1}; /* in the sphere, off its centre */
 
 /* furnace.h's bordered box with a glass sphere of index 1.5 in it. */
@@ -71,9 +71,13 @@ static Vec3 uniform_direction(Rng *rng)
 }
 
 /* The three kinds of ray the test follows. */
-typedef enum { FROM_OUTSIDE, AT_THE_SPHERE, FROM_INSIDE } RayKind;
-static const char *const KIND_NAMES[] = {"outside, any direction", "outside, aimed at the sphere",
-                                         "inside the sphere"};
+typedef enum {
+    FROM_OUTSIDE,
+    AT_THE_SPHERE,
+    FROM_INSIDE
+} RayKind;
+static const char *const KIND_NAMES[] = {"outside, any direction",
+                                         "outside, aimed at the sphere", "inside the sphere"};
 
 static Ray ray_of_kind(RayKind kind, Rng *rng)
 {
@@ -110,16 +114,18 @@ static void assert_furnace_radiance(const Scene *scene, const Check *check,
     RayCounts counts = {0, 0, 0};
     for (int i = 0; i < check->samples; i++) {
         Rng rng = rng_for_sample(seed, (uint64_t)kind, (uint64_t)i);
-        double value = vec3_average(check->estimate(scene, ray_of_kind(kind, &rng), &rng,
-                                                    settings, &counts));
+        double value = vec3_average(
+            check->estimate(scene, ray_of_kind(kind, &rng), &rng, settings, &counts));
         sum += value;
         sum_squares += value * value;
     }
     double mean = sum / check->samples;
-    double std_error = sqrt((sum_squares / check->samples - mean * mean) / (check->samples - 1));
+    double std_error =
+        sqrt((sum_squares / check->samples - mean * mean) / (check->samples - 1));
     print_message("    %-30s M=%d %-7s: %.9f +- %.9f (expected %.1f)\n", KIND_NAMES[kind],
-                  settings->shadow_rays, settings->fresnel == FRESNEL_EXACT ? "exact" : "schlick",
-                  mean, std_error, EXPECTED);
+                  settings->shadow_rays,
+                  settings->fresnel == FRESNEL_EXACT ? "exact" : "schlick", mean, std_error,
+                  EXPECTED);
     assert_true(fabs(mean - EXPECTED) < TOLERANCE_SIGMAS * std_error + check->truncation);
     assert_true(std_error < 0.01 * EXPECTED);
 }
@@ -173,8 +179,8 @@ static void test_glass_invisible_with_roulette(void **state)
     const FresnelMode modes[2] = {FRESNEL_SCHLICK, FRESNEL_EXACT};
     for (int m = 0; m <= 1; m++)
         for (int k = 0; k < 2; k++) {
-            PathSettings settings = {.max_depth = 200, .shadow_rays = m, .fresnel = modes[k],
-                                     .rr_survival = 0.75};
+            PathSettings settings = {
+                .max_depth = 200, .shadow_rays = m, .fresnel = modes[k], .rr_survival = 0.75};
             glass_furnace(&roulette, &settings);
         }
 }

@@ -156,8 +156,8 @@ static void test_chi_square_rejects_wrong_samplers(void **state)
         double statistic;
         int dof;
         double p = cosine_fit_p_value(wrong[k], &statistic, &dof);
-        print_message("wrong sampler %d: X^2 = %.4g, dof = %d, p = %.3g\n", k, statistic,
-                      dof, p);
+        print_message("wrong sampler %d: X^2 = %.4g, dof = %d, p = %.3g\n", k, statistic, dof,
+                      p);
         assert_true(p < SIGNIFICANCE);
     }
 }

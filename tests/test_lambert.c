@@ -17,10 +17,7 @@
 #include "rng.h"
 
 /* The largest difference between two colours' channels. */
-static double channel_difference(Vec3 a, Vec3 b)
-{
-    return vec3_max_abs(vec3_sub(a, b));
-}
+static double channel_difference(Vec3 a, Vec3 b) { return vec3_max_abs(vec3_sub(a, b)); }
 
 /* Eq. 8 per colour channel, including the extremes rho = 0 (black: nothing reflected)
  * and rho = 1 (white: 1 / pi). */
@@ -31,8 +28,7 @@ static void test_brdf_is_rho_over_pi(void **state)
     assert_float_equal(channel_difference(lambert_brdf(rho), expected), 0.0, 1e-15);
     assert_float_equal(channel_difference(lambert_brdf(black), black), 0.0, 0.0);
     Vec3 white_expected = vec3(1.0 / PI, 1.0 / PI, 1.0 / PI);
-    assert_float_equal(channel_difference(lambert_brdf(white), white_expected), 0.0,
-                       1e-15);
+    assert_float_equal(channel_difference(lambert_brdf(white), white_expected), 0.0, 1e-15);
 }
 
 /* The albedo by quadrature: integral over theta of (rho / pi) cos(theta) times the

@@ -20,10 +20,7 @@
 #define PAIRS 100000
 #define ROUNDING 1e-15
 
-static double distance(Vec3 a, Vec3 b)
-{
-    return vec3_length(vec3_sub(a, b));
-}
+static double distance(Vec3 a, Vec3 b) { return vec3_length(vec3_sub(a, b)); }
 
 /* A worked example: a ray going down at 45 degrees onto the floor (n = +y) leaves going
  * up at 45 degrees, keeping its forward component. */

@@ -68,7 +68,8 @@ static void test_planes_are_shared_and_distinct(void **state)
     Scene scene;
     scene_init(&scene);
     Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     int m = scene_add_material(&scene, mirror), w = scene_add_material(&scene, white);
     MirrorPlanes planes = planes_of(&scene);
     assert_int_equal(planes.count, 0);
@@ -84,7 +85,8 @@ static void test_planes_are_shared_and_distinct(void **state)
     assert_close(fabs(planes.planes[0].offset), 2.0, 1e-12);
     mirror_planes_free(&planes);
     /* A parallel mirror at z = 2.001 is a plane of its own. */
-    add_quad(&scene, vec3(0, 0, 2.001), vec3(1, 0, 2.001), vec3(1, 1, 2.001), vec3(0, 1, 2.001), m);
+    add_quad(&scene, vec3(0, 0, 2.001), vec3(1, 0, 2.001), vec3(1, 1, 2.001), vec3(0, 1, 2.001),
+             m);
     planes = planes_of(&scene);
     assert_int_equal(planes.count, 2);
     mirror_planes_free(&planes);
@@ -103,12 +105,13 @@ static void test_planes_at_every_scale(void **state)
         double s = scales[i];
         Scene scene;
         scene_init(&scene);
-        Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
+        Material mirror = {
+            .name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
         int m = scene_add_material(&scene, mirror);
-        add_quad(&scene, vec3(13 * s, 0, -5 * s), vec3(13 * s, 0, 5 * s), vec3(10 * s, 6 * s, 5 * s),
-                 vec3(10 * s, 6 * s, -5 * s), m);
-        add_quad(&scene, vec3(-3 * s, 0, -5 * s), vec3(-3 * s, 0, 5 * s), vec3(0, -6 * s, 5 * s),
-                 vec3(0, -6 * s, -5 * s), m);
+        add_quad(&scene, vec3(13 * s, 0, -5 * s), vec3(13 * s, 0, 5 * s),
+                 vec3(10 * s, 6 * s, 5 * s), vec3(10 * s, 6 * s, -5 * s), m);
+        add_quad(&scene, vec3(-3 * s, 0, -5 * s), vec3(-3 * s, 0, 5 * s),
+                 vec3(0, -6 * s, 5 * s), vec3(0, -6 * s, -5 * s), m);
         Vec3 corner = vec3(2.3 * s, 0.7 * s, -1.9 * s), u = vec3(1.1 * s, 0.3 * s, 0.2 * s),
              v = vec3(-0.2 * s, 0.9 * s, 1.3 * s);
         add_quad(&scene, corner, vec3_add(corner, u), vec3_add(vec3_add(corner, u), v),
@@ -129,7 +132,8 @@ static void test_planes_at_every_scale(void **state)
 static void lamp_beside_mirror(Scene *scene, int moved, Vec3 reflectance)
 {
     scene_init(scene);
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(2, 2, 2)};
     Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = reflectance};
     assert_int_equal(scene_add_material(scene, white), 0);
@@ -184,7 +188,8 @@ static void assert_same(Estimate a, Estimate b)
 }
 
 /* Mirror-light shadow rays at x (normal n, viewed along n), n_samples of them. */
-static Estimate mirror_light_mean(const Scene *scene, Vec3 x, Vec3 n, long n_samples, uint64_t seed)
+static Estimate mirror_light_mean(const Scene *scene, Vec3 x, Vec3 n, long n_samples,
+                                  uint64_t seed)
 {
     double sum[3] = {0}, squares[3] = {0};
     RayCounts counts = {0, 0, 0};
@@ -192,7 +197,8 @@ static Estimate mirror_light_mean(const Scene *scene, Vec3 x, Vec3 n, long n_sam
     for (long i = 0; i < n_samples; i++) {
         Rng rng = rng_for_sample(seed, 0, (uint64_t)i);
         add_sample(mirror_light_shadow_ray(scene, &planes.planes[0], x, n, n,
-                                           &scene->materials[0], &rng, &counts).value,
+                                           &scene->materials[0], &rng, &counts)
+                       .value,
                    sum, squares);
     }
     mirror_planes_free(&planes);
@@ -213,7 +219,8 @@ static void test_image_is_the_lamp_moved(void **state)
         for (long i = 0; i < 200000; i++) {
             Rng rng = rng_for_sample(4, 0, (uint64_t)i);
             Vec3 value = area_light_shadow_ray(&moved, points[p], vec3(0, 0, 1), vec3(0, 0, 1),
-                                               &moved.materials[0], &rng, &counts).value;
+                                               &moved.materials[0], &rng, &counts)
+                             .value;
             add_sample(vec3_mul(value, tint), sum, squares);
         }
         assert_same(image, finish(sum, squares, 200000));
@@ -235,12 +242,13 @@ static Estimate hitting_mean(const Scene *scene, Vec3 x, Vec3 n, long n_samples,
         Vec3 weight = diffuse_sample(white, n, n, u1, u2, &d);
         Hit at_mirror, at_lamp;
         if (scene_intersect(scene, ray_spawn(x, n, d, vec3_max_abs(x)), INFINITY, &at_mirror) &&
-            at_mirror.triangle >= 0 && scene->materials[at_mirror.material].kind == MATERIAL_MIRROR) {
+            at_mirror.triangle >= 0 &&
+            scene->materials[at_mirror.material].kind == MATERIAL_MIRROR) {
             Vec3 r = mirror_reflect(d, at_mirror.normal);
             const Material *mirror = &scene->materials[at_mirror.material];
-            if (scene_intersect(scene, ray_spawn(at_mirror.point, at_mirror.normal, r, at_mirror.scale),
-                                INFINITY,
-                                &at_lamp) &&
+            if (scene_intersect(
+                    scene, ray_spawn(at_mirror.point, at_mirror.normal, r, at_mirror.scale),
+                    INFINITY, &at_lamp) &&
                 vec3_dot(r, at_lamp.normal) < 0.0)
                 value = vec3_mul(vec3_mul(weight, mirror->reflectance),
                                  scene->materials[at_lamp.material].emission);
@@ -278,13 +286,16 @@ static void test_where_the_image_gives_nothing(void **state)
      * at x = 1.4: from (0, 3, 0) the lamp's image at y in [-0.3, 0.3] is seen beside
      * the mirror, where the wall is. */
     scene_init(&scene);
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(2, 2, 2)};
     Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
     scene_add_material(&scene, white);
     int l = scene_add_material(&scene, lamp), m = scene_add_material(&scene, mirror);
-    add_quad(&scene, vec3(0.3, -0.3, 1), vec3(0.3, 0.3, 1), vec3(0.7, 0.3, 1), vec3(0.7, -0.3, 1), l);
-    add_quad(&scene, vec3(1, -0.1, -0.1), vec3(1, -0.1, 0.1), vec3(1, 0.1, 0.1), vec3(1, 0.1, -0.1), m);
+    add_quad(&scene, vec3(0.3, -0.3, 1), vec3(0.3, 0.3, 1), vec3(0.7, 0.3, 1),
+             vec3(0.7, -0.3, 1), l);
+    add_quad(&scene, vec3(1, -0.1, -0.1), vec3(1, -0.1, 0.1), vec3(1, 0.1, 0.1),
+             vec3(1, 0.1, -0.1), m);
     add_quad(&scene, vec3(1.4, -5, -5), vec3(1.4, -5, 5), vec3(1.4, 5, 5), vec3(1.4, 5, -5), 0);
     assert_int_equal(scene_prepare(&scene), 0);
     Estimate beside = mirror_light_mean(&scene, vec3(0, 3, 0), vec3(0, 0, 1), 10000, 8);
@@ -292,7 +303,8 @@ static void test_where_the_image_gives_nothing(void **state)
     Estimate through = mirror_light_mean(&scene, vec3(0.5, 0, -1), vec3(0, 0, 1), 10000, 8);
     assert_true(through.mean[0] > 0.0); /* the same mirror does show it from here */
     /* A white slab between the mirror and the lamp: blocked. */
-    add_quad(&scene, vec3(0.2, -1, 0.5), vec3(0.2, 1, 0.5), vec3(1.2, 1, 0.5), vec3(1.2, -1, 0.5), 0);
+    add_quad(&scene, vec3(0.2, -1, 0.5), vec3(0.2, 1, 0.5), vec3(1.2, 1, 0.5),
+             vec3(1.2, -1, 0.5), 0);
     assert_int_equal(scene_prepare(&scene), 0);
     Estimate blocked = mirror_light_mean(&scene, vec3(0.5, 0, -1), vec3(0, 0, 1), 10000, 8);
     assert_true(blocked.mean[0] == 0.0);
@@ -314,7 +326,8 @@ static void test_another_mirror_in_the_way(void **state)
     assert_int_equal(scene_prepare(&scene), 0);
     MirrorPlanes planes = planes_of(&scene);
     assert_int_equal(planes.count, 2);
-    const MirrorPlane *big = fabs(planes.planes[0].offset) > 0.9 ? &planes.planes[0] : &planes.planes[1];
+    const MirrorPlane *big =
+        fabs(planes.planes[0].offset) > 0.9 ? &planes.planes[0] : &planes.planes[1];
     RayCounts counts = {0, 0, 0};
     double arrived = 0.0;
     for (int i = 0; i < 20000; i++) {

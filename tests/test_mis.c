@@ -22,8 +22,10 @@ static void test_weights_sum_to_one(void **state)
 {
     Rng rng = rng_for_sample(1, 0, 0);
     for (int i = 0; i < 100000; i++) {
-        int count_f = 1 + (int)(8 * rng_uniform(&rng)), count_g = 1 + (int)(8 * rng_uniform(&rng));
-        double pdf_f = exp(30.0 * (rng_uniform(&rng) - 0.5)), pdf_g = exp(30.0 * (rng_uniform(&rng) - 0.5));
+        int count_f = 1 + (int)(8 * rng_uniform(&rng)),
+            count_g = 1 + (int)(8 * rng_uniform(&rng));
+        double pdf_f = exp(30.0 * (rng_uniform(&rng) - 0.5)),
+               pdf_g = exp(30.0 * (rng_uniform(&rng) - 0.5));
         double w_f = mis_power_heuristic(count_f, pdf_f, count_g, pdf_g);
         double w_g = mis_power_heuristic(count_g, pdf_g, count_f, pdf_f);
         assert_true(w_f >= 0.0 && w_f <= 1.0);
@@ -34,7 +36,7 @@ static void test_weights_sum_to_one(void **state)
 static void test_values(void **state)
 {
     assert_close(mis_power_heuristic(1, 2.0, 1, 2.0), 0.5, 1e-15);
-    assert_close(mis_power_heuristic(1, 3.0, 1, 1.0), 0.9, 1e-15);   /* 9 / (9 + 1) */
+    assert_close(mis_power_heuristic(1, 3.0, 1, 1.0), 0.9, 1e-15);         /* 9 / (9 + 1) */
     assert_close(mis_power_heuristic(4, 1.0, 1, 1.0), 16.0 / 17.0, 1e-15); /* counts */
     assert_close(mis_power_heuristic(1, 1.0, 4, 1.0), 1.0 / 17.0, 1e-15);
     assert_close(mis_power_heuristic(2, 1.0, 1, 2.0), 0.5, 1e-15);

@@ -217,14 +217,10 @@ static void test_energy_balance(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_coefficients),
-        cmocka_unit_test(test_value_by_hand),
-        cmocka_unit_test(test_smooth_is_lambert),
-        cmocka_unit_test(test_reciprocity),
-        cmocka_unit_test(test_normal_incidence),
-        cmocka_unit_test(test_grazing_is_finite),
-        cmocka_unit_test(test_white_furnace),
-        cmocka_unit_test(test_energy_balance),
+        cmocka_unit_test(test_coefficients),      cmocka_unit_test(test_value_by_hand),
+        cmocka_unit_test(test_smooth_is_lambert), cmocka_unit_test(test_reciprocity),
+        cmocka_unit_test(test_normal_incidence),  cmocka_unit_test(test_grazing_is_finite),
+        cmocka_unit_test(test_white_furnace),     cmocka_unit_test(test_energy_balance),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

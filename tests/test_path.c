@@ -59,7 +59,8 @@ static void glass_from_outside(const PathSettings *settings, uint64_t stream,
     Material red = {.name = "red", .kind = MATERIAL_LIGHT, .emission = vec3(1, 0, 0)};
     Material blue = {.name = "blue", .kind = MATERIAL_LIGHT, .emission = vec3(0, 0, 1)};
     Material glass = {.name = "glass", .kind = MATERIAL_GLASS, .ior = 1.5};
-    int red_index = scene_add_material(&scene, red), blue_index = scene_add_material(&scene, blue);
+    int red_index = scene_add_material(&scene, red),
+        blue_index = scene_add_material(&scene, blue);
     for (int axis = 0; axis < 3; axis++)
         for (int side = -1; side <= 1; side += 2)
             furnace_wall_piece(&scene, axis, side, -1.0, 1.0, -1.0, 1.0,
@@ -79,8 +80,9 @@ static void glass_from_outside(const PathSettings *settings, uint64_t stream,
         red_share += radiance.x / SAMPLES;
     }
     double std_error = sqrt(expected * (1.0 - expected) / SAMPLES);
-    print_message("    %s: red share %.5f, expected %.5f +- %.5f; %d samples neither red nor blue\n",
-                  mode_name, red_share, expected, std_error, lost);
+    print_message(
+        "    %s: red share %.5f, expected %.5f +- %.5f; %d samples neither red nor blue\n",
+        mode_name, red_share, expected, std_error, lost);
     assert_true(fabs(red_share - expected) < TOLERANCE_SIGMAS * std_error);
     assert_int_equal(lost, 0);
     scene_free(&scene);

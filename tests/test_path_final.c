@@ -40,7 +40,8 @@ static void estimate_with_mirrors(const Scene *scene, PathSettings settings, uin
     MirrorPlanes mirrors;
     assert_int_equal(mirror_light_find_planes(scene, &mirrors), 0);
     settings.mirrors = &mirrors;
-    estimate(scene, path_final_radiance, &settings, vec3(0.1, -0.2, 0.3), seed, mean, std_error);
+    estimate(scene, path_final_radiance, &settings, vec3(0.1, -0.2, 0.3), seed, mean,
+             std_error);
     mirror_planes_free(&mirrors);
 }
 
@@ -75,10 +76,11 @@ static void test_furnace_mirror_light(void **state)
     mirrored_furnace(&hitting);
     PathSettings shadow = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3};
     mirrored_furnace(&shadow);
-    PathSettings mirror = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3, .mirror_light = 200};
+    PathSettings mirror = {
+        .max_depth = 200, .shadow_rays = 1, .rr_throughput = 3, .mirror_light = 200};
     mirrored_furnace(&mirror);
-    PathSettings both = {.max_depth = 200, .shadow_rays = 2, .rr_throughput = 3, .mis = 1,
-                         .mirror_light = 2};
+    PathSettings both = {
+        .max_depth = 200, .shadow_rays = 2, .rr_throughput = 3, .mis = 1, .mirror_light = 2};
     mirrored_furnace(&both);
 }
 
@@ -127,11 +129,14 @@ static void test_mirror_light_agrees_on_the_room(void **state)
     MirrorPlanes mirrors;
     assert_int_equal(mirror_light_find_planes(&scene, &mirrors), 0);
     PathSettings plain = {.max_depth = 6, .shadow_rays = 1};
-    PathSettings image = {.max_depth = 6, .shadow_rays = 1, .mirror_light = 6, .mirrors = &mirrors};
-    assert_agree_on(&scene, path_direct_radiance, &plain, 2000, path_final_radiance, &image, 2000);
-    PathSettings both = {.max_depth = 6, .shadow_rays = 2, .mis = 1, .mirror_light = 1,
-                         .mirrors = &mirrors};
-    assert_agree_on(&scene, path_direct_radiance, &plain, 2000, path_final_radiance, &both, 1000);
+    PathSettings image = {
+        .max_depth = 6, .shadow_rays = 1, .mirror_light = 6, .mirrors = &mirrors};
+    assert_agree_on(&scene, path_direct_radiance, &plain, 2000, path_final_radiance, &image,
+                    2000);
+    PathSettings both = {
+        .max_depth = 6, .shadow_rays = 2, .mis = 1, .mirror_light = 1, .mirrors = &mirrors};
+    assert_agree_on(&scene, path_direct_radiance, &plain, 2000, path_final_radiance, &both,
+                    1000);
     mirror_planes_free(&mirrors);
     scene_free(&scene);
 }

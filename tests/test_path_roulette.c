@@ -67,8 +67,8 @@ static void test_roulette_unbiased(void **state)
     double means[3], errors[3];
     for (int i = 0; i < 3; i++) {
         PathSettings settings = {.max_depth = 40, .rr_survival = alphas[i]};
-        estimate(&scene, path_roulette_radiance, &settings, vec3(0.3, 0.3, -0.5), 11 + (uint64_t)i,
-                 &means[i], &errors[i]);
+        estimate(&scene, path_roulette_radiance, &settings, vec3(0.3, 0.3, -0.5),
+                 11 + (uint64_t)i, &means[i], &errors[i]);
         print_message("    alpha %.2f: %.5f +- %.5f\n", alphas[i], means[i], errors[i]);
     }
     for (int i = 0; i < 3; i++)
@@ -86,7 +86,8 @@ static void test_bounded_roulette_agrees_on_the_room(void **state)
 {
     PathSettings plain = {.max_depth = 8, .shadow_rays = 1};
     PathSettings bounded = {.max_depth = 8, .shadow_rays = 1, .rr_throughput = 2};
-    assert_agree_on_the_room(path_direct_radiance, &plain, 400, path_roulette_radiance, &bounded, 400);
+    assert_agree_on_the_room(path_direct_radiance, &plain, 400, path_roulette_radiance,
+                             &bounded, 400);
 }
 
 int main(void)

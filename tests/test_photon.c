@@ -1,4 +1,5 @@
-/* test_photon.c (chapter 8): Tests of photon emission, tracing and the photon map (lib/photon.c, chapter 8).
+/* test_photon.c (chapter 8): Tests of photon emission, tracing and the photon map
+ * (lib/photon.c, chapter 8).
  *
  * 1. Power: photons from one lamp carry Phi / N each, Phi = pi Le A, so they add up to
  *    Phi to rounding; from two lamps of different radiance and area, the sum's mean is
@@ -64,7 +65,8 @@ static void test_emitted_power_adds_to_phi(void **state)
 {
     Scene scene;
     scene_init(&scene);
-    add_lamp(&scene, vec3(0, 0, 2), vec3(0, 1.5, 0), vec3(2, 0, 0), vec3(25, 25, 25)); /* A = 3 */
+    add_lamp(&scene, vec3(0, 0, 2), vec3(0, 1.5, 0), vec3(2, 0, 0),
+             vec3(25, 25, 25)); /* A = 3 */
     assert_int_equal(scene_prepare(&scene), 0);
     double phi = PI * 25 * 3;
     assert_close(emitted_power(&scene, 1000), phi, 1e-9 * phi);
@@ -79,7 +81,8 @@ static void test_emitted_power_adds_to_phi(void **state)
     const int n = 100000;
     phi = PI * (10 * 2 + 30 * 0.5);
     double sum = emitted_power(&scene, n), std_error = 8 * PI * 2.5 / sqrt(n);
-    print_message("    two lamps: %.4f, Phi = %.4f, standard error %.4f\n", sum, phi, std_error);
+    print_message("    two lamps: %.4f, Phi = %.4f, standard error %.4f\n", sum, phi,
+                  std_error);
     assert_true(fabs(sum - phi) < 4 * std_error);
     scene_free(&scene);
 }
@@ -127,7 +130,8 @@ static PhotonRay uniform_emit(const Scene *scene, int emitted, double u_select, 
     Vec3 n = scene->triangles[0].normal, t, b;
     vec3_basis(n, &t, &b);
     double z = 1.0 - u3, s = sqrt(1.0 - z * z);
-    right.ray.dir = vec3_from_local(vec3(s * cos(2 * PI * u4), s * sin(2 * PI * u4), z), t, b, n);
+    right.ray.dir =
+        vec3_from_local(vec3(s * cos(2 * PI * u4), s * sin(2 * PI * u4), z), t, b, n);
     return right;
 }
 
@@ -150,7 +154,9 @@ static double direction_p_value(Emitter emit)
     assert_int_equal(scene_prepare(&scene), 0);
     Vec3 n = scene.triangles[0].normal, t, b;
     vec3_basis(n, &t, &b);
-    enum { N = 100000 };
+    enum {
+        N = 100000
+    };
     double observed[GRID * GRID] = {0}, expected[GRID * GRID];
     for (int k = 0; k < N; k++) {
         Rng rng = rng_for_sample(23, (uint64_t)k, 0);
@@ -208,8 +214,10 @@ static void test_emission_starts_on_the_lamp(void **state)
 static void mirror_scene(Scene *scene)
 {
     scene_init(scene);
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
-    Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(0.5, 0.8, 1.0)};
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material mirror = {
+        .name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(0.5, 0.8, 1.0)};
     int w = scene_add_material(scene, white), m = scene_add_material(scene, mirror);
     Vec3 f0 = vec3(-5, -5, 0), f1 = vec3(5, -5, 0), f2 = vec3(5, 5, 0), f3 = vec3(-5, 5, 0);
     scene_add_triangle(scene, triangle_make(f0, f1, f2, w));
@@ -231,7 +239,8 @@ static void test_mirror_photon(void **state)
     Rng rng = rng_for_sample(1, 2, 3);
     RayCounts counts = {0, 0, 0};
     Photon stored;
-    assert_int_equal(photon_trace(&scene, photon, PHOTON_CAUSTIC, FRESNEL_EXACT, &rng, &stored, &counts), 1);
+    assert_int_equal(
+        photon_trace(&scene, photon, PHOTON_CAUSTIC, FRESNEL_EXACT, &rng, &stored, &counts), 1);
     assert_close(stored.position.x, 0.0, 1e-9);
     assert_close(stored.position.y, 0.0, 1e-9);
     assert_close(stored.position.z, 0.0, 1e-9);
@@ -241,16 +250,21 @@ static void test_mirror_photon(void **state)
     assert_true(stored.power.x == 0.5 && stored.power.y == 0.8 && stored.power.z == 1.0);
     assert_int_equal(counts.bounce, 2);
     /* The direct map does not want it; a photon straight to the floor is the reverse. */
-    assert_int_equal(photon_trace(&scene, photon, PHOTON_DIRECT, FRESNEL_EXACT, &rng, &stored, &counts), 0);
+    assert_int_equal(
+        photon_trace(&scene, photon, PHOTON_DIRECT, FRESNEL_EXACT, &rng, &stored, &counts), 0);
     PhotonRay down = {ray_through(vec3(0, 0, 3), vec3(0.5, 0.5, 0)), vec3(1, 1, 1)};
-    assert_int_equal(photon_trace(&scene, down, PHOTON_CAUSTIC, FRESNEL_EXACT, &rng, &stored, &counts), 0);
-    assert_int_equal(photon_trace(&scene, down, PHOTON_DIRECT, FRESNEL_EXACT, &rng, &stored, &counts), 1);
+    assert_int_equal(
+        photon_trace(&scene, down, PHOTON_CAUSTIC, FRESNEL_EXACT, &rng, &stored, &counts), 0);
+    assert_int_equal(
+        photon_trace(&scene, down, PHOTON_DIRECT, FRESNEL_EXACT, &rng, &stored, &counts), 1);
     assert_close(stored.position.x, 0.5, 1e-9);
     /* Into the lamp from below: absorbed. Up into the sky: lost. */
     PhotonRay up = {ray_through(vec3(0, 0, 3), vec3(0, 0, 5)), vec3(1, 1, 1)};
-    assert_int_equal(photon_trace(&scene, up, PHOTON_CAUSTIC, FRESNEL_EXACT, &rng, &stored, &counts), 0);
+    assert_int_equal(
+        photon_trace(&scene, up, PHOTON_CAUSTIC, FRESNEL_EXACT, &rng, &stored, &counts), 0);
     PhotonRay away = {ray_through(vec3(0, 0, 3), vec3(-6, 0, 4)), vec3(1, 1, 1)};
-    assert_int_equal(photon_trace(&scene, away, PHOTON_CAUSTIC, FRESNEL_EXACT, &rng, &stored, &counts), 0);
+    assert_int_equal(
+        photon_trace(&scene, away, PHOTON_CAUSTIC, FRESNEL_EXACT, &rng, &stored, &counts), 0);
     scene_free(&scene);
 }
 
@@ -272,7 +286,8 @@ static void test_glass_photons_follow_fresnel(void **state)
             Rng rng = rng_for_sample(31, (uint64_t)k, (uint64_t)mode);
             PhotonRay photon = {{vec3(0, 0, 3.5), vec3(0, 0, -1)}, vec3(2, 2, 2)};
             Photon stored;
-            if (photon_trace(&scene, photon, PHOTON_CAUSTIC, (FresnelMode)mode, &rng, &stored, &counts)) {
+            if (photon_trace(&scene, photon, PHOTON_CAUSTIC, (FresnelMode)mode, &rng, &stored,
+                             &counts)) {
                 assert_true(stored.power.x == 2.0 && fabs(stored.position.x) < 1e-9);
                 assert_close(stored.incoming.z, 1.0, 1e-12);
                 reached++;
@@ -280,7 +295,8 @@ static void test_glass_photons_follow_fresnel(void **state)
         }
         double fraction = (double)reached / n, std_error = sqrt(expected * (1 - expected) / n);
         print_message("    %s: %.5f reached the floor, expected %.5f +- %.5f\n",
-                      mode == FRESNEL_EXACT ? "exact" : "schlick", fraction, expected, std_error);
+                      mode == FRESNEL_EXACT ? "exact" : "schlick", fraction, expected,
+                      std_error);
         assert_true(fabs(fraction - expected) < 4 * std_error);
     }
     scene_free(&scene);
@@ -298,7 +314,8 @@ static void test_map_same_for_any_thread_count(void **state)
     assert_int_equal(ppm_photon_map(&three, &scene, &s3, 0.1, 3, &counts), 0);
     assert_true(one.count > 1000);
     assert_int_equal(one.count, three.count);
-    assert_int_equal(memcmp(one.photons, three.photons, (size_t)one.count * sizeof *one.photons), 0);
+    assert_int_equal(
+        memcmp(one.photons, three.photons, (size_t)one.count * sizeof *one.photons), 0);
     assert_int_equal(one.grid.count, one.count);
     photon_map_free(&one);
     photon_map_free(&three);

@@ -1,5 +1,6 @@
-/* test_photon_estimate.c (chapter 8): Tests of the photon density estimate (lib/photon_estimate.c, chapter 8), against
- * the closed form of direct light from a rectangle (configuration_factor.h).
+/* test_photon_estimate.c (chapter 8): Tests of the photon density estimate
+ * (lib/photon_estimate.c, chapter 8), against the closed form of direct light from a rectangle
+ * (configuration_factor.h).
  *
  * A 2 x 1 lamp of radiance Le = 2 faces down from height 1.5 over a large floor. A map
  * of direct photons (PHOTON_DIRECT: stored where they first land) has, in a disk of
@@ -54,8 +55,15 @@ static void add_quad(Scene *scene, Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3, int mater
 static Vec3 estimate_at(const Scene *scene, const PhotonMap *map, double radius, Vec3 p, Vec3 n,
                         Vec3 wo, const Material *m)
 {
-    Vertex x = {.hit = {.t = 1.0, .point = p, .normal = n, .triangle = 0, .scale = fmax(vec3_max_abs(p), 1.0)},
-                .material = m, .front = 1, .normal = n, .wo = wo};
+    Vertex x = {.hit = {.t = 1.0,
+                        .point = p,
+                        .normal = n,
+                        .triangle = 0,
+                        .scale = fmax(vec3_max_abs(p), 1.0)},
+                .material = m,
+                .front = 1,
+                .normal = n,
+                .wo = wo};
     return photon_estimate_reachable(scene, map, radius, &x);
 }
 
@@ -64,11 +72,12 @@ static void lamp_over_floor(Scene *scene, Material floor)
     scene_init(scene);
     Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(LE, LE, LE)};
     int light = scene_add_material(scene, lamp), diffuse = scene_add_material(scene, floor);
-    Vec3 p0 = vec3(0, 0, LAMP_H), p1 = vec3(0, LAMP_B, LAMP_H), p2 = vec3(LAMP_A, LAMP_B, LAMP_H),
-         p3 = vec3(LAMP_A, 0, LAMP_H);
+    Vec3 p0 = vec3(0, 0, LAMP_H), p1 = vec3(0, LAMP_B, LAMP_H),
+         p2 = vec3(LAMP_A, LAMP_B, LAMP_H), p3 = vec3(LAMP_A, 0, LAMP_H);
     scene_add_triangle(scene, triangle_make(p0, p1, p2, light)); /* facing down */
     scene_add_triangle(scene, triangle_make(p0, p2, p3, light));
-    Vec3 f0 = vec3(-30, -30, 0), f1 = vec3(30, -30, 0), f2 = vec3(30, 30, 0), f3 = vec3(-30, 30, 0);
+    Vec3 f0 = vec3(-30, -30, 0), f1 = vec3(30, -30, 0), f2 = vec3(30, 30, 0),
+         f3 = vec3(-30, 30, 0);
     scene_add_triangle(scene, triangle_make(f0, f1, f2, diffuse));
     scene_add_triangle(scene, triangle_make(f0, f2, f3, diffuse));
     assert_int_equal(scene_prepare(scene), 0);
@@ -85,7 +94,10 @@ static void direct_map(const Scene *scene, PhotonMap *map)
  * coordinates (error far below the test's noise). */
 static double disk_average_factor(double x, double y, double r)
 {
-    enum { RINGS = 40, SECTORS = 64 };
+    enum {
+        RINGS = 40,
+        SECTORS = 64
+    };
     double sum = 0.0;
     for (int i = 0; i < RINGS; i++) {
         double rho = r * (i + 0.5) / RINGS;
@@ -105,36 +117,39 @@ static double disk_average_factor(double x, double y, double r)
  * little from photon to photon, which this neglects.) */
 static double estimate_sigma(double mean, double x, double y)
 {
-    double k_mean = PHOTONS * disk_average_factor(x, y, RADIUS) * PI * RADIUS * RADIUS /
-                    (LAMP_A * LAMP_B);
+    double k_mean =
+        PHOTONS * disk_average_factor(x, y, RADIUS) * PI * RADIUS * RADIUS / (LAMP_A * LAMP_B);
     return mean * sqrt((1.0 - k_mean / PHOTONS) / k_mean);
 }
 
 static void test_lambert_matches_configuration_factor(void **state)
 {
     const double rho = 0.5;
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(rho, rho, rho)};
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(rho, rho, rho)};
     Scene scene;
     lamp_over_floor(&scene, white);
     PhotonMap map;
     direct_map(&scene, &map);
-    const double points[12][2] = {{1.0, 0.5}, {0.3, 0.2}, {1.7, 0.8}, {0.5, 0.8},
-                                  {1.5, 0.2}, {1.0, -0.6}, {-0.6, 0.5}, {2.6, 0.5},
-                                  {1.0, 1.6}, {-0.4, -0.4}, {2.4, 1.3}, {1.8, -0.5}};
+    const double points[12][2] = {{1.0, 0.5}, {0.3, 0.2},   {1.7, 0.8},  {0.5, 0.8},
+                                  {1.5, 0.2}, {1.0, -0.6},  {-0.6, 0.5}, {2.6, 0.5},
+                                  {1.0, 1.6}, {-0.4, -0.4}, {2.4, 1.3},  {1.8, -0.5}};
     const double z_limit = 3.95; /* two-sided 1 - (1 - 0.001)^(1/12) */
     double largest_bias = 0.0;
     for (int i = 0; i < 12; i++) {
         double x = points[i][0], y = points[i][1];
         Vec3 up = vec3(0, 0, 1), wo = vec3_normalize(vec3(0.2, -0.3, 1.0));
-        double estimate = photon_estimate_radiance(&map, RADIUS, vec3(x, y, 0), up, wo, &white).x;
+        double estimate =
+            photon_estimate_radiance(&map, RADIUS, vec3(x, y, 0), up, wo, &white).x;
         double at_point = rho * LE * configuration_factor_at(x, y, LAMP_A, LAMP_B, LAMP_H);
         double expected = rho * LE * disk_average_factor(x, y, RADIUS);
         double sigma = estimate_sigma(expected, x, y), z = (estimate - expected) / sigma;
         double bias = expected - at_point;
         largest_bias = fmax(largest_bias, fabs(bias) / at_point);
-        print_message("    (%4.1f, %4.1f): %.5f, disk mean %.5f +- %.5f (z %+.2f), at the point "
-                      "%.5f (kernel bias %+.2f%%)\n", x, y, estimate, expected, sigma, z, at_point,
-                      100 * bias / at_point);
+        print_message(
+            "    (%4.1f, %4.1f): %.5f, disk mean %.5f +- %.5f (z %+.2f), at the point "
+            "%.5f (kernel bias %+.2f%%)\n",
+            x, y, estimate, expected, sigma, z, at_point, 100 * bias / at_point);
         assert_true(fabs(z) < z_limit);
         assert_true(fabs(estimate - at_point) < fabs(bias) + 4 * sigma);
         assert_true(sigma < 0.025 * expected); /* power to see a few percent */
@@ -146,8 +161,10 @@ static void test_lambert_matches_configuration_factor(void **state)
 
 static void test_oren_nayar_matches_shadow_rays(void **state)
 {
-    Material rough = {.name = "rough", .kind = MATERIAL_OREN_NAYAR,
-                      .reflectance = vec3(0.6, 0.6, 0.6), .sigma = 0.5};
+    Material rough = {.name = "rough",
+                      .kind = MATERIAL_OREN_NAYAR,
+                      .reflectance = vec3(0.6, 0.6, 0.6),
+                      .sigma = 0.5};
     Scene scene;
     lamp_over_floor(&scene, rough);
     PhotonMap map;
@@ -167,13 +184,16 @@ static void test_oren_nayar_matches_shadow_rays(void **state)
         sum_squares += v * v;
     }
     double direct = sum / n, direct_error = sqrt((sum_squares / n - direct * direct) / (n - 1));
-    double blur = disk_average_factor(x, y, RADIUS) / configuration_factor_at(x, y, LAMP_A, LAMP_B, LAMP_H);
+    double blur = disk_average_factor(x, y, RADIUS) /
+                  configuration_factor_at(x, y, LAMP_A, LAMP_B, LAMP_H);
     double expected = direct * blur;
     /* The photons' noise and the shadow rays' own. */
     double sigma = sqrt(pow(estimate_sigma(expected, x, y), 2) + pow(direct_error * blur, 2));
     double z = (estimate - expected) / sigma;
-    print_message("    Oren-Nayar: %.5f, shadow rays %.5f +- %.5f, blur %.4f: expected %.5f +- %.5f "
-                  "(z %+.2f)\n", estimate, direct, direct_error, blur, expected, sigma, z);
+    print_message(
+        "    Oren-Nayar: %.5f, shadow rays %.5f +- %.5f, blur %.4f: expected %.5f +- %.5f "
+        "(z %+.2f)\n",
+        estimate, direct, direct_error, blur, expected, sigma, z);
     assert_true(fabs(z) < 3.29); /* two-sided 0.1% */
     assert_true(sigma < 0.03 * expected);
     /* And not what a Lambert surface of the same reflectance would give. */
@@ -196,19 +216,30 @@ static void test_oren_nayar_matches_shadow_rays(void **state)
  * - the eye 1e-12 from the wall: the depth is 1e-9 of the image plane's (1), not 1e-12,
  *   so the radius stays far above the rounding of the plane's coordinates.
  * The plane's height (1) in place of its width (4) would give a quarter. */
-typedef enum { VIEW_PLAIN, VIEW_FAR_OBJECTS, VIEW_MOVED, VIEW_LAMPS_ABOUT_THE_EYE,
-               VIEW_HALF_EMPTY, VIEW_EMPTY, VIEW_AT_THE_WALL, VIEW_CASES } ViewCase;
+typedef enum {
+    VIEW_PLAIN,
+    VIEW_FAR_OBJECTS,
+    VIEW_MOVED,
+    VIEW_LAMPS_ABOUT_THE_EYE,
+    VIEW_HALF_EMPTY,
+    VIEW_EMPTY,
+    VIEW_AT_THE_WALL,
+    VIEW_CASES
+} ViewCase;
 
 static double view_case_radius(ViewCase view, double s)
 {
     Scene scene;
     scene_init(&scene);
     Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(1, 1, 1)};
-    Material grey = {.name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material grey = {
+        .name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     int l = scene_add_material(&scene, lamp), g = scene_add_material(&scene, grey);
     Vec3 at = view == VIEW_MOVED ? vec3(1e6 * s, -2e6 * s, 3e6 * s) : vec3(0, 0, 0);
-    double depth = view == VIEW_AT_THE_WALL ? 1e-12 : 3 * s, wide = view == VIEW_FAR_OBJECTS ? 1e6 : 20 * s;
-    double left = view == VIEW_HALF_EMPTY ? 0.0 : -wide, z = view == VIEW_EMPTY ? -depth : depth;
+    double depth = view == VIEW_AT_THE_WALL ? 1e-12 : 3 * s,
+           wide = view == VIEW_FAR_OBJECTS ? 1e6 : 20 * s;
+    double left = view == VIEW_HALF_EMPTY ? 0.0 : -wide,
+           z = view == VIEW_EMPTY ? -depth : depth;
     add_quad(&scene, vec3_add(at, vec3(left, -wide, z)), vec3_add(at, vec3(left, wide, z)),
              vec3_add(at, vec3(wide, wide, z)), vec3_add(at, vec3(wide, -wide, z)), g);
     /* Lamps 5 s above and below the eye, or one out of view to the side (the only
@@ -233,19 +264,25 @@ static double view_case_radius(ViewCase view, double s)
 
 static void test_first_radius_follows_the_view(void **state)
 {
-    const char *names[VIEW_CASES] = {"plain", "far objects", "moved 1e6 away",
-                                     "lamps above and below the eye", "half the view empty",
-                                     "nothing in view", "the eye 1e-12 from the wall"};
+    const char *names[VIEW_CASES] = {"plain",
+                                     "far objects",
+                                     "moved 1e6 away",
+                                     "lamps above and below the eye",
+                                     "half the view empty",
+                                     "nothing in view",
+                                     "the eye 1e-12 from the wall"};
     const double scales[3] = {1.0, 1e-3, 1e3};
     for (int k = 0; k < 3; k++)
         for (ViewCase view = VIEW_PLAIN; view < VIEW_CASES; view++) {
             double s = scales[k], radius = view_case_radius(view, s);
-            double expected = 0.01 * 4.0 * (view == VIEW_EMPTY ? sqrt(37.0) * s
-                                            : view == VIEW_AT_THE_WALL ? 1e-9 : 3 * s);
+            double expected = 0.01 * 4.0 *
+                              (view == VIEW_EMPTY         ? sqrt(37.0) * s
+                               : view == VIEW_AT_THE_WALL ? 1e-9
+                                                          : 3 * s);
             if (view == VIEW_AT_THE_WALL && k > 0)
                 continue; /* the wall's distance does not scale */
-            print_message("    scale %g, %s: first radius %.9g, expected %.9g\n", s, names[view],
-                          radius, expected);
+            print_message("    scale %g, %s: first radius %.9g, expected %.9g\n", s,
+                          names[view], radius, expected);
             assert_true(fabs(radius - expected) <= 1e-9 * expected);
         }
 }
@@ -256,26 +293,32 @@ static void test_first_radius_follows_the_view(void **state)
  * normal filter the wall's light would leak onto the floor at every corner. */
 static void test_photons_on_a_wall_do_not_count_on_the_floor(void **state)
 {
-    enum { EACH = 50 };
+    enum {
+        EACH = 50
+    };
     Photon photons[2 * EACH];
     Rng rng = rng_for_sample(5, 0, 0);
     double floor_power = 0.0;
     for (int i = 0; i < EACH; i++) {
         double a = 2.0 * PI * rng_uniform(&rng), r = 0.1 * sqrt(rng_uniform(&rng));
         Vec3 power = vec3(0.01 * (1 + i % 3), 0.01, 0.01);
-        photons[i] = (Photon){vec3(r * cos(a), r * sin(a), 0), vec3(0, 0, 1), vec3(0, 0, 1), power};
+        photons[i] =
+            (Photon){vec3(r * cos(a), r * sin(a), 0), vec3(0, 0, 1), vec3(0, 0, 1), power};
         floor_power += power.x;
         /* On the wall x = 0.05, within 0.1 of the origin too, arriving from above it. */
         Vec3 on_wall = vec3(0.05, 0.05 * (rng_uniform(&rng) - 0.5), 0.05 * rng_uniform(&rng));
-        photons[EACH + i] = (Photon){on_wall, vec3(-0.6, 0, 0.8), vec3(-1, 0, 0), vec3(1, 1, 1)};
+        photons[EACH + i] =
+            (Photon){on_wall, vec3(-0.6, 0, 0.8), vec3(-1, 0, 0), vec3(1, 1, 1)};
     }
     PhotonMap map;
     assert_int_equal(photon_map_build(&map, photons, 2 * EACH, 1000, 0.2), 0);
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
-    Vec3 estimate = photon_estimate_radiance(&map, 0.2, vec3(0, 0, 0), vec3(0, 0, 1), vec3(0, 0, 1),
-                                             &white);
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Vec3 estimate = photon_estimate_radiance(&map, 0.2, vec3(0, 0, 0), vec3(0, 0, 1),
+                                             vec3(0, 0, 1), &white);
     double expected = floor_power * 0.5 / PI / (PI * 0.2 * 0.2);
-    print_message("    floor estimate %.6f, the floor's photons alone %.6f\n", estimate.x, expected);
+    print_message("    floor estimate %.6f, the floor's photons alone %.6f\n", estimate.x,
+                  expected);
     assert_true(fabs(estimate.x - expected) <= 1e-12 * expected);
     photon_map_free(&map);
 }
@@ -296,18 +339,25 @@ static void test_photons_on_a_wall_do_not_count_on_the_floor(void **state)
  * map estimate alone). With pi r^2 (planted), the estimate at d = 0.002 is 0.51 of it. */
 static void test_no_dark_edge_at_a_wall_or_a_drop(void **state)
 {
-    enum { NX = 100, NY = 200, ALONG = 40, KINDS = 5 };
+    enum {
+        NX = 100,
+        NY = 200,
+        ALONG = 40,
+        KINDS = 5
+    };
     static Photon photons[NX * NY];
     Rng rng = rng_for_sample(9, 0, 0);
     for (int i = 0; i < NX; i++)
         for (int j = 0; j < NY; j++) {
             Vec3 p = vec3(-0.5 + (i + rng_uniform(&rng)) * 0.5 / NX,
                           -0.5 + (j + rng_uniform(&rng)) * 1.0 / NY, 0);
-            photons[i * NY + j] = (Photon){p, vec3(0, 0, 1), vec3(0, 0, 1), vec3(1.0 / 40000, 1.0 / 40000, 1.0 / 40000)};
+            photons[i * NY + j] = (Photon){p, vec3(0, 0, 1), vec3(0, 0, 1),
+                                           vec3(1.0 / 40000, 1.0 / 40000, 1.0 / 40000)};
         }
     PhotonMap map;
     assert_int_equal(photon_map_build(&map, photons, NX * NY, NX * NY, 0.1), 0);
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     const double distances[5] = {0.002, 0.02, 0.05, 0.08, 0.2}, expected = 0.5 / PI;
     const double drops[KINDS] = {0.0, 0.002, 0.02, 0.2, 1.0}; /* 0: the wall */
     CausticPathSettings path = {{.max_depth = 2}, &map, &map, 0.1};
@@ -317,11 +367,15 @@ static void test_no_dark_edge_at_a_wall_or_a_drop(void **state)
         int m = scene_add_material(&scene, white);
         double h = drops[kind];
         if (kind == 0) { /* the floor under the wall too, and the wall facing -x */
-            add_quad(&scene, vec3(-30, -30, 0), vec3(30, -30, 0), vec3(30, 30, 0), vec3(-30, 30, 0), m);
-            add_quad(&scene, vec3(0, -30, 0), vec3(0, -30, 30), vec3(0, 30, 30), vec3(0, 30, 0), m);
+            add_quad(&scene, vec3(-30, -30, 0), vec3(30, -30, 0), vec3(30, 30, 0),
+                     vec3(-30, 30, 0), m);
+            add_quad(&scene, vec3(0, -30, 0), vec3(0, -30, 30), vec3(0, 30, 30), vec3(0, 30, 0),
+                     m);
         } else { /* the floor ends at x = 0, another lies h below */
-            add_quad(&scene, vec3(-30, -30, 0), vec3(0, -30, 0), vec3(0, 30, 0), vec3(-30, 30, 0), m);
-            add_quad(&scene, vec3(-30, -30, -h), vec3(30, -30, -h), vec3(30, 30, -h), vec3(-30, 30, -h), m);
+            add_quad(&scene, vec3(-30, -30, 0), vec3(0, -30, 0), vec3(0, 30, 0),
+                     vec3(-30, 30, 0), m);
+            add_quad(&scene, vec3(-30, -30, -h), vec3(30, -30, -h), vec3(30, 30, -h),
+                     vec3(-30, 30, -h), m);
         }
         assert_int_equal(scene_prepare(&scene), 0);
         double ratios[2][5];
@@ -330,7 +384,8 @@ static void test_no_dark_edge_at_a_wall_or_a_drop(void **state)
             RayCounts counts = {0, 0, 0};
             for (int j = 0; j < ALONG; j++) {
                 Vec3 p = vec3(-distances[k], -0.2 + 0.4 * (j + 0.5) / ALONG, 0);
-                sum += estimate_at(&scene, &map, 0.1, p, vec3(0, 0, 1), vec3(0, 0, 1), &white).x;
+                sum +=
+                    estimate_at(&scene, &map, 0.1, p, vec3(0, 0, 1), vec3(0, 0, 1), &white).x;
                 Rng path_rng = rng_for_sample(10, (uint64_t)k, (uint64_t)j);
                 Ray down = {vec3_add(p, vec3(0, 0, 1)), vec3(0, 0, -1)};
                 path_sum += path_caustics_radiance(&scene, down, &path_rng, &path, &counts).x;

@@ -19,8 +19,8 @@
 
 /* The sub-pixel layout of pixel_sampling.h for n cells: every cell has area 1/n, lies inside
  * the pixel, and no two overlap, so together they tile it; cells are nearly square
- * (sides within a factor 3 of each other: n = 3 is the worst). n = 16 is the 4 x 4 grid numbered row by
- * row; n = 5 a row of two above a row of three; n = 3 one cell above two. */
+ * (sides within a factor 3 of each other: n = 3 is the worst). n = 16 is the 4 x 4 grid
+ * numbered row by row; n = 5 a row of two above a row of three; n = 3 one cell above two. */
 static void test_strata_tile_the_pixel(void **state)
 {
     for (int n = 1; n <= 64; n++) {

@@ -1,5 +1,5 @@
-/* test_point_grid.c (chapter 8): Tests of the hashed grid (lib/point_grid.c, chapter 8): every fixed-radius
- * query returns exactly the points that testing every point returns, each once.
+/* test_point_grid.c (chapter 8): Tests of the hashed grid (lib/point_grid.c, chapter 8): every
+ * fixed-radius query returns exactly the points that testing every point returns, each once.
  *
  * The hard cases are ties, so the point sets are built to have them: points on an
  * integer grid (many equal coordinates on every axis, many points at exactly the query
@@ -44,7 +44,8 @@ static void record(int index, double distance2, void *context)
 }
 
 /* The grid's answer equals brute force's; returns how many points were found. */
-static int check_query(const PointGrid *grid, const Vec3 *points, int count, Vec3 center, double radius)
+static int check_query(const PointGrid *grid, const Vec3 *points, int count, Vec3 center,
+                       double radius)
 {
     static Found f;
     memset(f.found, 0, sizeof f.found);
@@ -58,9 +59,9 @@ static int check_query(const PointGrid *grid, const Vec3 *points, int count, Vec
         int inside = vec3_dot(d, d) <= radius * radius;
         expected += inside;
         if (f.found[i] != inside)
-            fail_msg("point %d (%g %g %g), query (%g %g %g) r=%g: found %d times, expected %d", i,
-                     points[i].x, points[i].y, points[i].z, center.x, center.y, center.z, radius,
-                     f.found[i], inside);
+            fail_msg("point %d (%g %g %g), query (%g %g %g) r=%g: found %d times, expected %d",
+                     i, points[i].x, points[i].y, points[i].z, center.x, center.y, center.z,
+                     radius, f.found[i], inside);
     }
     assert_int_equal(f.count, expected);
     return expected;
@@ -101,8 +102,8 @@ static void test_grid_ties_at_the_radius(void **state)
                 at_radius += vec3_dot(d, d) == radius * radius;
             }
         }
-        print_message("    built for %g: %d point-query pairs at exactly the radius\n", built[g],
-                      at_radius);
+        print_message("    built for %g: %d point-query pairs at exactly the radius\n",
+                      built[g], at_radius);
         assert_true(at_radius > 1000);
         point_grid_free(&grid);
     }
@@ -143,7 +144,8 @@ static void test_points_on_a_plane(void **state)
     build(&grid, points, MAX_POINTS, 0.6);
     for (int i = 0; i < 200; i++) {
         Rng rng = rng_for_sample(6, 0, (uint64_t)i);
-        Vec3 c = vec3(10 * rng_uniform(&rng), 12 * rng_uniform(&rng) - 6, -5 + (i % 3 - 1) * 0.1);
+        Vec3 c =
+            vec3(10 * rng_uniform(&rng), 12 * rng_uniform(&rng) - 6, -5 + (i % 3 - 1) * 0.1);
         check_query(&grid, points, MAX_POINTS, c, 0.05 + rng_uniform(&rng));
     }
     point_grid_free(&grid);
@@ -182,7 +184,8 @@ static void test_empty_regions(void **state)
 static void test_signs_and_scales(void **state)
 {
     static Vec3 points[MAX_POINTS];
-    const double scales[4] = {1.0, 1e-30, 1.0, 1.0}, offsets[4] = {0.0, 0.0, 1e20, 0x1p52 - 1.0};
+    const double scales[4] = {1.0, 1e-30, 1.0, 1.0},
+                 offsets[4] = {0.0, 0.0, 1e20, 0x1p52 - 1.0};
     const double built[4] = {0.3, 0.3e-30, 1e-3, 0.5};
     for (int s = 0; s < 4; s++) {
         int n = 0;
@@ -223,8 +226,9 @@ static void test_few_points(void **state)
         for (int i = 0; i < n; i++) {
             check_query(&grid, points, n, points[i], 0.5);
             for (int k = 0; k < 10; k++) {
-                Vec3 c = vec3_add(points[i], vec3(rng_uniform(&rng) - 0.5, rng_uniform(&rng) - 0.5,
-                                                  rng_uniform(&rng) - 0.5));
+                Vec3 c =
+                    vec3_add(points[i], vec3(rng_uniform(&rng) - 0.5, rng_uniform(&rng) - 0.5,
+                                             rng_uniform(&rng) - 0.5));
                 check_query(&grid, points, n, c, 0.5);
             }
         }
@@ -265,7 +269,7 @@ typedef struct {
     Vec3 base;
     double spread; /* points at base + spread (u - 1/2), u uniform in [0, 1)^3 */
     double radius;
-    int wild;      /* 1: coordinates +-10^e, e uniform in [-300, 300]; 2: some not finite */
+    int wild; /* 1: coordinates +-10^e, e uniform in [-300, 300]; 2: some not finite */
 } Extreme;
 
 static Vec3 extreme_point(const Extreme *e, Rng *rng)
@@ -310,7 +314,8 @@ static void test_extreme_scales_build_bounded(void **state)
         PointGrid grid;
         build(&grid, points, n, e->radius);
         int filings = point_grid_filings(&grid);
-        print_message(" %5.2f filings per point, %d buckets\n", (double)filings / n, grid.buckets);
+        print_message(" %5.2f filings per point, %d buckets\n", (double)filings / n,
+                      grid.buckets);
         assert_true(filings <= 27 * n);
         assert_true(grid.buckets <= 4 * filings + 1);
         int found = 0;

@@ -1,5 +1,6 @@
-/* test_ppm.c (chapter 8): Tests of progressive photon mapping's pass loop (bench/ppm.c, chapter 8). Whether the
- * passes converge to the path tracer's image is tested in test_caustic_path.c; here:
+/* test_ppm.c (chapter 8): Tests of progressive photon mapping's pass loop (bench/ppm.c, chapter
+ * 8). Whether the passes converge to the path tracer's image is tested in test_caustic_path.c;
+ * here:
  *
  * - the radius schedule r_i^2 = r_1^2 i^(alpha - 1): with alpha = 2/3, r_8^2 = r_1^2 / 2
  *   and r_27^2 = r_1^2 / 3;
@@ -37,8 +38,8 @@
 #include "ppm.h"
 #include "scene_file.h"
 
-static const PathSettings CHAPTER7 = {.max_depth = 64, .shadow_rays = 4, .fresnel = FRESNEL_EXACT,
-                                      .rr_survival = 0.75};
+static const PathSettings CHAPTER7 = {
+    .max_depth = 64, .shadow_rays = 4, .fresnel = FRESNEL_EXACT, .rr_survival = 0.75};
 
 /* The room; without `specular`, its mirrors and glass made white Lambert. */
 static void load_room(Scene *scene, int specular)
@@ -46,7 +47,8 @@ static void load_room(Scene *scene, int specular)
     char error[256];
     assert_int_equal(scene_load("scenes/room.scene", scene, error, sizeof error), 0);
     for (int i = 0; !specular && i < scene->material_count; i++)
-        if (scene->materials[i].kind == MATERIAL_MIRROR || scene->materials[i].kind == MATERIAL_GLASS) {
+        if (scene->materials[i].kind == MATERIAL_MIRROR ||
+            scene->materials[i].kind == MATERIAL_GLASS) {
             scene->materials[i].kind = MATERIAL_LAMBERT;
             scene->materials[i].reflectance = vec3(0.75, 0.75, 0.75);
         }
@@ -74,8 +76,10 @@ static void test_same_image_for_any_thread_count(void **state)
     }
     size_t bytes = 3 * 24 * 24 * sizeof(float);
     for (int i = 1; i < 3; i++) {
-        assert_memory_equal(results[0].render.image.pixels, results[i].render.image.pixels, bytes);
-        assert_memory_equal(results[0].render.std_error.pixels, results[i].render.std_error.pixels, bytes);
+        assert_memory_equal(results[0].render.image.pixels, results[i].render.image.pixels,
+                            bytes);
+        assert_memory_equal(results[0].render.std_error.pixels,
+                            results[i].render.std_error.pixels, bytes);
         assert_true(results[0].stored == results[i].stored);
     }
     assert_true(results[0].stored > 0.0);
@@ -83,7 +87,8 @@ static void test_same_image_for_any_thread_count(void **state)
     RenderSettings other = {{24, 24, 1, PIXEL_RANDOM, 9}, 2, 0, "test"};
     PpmResult different;
     assert_int_equal(ppm_render(&scene, &other, &ppm, &different), 0);
-    assert_true(memcmp(results[0].render.image.pixels, different.render.image.pixels, bytes) != 0);
+    assert_true(memcmp(results[0].render.image.pixels, different.render.image.pixels, bytes) !=
+                0);
     for (int i = 0; i < 3; i++)
         ppm_result_free(&results[i]);
     ppm_result_free(&different);
@@ -105,9 +110,11 @@ static void test_standard_error_from_passes(void **state)
     assert_int_equal(render(&scene, &once, path_roulette_radiance, &CHAPTER7, &single), 0);
     double ratio = measure_rms(&progressive.render.std_error) / measure_rms(&single.std_error);
     double mean_a, error_a, mean_b, error_b;
-    measure_image_mean(&progressive.render.image, &progressive.render.std_error, &mean_a, &error_a);
+    measure_image_mean(&progressive.render.image, &progressive.render.std_error, &mean_a,
+                       &error_a);
     measure_image_mean(&single.image, &single.std_error, &mean_b, &error_b);
-    print_message("    RMS standard error: passes / samples = %.4f; means %.5f +- %.5f and %.5f +- %.5f\n",
+    print_message("    RMS standard error: passes / samples = %.4f; means %.5f +- %.5f and "
+                  "%.5f +- %.5f\n",
                   ratio, mean_a, error_a, mean_b, error_b);
     assert_true(fabs(ratio - 1.0) < 0.05);
     assert_true(fabs(mean_a - mean_b) < 4 * sqrt(error_a * error_a + error_b * error_b));
@@ -189,12 +196,13 @@ static void test_progressive_passes_stratify_together(void **state)
         RenderSettings settings = {{1, 1, 8, PIXEL_PROGRESSIVE, seed}, 1, 0, "test"};
         for (int pass = 0; pass < 8; pass++) {
             RenderResult result;
-            assert_int_equal(render_from(&scene, &settings, 8 * pass, record_sample, &recorder,
-                                         &result), 0);
+            assert_int_equal(
+                render_from(&scene, &settings, 8 * pass, record_sample, &recorder, &result), 0);
             render_result_free(&result);
         }
         assert_int_equal(samples.count, 64);
-        int empty_positions = empty_cells(samples.position), empty_pairs = empty_cells(samples.pair);
+        int empty_positions = empty_cells(samples.position),
+            empty_pairs = empty_cells(samples.pair);
         print_message("    seed %d: empty cells %d (positions), %d (pairs)\n", (int)seed,
                       empty_positions, empty_pairs);
         assert_int_equal(empty_positions, 0);
@@ -218,8 +226,8 @@ static void test_budget_ends_nearest(void **state)
             done++;
         int nearest = (int)floor(budget / d + 0.5);
         nearest = nearest < 1 ? 1 : nearest > ppm.passes ? ppm.passes : nearest;
-        print_message("    passes of %.1f s for %.0f s: %d (%.1f s), nearest %d\n", d, budget, done,
-                      done * d, nearest);
+        print_message("    passes of %.1f s for %.0f s: %d (%.1f s), nearest %d\n", d, budget,
+                      done, done * d, nearest);
         assert_int_equal(done, nearest);
     }
 }
@@ -286,8 +294,8 @@ static void test_positions_independent_of_first_pairs(void **state)
         double covariance = product / n - sum[0] / n * sum[1] / n;
         double correlation = covariance / sqrt((sum2[0] / n - pow(sum[0] / n, 2)) *
                                                (sum2[1] / n - pow(sum[1] / n, 2)));
-        print_message("    correlation of position and first pair (%s): %+.4f\n", axis ? "v" : "u",
-                      correlation);
+        print_message("    correlation of position and first pair (%s): %+.4f\n",
+                      axis ? "v" : "u", correlation);
         assert_true(fabs(correlation) < 0.1);
     }
     scene_free(&scene);
@@ -308,20 +316,27 @@ static void test_passes_shoot_their_own_photons_at_their_own_radius(void **state
     Scene scene;
     scene_init(&scene);
     Material lamp = {.name = "lamp", .kind = MATERIAL_LIGHT, .emission = vec3(1, 1, 1)};
-    Material grey = {.name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material grey = {
+        .name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
     int l = scene_add_material(&scene, lamp), g = scene_add_material(&scene, grey),
         m = scene_add_material(&scene, mirror);
     const double lamp_area = 0.2 * 0.2;
-    Vec3 quads[3][4] = {{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}},              /* floor, up */
-                        {{-2, -2, 1}, {-2, 2, 1}, {2, 2, 1}, {2, -2, 1}},              /* mirror, down */
-                        {{-0.9, -0.1, 0.5}, {-0.7, -0.1, 0.5}, {-0.7, 0.1, 0.5}, {-0.9, 0.1, 0.5}}}; /* lamp, up */
+    Vec3 quads[3][4] = {{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, /* floor, up */
+                        {{-2, -2, 1}, {-2, 2, 1}, {2, 2, 1}, {2, -2, 1}}, /* mirror, down */
+                        {{-0.9, -0.1, 0.5},
+                         {-0.7, -0.1, 0.5},
+                         {-0.7, 0.1, 0.5},
+                         {-0.9, 0.1, 0.5}}}; /* lamp, up */
     const int materials[3] = {g, m, l};
     for (int q = 0; q < 3; q++) {
-        assert_true(scene_add_triangle(&scene, triangle_make(quads[q][0], quads[q][1], quads[q][2], materials[q])) >= 0);
-        assert_true(scene_add_triangle(&scene, triangle_make(quads[q][0], quads[q][2], quads[q][3], materials[q])) >= 0);
+        assert_true(scene_add_triangle(&scene, triangle_make(quads[q][0], quads[q][1],
+                                                             quads[q][2], materials[q])) >= 0);
+        assert_true(scene_add_triangle(&scene, triangle_make(quads[q][0], quads[q][2],
+                                                             quads[q][3], materials[q])) >= 0);
     }
-    scene.camera = camera_make(vec3(0.3, 0, 0.4), vec3(0.2, 0.1, 0.3), vec3(0.4, 0.1, 0.3), vec3(0.2, -0.1, 0.3));
+    scene.camera = camera_make(vec3(0.3, 0, 0.4), vec3(0.2, 0.1, 0.3), vec3(0.4, 0.1, 0.3),
+                               vec3(0.2, -0.1, 0.3));
     assert_int_equal(scene_prepare(&scene), 0);
     const int passes = 16, photons = 50000;
     const double r1 = 0.045, rho = 0.5, phi = PI * lamp_area;
@@ -341,8 +356,9 @@ static void test_passes_shoot_their_own_photons_at_their_own_radius(void **state
         predicted += mean.x * u;
     }
     print_message("    %.0f photons stored per pass; spread over the passes / binomial: %.3f "
-                  "(photons per disc at the first radius: %.1f on average)\n", result.stored,
-                  variance / predicted, predicted / u / 64 / (rho * phi / (PI * photons * PI * r1 * r1)));
+                  "(photons per disc at the first radius: %.1f on average)\n",
+                  result.stored, variance / predicted,
+                  predicted / u / 64 / (rho * phi / (PI * photons * PI * r1 * r1)));
     assert_true(predicted > 0.0);
     assert_true(fabs(variance / predicted - 1.0) < 0.2);
     ppm_result_free(&result);

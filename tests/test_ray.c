@@ -1,5 +1,5 @@
-/* test_ray.c (chapter 1): the ray x(t) = o + t d (report eq. 20) and starting a ray on a surface
- * (ray.h, chapter 1).
+/* test_ray.c (chapter 1): the ray x(t) = o + t d (report eq. 20) and starting a ray on a
+ * surface (ray.h, chapter 1).
  *
  * ray_spawn must move the origin to the side the new ray travels into, straight
  * along the normal, by an offset relative to the scene's scale and to the point's

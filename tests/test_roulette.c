@@ -29,12 +29,11 @@
 #define SIGMAS 5.0
 
 static const double ALPHAS[] = {0.01, 0.25, 0.5, 0.9};
-enum { ALPHA_COUNT = sizeof ALPHAS / sizeof ALPHAS[0] };
+enum {
+    ALPHA_COUNT = sizeof ALPHAS / sizeof ALPHAS[0]
+};
 
-static int same_state(Rng a, Rng b)
-{
-    return a.state == b.state && a.increment == b.increment;
-}
+static int same_state(Rng a, Rng b) { return a.state == b.state && a.increment == b.increment; }
 
 /* alpha >= 1 (including absurdly large and infinite alpha) always survives and draws no
  * random number: the generator's state is unchanged, so switching roulette off leaves
@@ -117,7 +116,8 @@ static void test_constant_estimate_mean_and_variance(void **state)
         double c = x / alpha, delta = SIGMAS * sqrt(alpha * (1.0 - alpha) / DRAWS);
         double variance_tolerance = c * c * (delta * fabs(1.0 - 2.0 * alpha) + delta * delta);
         print_message("    alpha %.2f: mean %.5f (expected %.1f), variance %.4f"
-                      " (expected %.4f)\n", alpha, mean, x, variance, expected_variance);
+                      " (expected %.4f)\n",
+                      alpha, mean, x, variance, expected_variance);
         assert_true(fabs(mean - x) <= SIGMAS * sqrt(expected_variance / DRAWS));
         assert_true(fabs(variance - expected_variance) <=
                     variance_tolerance + 1e-9 * expected_variance);
@@ -167,7 +167,8 @@ static void test_survival_from_throughput_bounds_the_weight(void **state)
     const Vec3 throughputs[] = {{0.75, 0.15, 0.15}, {1e-3, 2e-3, 5e-4}, {0.9, 0.9, 0.9}};
     for (int k = 0; k < 3; k++) {
         double q = roulette_survival_from_throughput(throughputs[k]);
-        assert_true(fabs(vec3_max_component(vec3_scale(throughputs[k], 1.0 / q)) - 1.0) < 1e-15);
+        assert_true(fabs(vec3_max_component(vec3_scale(throughputs[k], 1.0 / q)) - 1.0) <
+                    1e-15);
     }
 }
 

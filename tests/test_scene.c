@@ -77,8 +77,10 @@ static void test_nearest_hit(void **state)
     int grey = add_material(&scene, MATERIAL_LAMBERT, 0);
     int glass = add_material(&scene, MATERIAL_GLASS, 0);
     int lamp = add_material(&scene, MATERIAL_LIGHT, 1);
-    scene_add_triangle(&scene, triangle_make(vec3(-9, -9, 10), vec3(9, -9, 10), vec3(0, 9, 10), grey));
-    scene_add_triangle(&scene, triangle_make(vec3(-9, -9, 5), vec3(0, 9, 5), vec3(9, -9, 5), lamp));
+    scene_add_triangle(&scene,
+                       triangle_make(vec3(-9, -9, 10), vec3(9, -9, 10), vec3(0, 9, 10), grey));
+    scene_add_triangle(&scene,
+                       triangle_make(vec3(-9, -9, 5), vec3(0, 9, 5), vec3(9, -9, 5), lamp));
     Sphere sphere = {vec3(0, 0, 3), 1, glass};
     scene_add_sphere(&scene, sphere);
     assert_int_equal(scene_prepare(&scene), 0);
@@ -150,14 +152,18 @@ static void test_no_acne_on_triangles(void **state)
             add_square(&scene, centre, a, b, 5 * s, add_material(&scene, MATERIAL_LAMBERT, 0));
             scene_prepare(&scene);
             for (int k = 0; k < 2000; k++) {
-                double r = s * pow(10.0, -12.0 * test_uniform(&rng)), phi = 2 * PI * test_uniform(&rng);
-                Vec3 target = near_origin ? vec3_add(vec3_scale(a, r * cos(phi)), vec3_scale(b, r * sin(phi)))
+                double r = s * pow(10.0, -12.0 * test_uniform(&rng)),
+                       phi = 2 * PI * test_uniform(&rng);
+                Vec3 target = near_origin ? vec3_add(vec3_scale(a, r * cos(phi)),
+                                                     vec3_scale(b, r * sin(phi)))
                                           : random_point_on(&scene.triangles[k % 2], &rng);
                 Vec3 eye = vec3_add_scaled(centre, random_unit_vector(&rng), 10 * s);
                 Hit hit, again;
                 assert_true(scene_intersect(&scene, ray_through(eye, target), INFINITY, &hit));
-                Vec3 dir = random_direction_along(&rng, test_uniform(&rng) < 0.5 ? n : vec3_neg(n));
-                if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY, &again))
+                Vec3 dir =
+                    random_direction_along(&rng, test_uniform(&rng) < 0.5 ? n : vec3_neg(n));
+                if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale),
+                                    INFINITY, &again))
                     fail_msg("scale %g: self-hit at t = %g, %g from the origin", s, again.t,
                              vec3_length(hit.point));
             }
@@ -176,22 +182,26 @@ static void test_no_acne_on_spheres(void **state)
         double s = scales[i];
         Scene scene;
         scene_init(&scene);
-        Sphere sphere = {vec3(-2.3 * s, 1.9 * s, 0.7 * s), 1.3 * s, add_material(&scene, MATERIAL_GLASS, 0)};
+        Sphere sphere = {vec3(-2.3 * s, 1.9 * s, 0.7 * s), 1.3 * s,
+                         add_material(&scene, MATERIAL_GLASS, 0)};
         scene_add_sphere(&scene, sphere);
         scene_prepare(&scene);
         for (int k = 0; k < 2000; k++) {
             double start_distance = (k % 2 ? 5.0 : 0.9 * test_uniform(&rng)) * sphere.radius;
-            Vec3 start = vec3_add_scaled(sphere.center, random_unit_vector(&rng), start_distance);
+            Vec3 start =
+                vec3_add_scaled(sphere.center, random_unit_vector(&rng), start_distance);
             Ray first = {start, random_unit_vector(&rng)};
             Hit hit, again;
             if (!scene_intersect(&scene, first, INFINITY, &hit))
                 continue;
             Vec3 out = random_direction_along(&rng, hit.normal);
-            if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, out, hit.scale), INFINITY, &again))
+            if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, out, hit.scale),
+                                INFINITY, &again))
                 fail_msg("scale %g: outward ray hit the sphere at t = %g", s, again.t);
             Vec3 in = random_direction_along(&rng, vec3_neg(hit.normal));
             double cos_theta = -vec3_dot(in, hit.normal);
-            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, in, hit.scale), INFINITY, &again));
+            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, in, hit.scale),
+                                        INFINITY, &again));
             if (!(again.t > sphere.radius * cos_theta))
                 fail_msg("scale %g: inward ray hit at t = %g, chord %g", s, again.t,
                          2 * sphere.radius * cos_theta);
@@ -238,7 +248,8 @@ static void test_near_parallel_planes(void **state)
             do
                 dir = random_direction_along(&rng, towards);
             while (vec3_dot(dir, towards) < 0.5);
-            int found = scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY, &near);
+            int found = scene_intersect(
+                &scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY, &near);
             if (!found || (near.triangle >= 2) != up)
                 fail_msg("scale %g: missed the plane %g away (found %d, triangle %d)", s, gap,
                          found, found ? near.triangle : -1);
@@ -270,13 +281,15 @@ static void test_corner(void **state)
         for (int k = 0; k < 2000; k++) {
             Vec3 target = vec3_add(o, vec3(d, (0.25 + 0.5 * test_uniform(&rng)) * s, 0));
             Hit hit, wall;
-            assert_true(scene_intersect(&scene, ray_through(vec3_add(target, vec3(0.3 * s, 0, s)), target),
-                                        INFINITY, &hit));
+            assert_true(scene_intersect(
+                &scene, ray_through(vec3_add(target, vec3(0.3 * s, 0, s)), target), INFINITY,
+                &hit));
             assert_true(hit.triangle < 2);
             /* towards the wall (-x), rising at most 45 degrees above the floor */
             double rise = test_uniform(&rng), swing = test_uniform(&rng) - 0.5;
             Vec3 dir = vec3_normalize(vec3(-1, swing, rise));
-            assert_true(scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY, &wall));
+            assert_true(scene_intersect(
+                &scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY, &wall));
             if (wall.triangle < 2)
                 fail_msg("scale %g: hit the floor again at t = %g", s, wall.t);
         }
@@ -298,8 +311,9 @@ static void test_occluded(void **state)
             int white = add_material(&scene, MATERIAL_LAMBERT, 0);
             int lamp = add_material(&scene, MATERIAL_LIGHT, 10);
             Vec3 x = vec3(1, 0, 0), y = vec3(0, 1, 0), base = vec3(0.7 * s, -0.3 * s, 1.1 * s);
-            add_square(&scene, base, x, y, s, white);                          /* floor, up */
-            add_square(&scene, vec3_add(base, vec3(0, 0, 2 * s)), y, x, s, lamp); /* light, down */
+            add_square(&scene, base, x, y, s, white); /* floor, up */
+            add_square(&scene, vec3_add(base, vec3(0, 0, 2 * s)), y, x, s,
+                       lamp); /* light, down */
             if (blocked)
                 add_square(&scene, vec3_add(base, vec3(0, 0, s)), x, y, 3 * s, white);
             scene_prepare(&scene);
@@ -348,9 +362,9 @@ static void scale_scene(const Scene *in, double s, Scene *out)
         scene_add_material(out, in->materials[i]);
     for (int i = 0; i < in->triangle_count; i++) {
         const Triangle *t = &in->triangles[i];
-        scene_add_triangle(out, triangle_make(vec3_scale(t->v0, s),
-                                              vec3_scale(vec3_add(t->v0, t->e1), s),
-                                              vec3_scale(vec3_add(t->v0, t->e2), s), t->material));
+        scene_add_triangle(
+            out, triangle_make(vec3_scale(t->v0, s), vec3_scale(vec3_add(t->v0, t->e1), s),
+                               vec3_scale(vec3_add(t->v0, t->e2), s), t->material));
     }
     for (int i = 0; i < in->sphere_count; i++) {
         Sphere sphere = in->spheres[i];
@@ -403,10 +417,11 @@ static void test_scaled_room(void **state)
                 if (hit_a.triangle != hit_b.triangle || hit_a.material != hit_b.material ||
                     hit_b.t != hit_a.t * s)
                     fail_msg("scale 2^%d, pixel %d, bounce %d: triangle %d at t = %g "
-                             "instead of triangle %d at t = %g", exponents[e], pixel, bounce,
-                             hit_b.triangle, hit_b.t / s, hit_a.triangle, hit_a.t);
-                Vec3 towards = vec3_dot(a.dir, hit_a.normal) < 0 ? hit_a.normal
-                                                                  : vec3_neg(hit_a.normal);
+                             "instead of triangle %d at t = %g",
+                             exponents[e], pixel, bounce, hit_b.triangle, hit_b.t / s,
+                             hit_a.triangle, hit_a.t);
+                Vec3 towards =
+                    vec3_dot(a.dir, hit_a.normal) < 0 ? hit_a.normal : vec3_neg(hit_a.normal);
                 Vec3 dir = random_direction_along(&rng, towards);
                 a = ray_spawn(hit_a.point, hit_a.normal, dir, hit_a.scale);
                 b = ray_spawn(hit_b.point, hit_b.normal, dir, hit_b.scale);
@@ -424,7 +439,9 @@ static void test_scaled_room(void **state)
  * point and its surface) moves every new ray by up to 1e39 and turns the room black. */
 static void test_far_object_changes_nothing(void **state)
 {
-    enum { SIDE = 24 };
+    enum {
+        SIDE = 24
+    };
     const double distances[] = {1e3, 1e9, 1e12, 1e20, 1e40, 1e49};
     WhittedSettings whitted = {10};
     ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 1, .seed = 1};
@@ -435,8 +452,8 @@ static void test_far_object_changes_nothing(void **state)
     static Vec3 alone[SIDE * SIDE];
     RayCounts counts = {0, 0, 0};
     for (int i = 0; i < SIDE * SIDE; i++)
-        alone[i] = render_sample(&room, &image, i % SIDE, i / SIDE, 0, whitted_radiance, &whitted,
-                                 &counts);
+        alone[i] = render_sample(&room, &image, i % SIDE, i / SIDE, 0, whitted_radiance,
+                                 &whitted, &counts);
     for (int k = 0; k < (int)(sizeof distances / sizeof distances[0]); k++) {
         Scene far;
         scale_scene(&room, 1.0, &far);
@@ -481,10 +498,12 @@ static void test_far_camera(void **state)
     for (int i = 0; i < 3; i++)
         for (int k = 0; k < 800; k++) {
             int on_ball = k % 2;
-            Vec3 target = on_ball ? vec3_add_scaled(ball.center, random_unit_vector(&rng), ball.radius)
-                                  : vec3(0.35 + test_uniform(&rng), -1.0 + 1.4 * test_uniform(&rng), 0);
+            Vec3 target =
+                on_ball ? vec3_add_scaled(ball.center, random_unit_vector(&rng), ball.radius)
+                        : vec3(0.35 + test_uniform(&rng), -1.0 + 1.4 * test_uniform(&rng), 0);
             Vec3 away = on_ball ? vec3_normalize(vec3_sub(target, ball.center)) : vec3(0, 0, 1);
-            Vec3 eye = vec3_add_scaled(target, random_direction_along(&rng, away), distances[i]);
+            Vec3 eye =
+                vec3_add_scaled(target, random_direction_along(&rng, away), distances[i]);
             Hit hit, next;
             if (!scene_intersect(&scene, ray_through(eye, target), INFINITY, &hit) ||
                 (on_ball ? hit.triangle >= 0 : hit.triangle < 0 || hit.triangle > 1))
@@ -494,20 +513,26 @@ static void test_far_camera(void **state)
                 fail_msg("camera %g away: the %s shadows itself (acne)", distances[i],
                          on_ball ? "ball" : "floor");
             if (!on_ball) {
-                Vec3 dir = vec3_normalize(vec3(-1, 0.2 * test_uniform(&rng), 0.3 * test_uniform(&rng)));
+                Vec3 dir = vec3_normalize(
+                    vec3(-1, 0.2 * test_uniform(&rng), 0.3 * test_uniform(&rng)));
                 if (!scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale),
-                                     INFINITY, &next) || next.triangle < 2)
-                    fail_msg("camera %g away: from the floor, the wall was missed", distances[i]);
+                                     INFINITY, &next) ||
+                    next.triangle < 2)
+                    fail_msg("camera %g away: from the floor, the wall was missed",
+                             distances[i]);
                 continue;
             }
             Vec3 out = random_direction_along(&rng, hit.normal), in = vec3_neg(out);
-            if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, out, hit.scale), INFINITY,
-                                &next) && next.triangle < 0)
+            if (scene_intersect(&scene, ray_spawn(hit.point, hit.normal, out, hit.scale),
+                                INFINITY, &next) &&
+                next.triangle < 0)
                 fail_msg("camera %g away: an outward ray hit the ball again", distances[i]);
-            if (!scene_intersect(&scene, ray_spawn(hit.point, hit.normal, in, hit.scale), INFINITY,
-                                 &next) || next.triangle >= 0 ||
+            if (!scene_intersect(&scene, ray_spawn(hit.point, hit.normal, in, hit.scale),
+                                 INFINITY, &next) ||
+                next.triangle >= 0 ||
                 !(next.t > ball.radius * vec3_dot(in, vec3_neg(hit.normal))))
-                fail_msg("camera %g away: an inward ray missed the ball's far side", distances[i]);
+                fail_msg("camera %g away: an inward ray missed the ball's far side",
+                         distances[i]);
         }
     scene_free(&scene);
 }
@@ -539,7 +564,8 @@ static void test_huge_floor(void **state)
             dir = random_direction_along(&rng, vec3(0, 0, 1));
         while (dir.z < 0.5);
         if (!scene_intersect(&scene, ray_spawn(hit.point, hit.normal, dir, hit.scale), INFINITY,
-                             &ceiling) || ceiling.triangle < 2)
+                             &ceiling) ||
+            ceiling.triangle < 2)
             fail_msg("from the floor at (%g, %g), up: the ceiling was missed", hit.point.x,
                      hit.point.y);
         assert_close(ceiling.t, 1.0 / dir.z, 1e-9);

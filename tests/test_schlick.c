@@ -1,5 +1,5 @@
-/* test_schlick.c (chapter 1): Schlick's Fresnel approximation (schlick.h, report §3.5.2, eqs. 6-7,
- * with the erratum of schlick.h).
+/* test_schlick.c (chapter 1): Schlick's Fresnel approximation (schlick.h, report §3.5.2, eqs.
+ * 6-7, with the erratum of schlick.h).
  *
  * Checked against hand values (R0 of glass, the 80 degree value), at the extremes of
  * (grazing incidence, n_i = n_t, exactly at the critical angle), and for the
@@ -18,10 +18,7 @@
 #include "schlick.h"
 #include "snell.h"
 
-static double degrees(double d)
-{
-    return d * PI / 180.0;
-}
+static double degrees(double d) { return d * PI / 180.0; }
 
 /* At normal incidence R = R0 = ((n1 - n2) / (n1 + n2))^2 (eq. 7), the same both ways:
  * 0.04 for glass of 1.5, 0.02 for water, 0.36 for n = 4. */
@@ -110,12 +107,9 @@ static void test_range_and_monotonic(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_normal_incidence),
-        cmocka_unit_test(test_eighty_degrees),
-        cmocka_unit_test(test_grazing_entering),
-        cmocka_unit_test(test_equal_indices),
-        cmocka_unit_test(test_leaving_glass),
-        cmocka_unit_test(test_range_and_monotonic),
+        cmocka_unit_test(test_normal_incidence), cmocka_unit_test(test_eighty_degrees),
+        cmocka_unit_test(test_grazing_entering), cmocka_unit_test(test_equal_indices),
+        cmocka_unit_test(test_leaving_glass),    cmocka_unit_test(test_range_and_monotonic),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -21,7 +21,8 @@ static Vec3 incident(Vec3 n, double theta, double phi)
 {
     Vec3 t, b;
     test_frame(n, &t, &b);
-    return test_from_frame(vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), -cos(theta)), t, b, n);
+    return test_from_frame(vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), -cos(theta)), t,
+                           b, n);
 }
 
 /* An index of refraction from 1.0001 to 4, log-uniform in n - 1 so that indices
@@ -32,26 +33,25 @@ static double random_ior(TestRandom *rng)
 }
 
 /* sin of the angle between unit vector v and the normal line. */
-static double sin_to_normal(Vec3 v, Vec3 n)
-{
-    return vec3_length(vec3_cross(v, n));
-}
+static double sin_to_normal(Vec3 v, Vec3 n) { return vec3_length(vec3_cross(v, n)); }
 
 /* 10^5 random normals, angles and IOR pairs with n in [1.0001, 4], entering and
- * leaving glass, from air and between two media (below the critical angle): the refracted direction is
- * unit length, continues through the surface, lies in the plane of incidence on the
- * same side as d's tangential part, and satisfies n_i sin(theta_i) = n_t sin(theta_t)
- * to 1e-9. */
+ * leaving glass, from air and between two media (below the critical angle): the refracted
+ * direction is unit length, continues through the surface, lies in the plane of incidence on
+ * the same side as d's tangential part, and satisfies n_i sin(theta_i) = n_t sin(theta_t) to
+ * 1e-9. */
 static void test_snells_law(void **state)
 {
     TestRandom rng = test_random(12, 0, 0);
     for (int k = 0; k < 100000; k++) {
         double a = random_ior(&rng), b = random_ior(&rng);
-        const double pairs[4][2] = {{1.0, a}, {a, 1.0}, {fmin(a, b), fmax(a, b)}, {fmax(a, b), fmin(a, b)}};
+        const double pairs[4][2] = {
+            {1.0, a}, {a, 1.0}, {fmin(a, b), fmax(a, b)}, {fmax(a, b), fmin(a, b)}};
         double n_i = pairs[k % 4][0], n_t = pairs[k % 4][1];
         double theta_max = snell_critical_angle(n_i, n_t);
         double theta = theta_max * test_uniform(&rng) * (1.0 - 1e-6);
-        Vec3 n = random_unit_vector(&rng), d = incident(n, theta, 2.0 * PI * test_uniform(&rng)), t;
+        Vec3 n = random_unit_vector(&rng),
+             d = incident(n, theta, 2.0 * PI * test_uniform(&rng)), t;
         assert_true(snell_refract(d, n, n_i, n_t, &t));
         assert_close(vec3_length(t), 1, 1e-14);
         assert_true(vec3_dot(t, n) < 0);
@@ -98,7 +98,8 @@ static void test_total_internal_reflection(void **state)
     TestRandom rng = test_random(13, 0, 0);
     Vec3 t;
     for (int k = 0; k < 10000; k++) {
-        double n_t = 1.0 + 2.0 * test_uniform(&rng), n_i = n_t * (1.0001 + 2.0 * test_uniform(&rng));
+        double n_t = 1.0 + 2.0 * test_uniform(&rng),
+               n_i = n_t * (1.0001 + 2.0 * test_uniform(&rng));
         double critical = snell_critical_angle(n_i, n_t);
         Vec3 n = vec3(0, 0, 1);
         double phi = 2.0 * PI * test_uniform(&rng);

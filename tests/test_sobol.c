@@ -36,7 +36,10 @@
 
 static void test_every_elementary_interval_holds_one_point(void **state)
 {
-    enum { M = 8, N = 1 << M };
+    enum {
+        M = 8,
+        N = 1 << M
+    };
     for (uint64_t key = 1; key <= 5; key++) {
         double u[N], v[N];
         for (int i = 0; i < N; i++)
@@ -61,7 +64,10 @@ static void test_every_elementary_interval_holds_one_point(void **state)
 /* One sample's point over many pixels' keys, on a 16 x 16 grid. */
 static double uniformity_p(uint32_t index)
 {
-    enum { CELLS = 16, KEYS = 40000 };
+    enum {
+        CELLS = 16,
+        KEYS = 40000
+    };
     double observed[CELLS * CELLS] = {0}, expected[CELLS * CELLS];
     for (int c = 0; c < CELLS * CELLS; c++)
         expected[c] = (double)KEYS / (CELLS * CELLS);
@@ -86,7 +92,11 @@ static void test_each_point_is_uniform_over_keys(void **state)
 
 static void test_the_pairs_of_a_sample_are_independent(void **state)
 {
-    enum { CELLS = 4, BINS = CELLS * CELLS * CELLS * CELLS, SAMPLES = 51200 };
+    enum {
+        CELLS = 4,
+        BINS = CELLS * CELLS * CELLS * CELLS,
+        SAMPLES = 51200
+    };
     double observed[BINS] = {0}, expected[BINS];
     for (int b = 0; b < BINS; b++)
         expected[b] = (double)SAMPLES / BINS;
@@ -108,14 +118,18 @@ static void test_the_pairs_of_a_sample_are_independent(void **state)
     int dof;
     double x2 = chi_square_statistic(observed, expected, BINS, &dof);
     double p = chi_square_p_value(x2, dof);
-    print_message("    pairs 0 and 1 of %d samples: X^2 = %.1f, %d dof, p = %.3f\n", SAMPLES, x2,
-                  dof, p);
+    print_message("    pairs 0 and 1 of %d samples: X^2 = %.1f, %d dof, p = %.3f\n", SAMPLES,
+                  x2, dof, p);
     assert_true(p > 1e-3);
 }
 
 /* The room at 10 x 10 pixels, depth 8, one shadow ray, the mirror light: PIXEL_STRATIFIED
  * over 64 runs of 16 spp against PIXEL_RANDOM with 4096 spp. */
-enum { SIDE = 10, RUNS = 64, SPP = 16 };
+enum {
+    SIDE = 10,
+    RUNS = 64,
+    SPP = 16
+};
 
 static void test_path_tracer_mean_unchanged(void **state)
 {
@@ -124,11 +138,15 @@ static void test_path_tracer_mean_unchanged(void **state)
     assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
     MirrorPlanes mirrors;
     assert_int_equal(mirror_light_find_planes(&scene, &mirrors), 0);
-    PathSettings path = {.max_depth = 8, .shadow_rays = 1, .rr_throughput = 1, .mirror_light = 8,
+    PathSettings path = {.max_depth = 8,
+                         .shadow_rays = 1,
+                         .rr_throughput = 1,
+                         .mirror_light = 8,
                          .mirrors = &mirrors};
     Image sum = image_new(SIDE, SIDE), sum2 = image_new(SIDE, SIDE);
     for (int run = 0; run < RUNS; run++) {
-        RenderSettings settings = {{SIDE, SIDE, SPP, PIXEL_STRATIFIED, 100 + (uint64_t)run}, 1, 0, "test"};
+        RenderSettings settings = {
+            {SIDE, SIDE, SPP, PIXEL_STRATIFIED, 100 + (uint64_t)run}, 1, 0, "test"};
         RenderResult r;
         assert_int_equal(render(&scene, &settings, path_final_radiance, &path, &r), 0);
         for (int i = 0; i < 3 * SIDE * SIDE; i++) {
@@ -139,7 +157,8 @@ static void test_path_tracer_mean_unchanged(void **state)
     }
     Image mean = image_new(SIDE, SIDE), error_of_mean = image_new(SIDE, SIDE);
     for (int i = 0; i < 3 * SIDE * SIDE; i++) {
-        double m = sum.pixels[i] / RUNS, variance = (sum2.pixels[i] - RUNS * m * m) / (RUNS - 1);
+        double m = sum.pixels[i] / RUNS,
+               variance = (sum2.pixels[i] - RUNS * m * m) / (RUNS - 1);
         mean.pixels[i] = (float)m;
         error_of_mean.pixels[i] = (float)sqrt(fmax(variance, 0.0) / RUNS);
     }

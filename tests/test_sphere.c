@@ -29,7 +29,8 @@ static void test_hit_from_outside(void **state)
         assert_close(sphere_intersect(&sphere, head_on, 0, INFINITY), 4 * s, 1e-15 * s);
         Sphere big = {vec3(0, 0, 5 * s), 4 * s, 0};
         Ray oblique = {vec3(0, 0, 0), vec3(0, 0.6, 0.8)};
-        assert_close(sphere_intersect(&big, oblique, 0, INFINITY), (4 - sqrt(7)) * s, 1e-15 * s);
+        assert_close(sphere_intersect(&big, oblique, 0, INFINITY), (4 - sqrt(7)) * s,
+                     1e-15 * s);
     }
 }
 
@@ -137,7 +138,8 @@ static void test_tiny_sphere_far_away(void **state)
             double expected = reference_hit(&sphere, ray);
             double on_surface = vec3_length(vec3_sub(ray_at(ray, t), sphere.center));
             worst_t = fmax(worst_t, fabs(t - expected) / expected);
-            worst_surface = fmax(worst_surface, fabs(on_surface - sphere.radius) / sphere.radius);
+            worst_surface =
+                fmax(worst_surface, fabs(on_surface - sphere.radius) / sphere.radius);
         }
     }
     print_message("tiny far sphere: worst relative t error %.2g, worst |p-c|-r over r %.2g\n",

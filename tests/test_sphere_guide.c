@@ -42,7 +42,8 @@ static void two_spheres(Scene *scene)
     scene_init(scene);
     Material glass = {.name = "glass", .kind = MATERIAL_GLASS, .ior = 1.5};
     Material mirror = {.name = "mirror", .kind = MATERIAL_MIRROR, .reflectance = vec3(1, 1, 1)};
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     Sphere a = {vec3(0, 0, 1), 0.5, scene_add_material(scene, glass)};
     Sphere b = {vec3(2, 0, 0.4), 0.4, scene_add_material(scene, mirror)};
     Sphere c = {vec3(-3, 0, 1), 0.5, scene_add_material(scene, white)}; /* not specular */
@@ -65,7 +66,9 @@ static const Place PLACES[] = {
     {"capped at 1/2", {0.2, 0, 0.2}, {0, 0, 1}, 1000.0, 2},
     {"sideways", {1, 0, 0.3}, {-1, 0, 0}, 8.0, 1},
 };
-enum { PLACE_COUNT = sizeof PLACES / sizeof PLACES[0] };
+enum {
+    PLACE_COUNT = sizeof PLACES / sizeof PLACES[0]
+};
 
 /* Run `check` on the guide at every place of two_spheres. */
 static void for_each_place(void (*check)(const Place *place, const SphereGuide *guide, int i))
@@ -84,7 +87,9 @@ static void integrates_to_one(const Place *place, const SphereGuide *guide, int 
 {
     assert_int_equal(guide->count, place->cones);
     assert_true(guide->cosine_share >= 0.5 - 1e-12);
-    enum { N = 400000 };
+    enum {
+        N = 400000
+    };
     double sum = 0.0, sum2 = 0.0;
     TestRandom rng = test_random(5, (uint64_t)i, 0);
     for (int k = 0; k < N; k++) {
@@ -98,10 +103,7 @@ static void integrates_to_one(const Place *place, const SphereGuide *guide, int 
     assert_true(fabs(mean - 1.0) < 4.0 * error + 1e-9);
 }
 
-static void test_density_integrates_to_one(void **state)
-{
-    for_each_place(integrates_to_one);
-}
+static void test_density_integrates_to_one(void **state) { for_each_place(integrates_to_one); }
 
 /* Solid angle of the directions with cos(w, axis) >= c. */
 static double cap_solid_angle(double c) { return 2.0 * PI * (1.0 - c); }
@@ -110,7 +112,10 @@ static void draws_follow_the_density(const Place *place, const SphereGuide *guid
 {
     /* Regions: the upper hemisphere, each cone, the band 0.3 <= cos < 0.6 (where
      * the cosine part keeps p > 0 in all of them). */
-    enum { N = 400000, REGIONS = 2 + SPHERE_GUIDE_MAX };
+    enum {
+        N = 400000,
+        REGIONS = 2 + SPHERE_GUIDE_MAX
+    };
     int regions = 2 + guide->count;
     double sum[REGIONS] = {0}, sum2[REGIONS] = {0}, expected[REGIONS];
     expected[0] = 2.0 * PI;
@@ -134,8 +139,8 @@ static void draws_follow_the_density(const Place *place, const SphereGuide *guid
     }
     for (int r = 0; r < regions; r++) {
         double mean = sum[r] / N, error = sqrt((sum2[r] / N - mean * mean) / (N - 1));
-        print_message("    %-24s region %d: %.4f +- %.4f sr (expected %.4f)\n", place->name,
-                      r, mean, error, expected[r]);
+        print_message("    %-24s region %d: %.4f +- %.4f sr (expected %.4f)\n", place->name, r,
+                      mean, error, expected[r]);
         assert_true(fabs(mean - expected[r]) < 4.0 * error + 1e-9);
     }
 }
@@ -160,22 +165,29 @@ static void test_furnace_with_spheres(void **state)
     assert_true(scene_add_sphere(&scene, b) >= 0);
     assert_int_equal(scene_prepare(&scene), 0);
     for (int mis = 0; mis < 2; mis++) {
-        PathSettings settings = {.max_depth = 200, .shadow_rays = 1, .rr_throughput = 3, .mis = mis,
+        PathSettings settings = {.max_depth = 200,
+                                 .shadow_rays = 1,
+                                 .rr_throughput = 3,
+                                 .mis = mis,
                                  .sphere_guide = SPHERE_GUIDE_STRENGTH};
-        enum { N = 200000 };
+        enum {
+            N = 200000
+        };
         double sum = 0.0, sum2 = 0.0;
         RayCounts counts = {0, 0, 0};
         for (int i = 0; i < N; i++) {
             Rng rng = rng_for_sample(9, 0, (uint64_t)i);
             double u1 = rng_uniform(&rng), u2 = rng_uniform(&rng);
             Ray ray = {vec3(0.1, 0.3, 0.4), unit_vector_from(u1, u2)};
-            double value = vec3_average(path_final_radiance(&scene, ray, &rng, &settings, &counts));
+            double value =
+                vec3_average(path_final_radiance(&scene, ray, &rng, &settings, &counts));
             sum += value;
             sum2 += value * value;
         }
         double mean = sum / N, error = sqrt((sum2 / N - mean * mean) / (N - 1));
-        print_message("    furnace with a glass and a mirror sphere%s: %.5f +- %.5f (expected %.1f)\n",
-                      mis ? ", mis" : "", mean, error, FURNACE_BORDERED_RADIANCE);
+        print_message(
+            "    furnace with a glass and a mirror sphere%s: %.5f +- %.5f (expected %.1f)\n",
+            mis ? ", mis" : "", mean, error, FURNACE_BORDERED_RADIANCE);
         assert_true(fabs(mean - FURNACE_BORDERED_RADIANCE) < 4.0 * error);
         assert_true(error < 0.01);
     }
@@ -191,7 +203,10 @@ static void test_room_agrees_without_the_guide(void **state)
     assert_int_equal(scene_load("scenes/room.scene", &scene, error, sizeof error), 0);
     MirrorPlanes mirrors;
     assert_int_equal(mirror_light_find_planes(&scene, &mirrors), 0);
-    PathSettings plain = {.max_depth = 8, .shadow_rays = 1, .rr_throughput = 1, .mirror_light = 8,
+    PathSettings plain = {.max_depth = 8,
+                          .shadow_rays = 1,
+                          .rr_throughput = 1,
+                          .mirror_light = 8,
                           .mirrors = &mirrors};
     PathSettings guided = plain;
     guided.sphere_guide = SPHERE_GUIDE_STRENGTH;
@@ -200,7 +215,8 @@ static void test_room_agrees_without_the_guide(void **state)
     RenderResult ra, rb;
     assert_int_equal(render(&scene, &a, path_final_radiance, &guided, &ra), 0);
     assert_int_equal(render(&scene, &b, path_final_radiance, &plain, &rb), 0);
-    Agreement agreement = agreement_test(&ra.image, &ra.std_error, &rb.image, &rb.std_error, 0.01);
+    Agreement agreement =
+        agreement_test(&ra.image, &ra.std_error, &rb.image, &rb.std_error, 0.01);
     agreement_print("room, guided against cosine only", &agreement);
     assert_true(agreement_holds(&agreement));
     render_result_free(&ra);

@@ -53,7 +53,8 @@ static void test_subpixels_and_random_estimate_the_same_image(void **state)
     assert_non_null(sum);
     assert_non_null(squares);
     for (int run = 0; run < RUNS; run++) {
-        RenderSettings settings = {{SIDE, SIDE, STRATA, PIXEL_SUBPIXELS, 100 + (uint64_t)run}, 0, 0, "test"};
+        RenderSettings settings = {
+            {SIDE, SIDE, STRATA, PIXEL_SUBPIXELS, 100 + (uint64_t)run}, 0, 0, "test"};
         RenderResult result;
         assert_int_equal(render(&scene, &settings, path_radiance, &path, &result), 0);
         for (int p = 0; p < PIXELS; p++) {
@@ -82,8 +83,8 @@ static void test_subpixels_and_random_estimate_the_same_image(void **state)
     double p = chi_square_p_value(sum_z2, PIXELS);
     print_message("    sum of z^2 = %.1f over %d pixels (p = %.3f), largest |z| %.2f\n", sum_z2,
                   PIXELS, p, largest);
-    print_message("    variance of a %d-sample pixel mean: sub-pixels %.4f, random %.4f\n", STRATA,
-                  stratified_variance, random_variance);
+    print_message("    variance of a %d-sample pixel mean: sub-pixels %.4f, random %.4f\n",
+                  STRATA, stratified_variance, random_variance);
     assert_true(p > 0.001);
     free(sum);
     free(squares);
@@ -115,7 +116,8 @@ static void test_interrupted_subpixel_render_is_unbiased(void **state)
     scene_init(&scene);
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
     render_install_interrupt();
-    RenderSettings settings = {{POSITION_SIDE, POSITION_SIDE, 1000, PIXEL_SUBPIXELS, 3}, 1, 0, "test"};
+    RenderSettings settings = {
+        {POSITION_SIDE, POSITION_SIDE, 1000, PIXEL_SUBPIXELS, 3}, 1, 0, "test"};
     RenderResult result;
     assert_int_equal(render(&scene, &settings, position_in_pixel, NULL, &result), 0);
     assert_true(result.interrupted);
@@ -130,8 +132,8 @@ static void test_interrupted_subpixel_render_is_unbiased(void **state)
             squares += x * x;
         }
         double mean = sum / n, se = sqrt((squares / n - mean * mean) / (n - 1));
-        print_message("    after %.2f of 1000 spp, channel %d: %.4f +- %.4f, expected %.2f\n", spp,
-                      c, mean, se, expected[c]);
+        print_message("    after %.2f of 1000 spp, channel %d: %.4f +- %.4f, expected %.2f\n",
+                      spp, c, mean, se, expected[c]);
         assert_true(fabs(mean - expected[c]) < 4 * se);
     }
     assert_true(spp > 3.0 && spp < 4.0);

@@ -32,7 +32,8 @@ static void test_make(void **state)
     Triangle flipped = triangle_make(vec3(0, 0, 0), vec3(0, 3, 0), vec3(2, 0, 0), 7);
     assert_close(flipped.normal.z, -1, 0);
 
-    Vec3 a = vec3(0.1234, -5.678, 9.1011), b = vec3(-3.21, 0.654, 2.2), c = vec3(7.7, 1.5, -0.25);
+    Vec3 a = vec3(0.1234, -5.678, 9.1011), b = vec3(-3.21, 0.654, 2.2),
+         c = vec3(7.7, 1.5, -0.25);
     Triangle odd = triangle_make(a, b, c, 0);
     double ab = vec3_length(vec3_sub(b, a)), bc = vec3_length(vec3_sub(c, b));
     double ca = vec3_length(vec3_sub(a, c)), s = 0.5 * (ab + bc + ca);
@@ -64,8 +65,9 @@ static void test_hit_both_sides(void **state)
 static void test_miss(void **state)
 {
     Triangle tri = triangle_make(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), 0);
-    Vec3 outside[] = {vec3(0.5, -1e-6, 0), vec3(-1e-6, 0.5, 0), vec3(0.5 + 1e-6, 0.5 + 1e-6, 0),
-                      vec3(-1e-6, -1e-6, 0), vec3(1 + 1e-6, 0, 0), vec3(0, 1 + 1e-6, 0)};
+    Vec3 outside[] = {
+        vec3(0.5, -1e-6, 0),   vec3(-1e-6, 0.5, 0),  vec3(0.5 + 1e-6, 0.5 + 1e-6, 0),
+        vec3(-1e-6, -1e-6, 0), vec3(1 + 1e-6, 0, 0), vec3(0, 1 + 1e-6, 0)};
     for (int i = 0; i < 6; i++)
         assert_true(isinf(hit(&tri, ray_through(vec3(0.3, 0.2, 1), outside[i]))));
     Ray away = {vec3(0.2, 0.2, 1), vec3(0, 0, 1)};
@@ -92,7 +94,11 @@ static void test_vertex_and_edge(void **state)
     TestRandom rng = test_random(5, 0, 0);
     Vec3 a = vec3(0.3, -1.7, 2.2), b = vec3(2.9, 0.4, 1.1), c = vec3(-0.6, 1.3, 3.7);
     Triangle tri = triangle_make(a, b, c, 0);
-    Vec3 boundary[] = {a, b, c, point_on_triangle(&tri, 0.5, 0), point_on_triangle(&tri, 0, 0.25),
+    Vec3 boundary[] = {a,
+                       b,
+                       c,
+                       point_on_triangle(&tri, 0.5, 0),
+                       point_on_triangle(&tri, 0, 0.25),
                        point_on_triangle(&tri, 0.6, 0.4)};
     for (int k = 0; k < 1000; k++)
         for (int i = 0; i < 6; i++) {
@@ -103,7 +109,9 @@ static void test_vertex_and_edge(void **state)
 
 /* A rotation taking the axes to a random right-handed frame: "awkward" coordinates
  * where no component is a round number. */
-typedef struct { Vec3 x, y, z; } Frame;
+typedef struct {
+    Vec3 x, y, z;
+} Frame;
 
 static Frame random_frame(TestRandom *rng)
 {
@@ -152,7 +160,10 @@ static int count_holes(const Triangle *tris, int count, Vec3 (*target)(TestRando
 }
 
 /* A quad P0 P1 P2 P3 split as the scene format does, into (P0,P1,P2) and (P0,P2,P3). */
-typedef struct { Vec3 p[4]; Triangle tri[2]; } Quad;
+typedef struct {
+    Vec3 p[4];
+    Triangle tri[2];
+} Quad;
 
 /* A random point of the shared diagonal P0-P2 as the renderer would compute one
  * (so within rounding, ~1e-16 relative, of the exact segment), or one of its ends. */
@@ -175,7 +186,8 @@ static void test_watertight_quad(void **state)
 {
     TestRandom rng = test_random(2024, 0, 0);
     const double scales[] = {1e-3, 1.0, 1e3};
-    Vec3 corners[4] = {vec3(0, 0, 0), vec3(1.3, -0.2, 0), vec3(1.1, 0.9, 0), vec3(-0.1, 0.7, 0)};
+    Vec3 corners[4] = {vec3(0, 0, 0), vec3(1.3, -0.2, 0), vec3(1.1, 0.9, 0),
+                       vec3(-0.1, 0.7, 0)};
     for (int i = 0; i < 3; i++)
         for (int awkward = 0; awkward < 2; awkward++) {
             double s = scales[i];
@@ -200,14 +212,18 @@ static void test_watertight_quad(void **state)
 /* A fan of six triangles around a centre vertex, each listing the vertices in its own
  * order, so the shared spokes are e1 in one triangle and e2 (or the far edge) in the
  * next. */
-typedef struct { Vec3 centre, rim[6]; Triangle tri[6]; } Fan;
+typedef struct {
+    Vec3 centre, rim[6];
+    Triangle tri[6];
+} Fan;
 
 static Vec3 on_spoke(TestRandom *rng, void *context)
 {
     const Fan *fan = context;
     int spoke = (int)(6 * test_uniform(rng));
     double s = test_uniform(rng);
-    return s < 0.1 ? fan->centre : vec3_add_scaled(fan->centre, vec3_sub(fan->rim[spoke], fan->centre), s);
+    return s < 0.1 ? fan->centre
+                   : vec3_add_scaled(fan->centre, vec3_sub(fan->rim[spoke], fan->centre), s);
 }
 
 /* Watertight fan: 10^5 rays per scale through the shared centre vertex and the
@@ -222,14 +238,16 @@ static void test_watertight_fan(void **state)
         Fan fan;
         fan.centre = vec3(-7.3 * s, 0.37 * s, 5.9 * s);
         for (int k = 0; k < 6; k++) {
-            double angle = k * PI / 3 + 0.3 * test_uniform(&rng), radius = 0.5 + test_uniform(&rng);
-            fan.rim[k] = place(f, fan.centre, s, vec3(radius * cos(angle), radius * sin(angle), 0));
+            double angle = k * PI / 3 + 0.3 * test_uniform(&rng),
+                   radius = 0.5 + test_uniform(&rng);
+            fan.rim[k] =
+                place(f, fan.centre, s, vec3(radius * cos(angle), radius * sin(angle), 0));
         }
         for (int k = 0; k < 6; k++) {
             Vec3 a = fan.centre, b = fan.rim[k], c = fan.rim[(k + 1) % 6];
-            fan.tri[k] = k % 3 == 0 ? triangle_make(a, b, c, 0)
-                       : k % 3 == 1 ? triangle_make(b, c, a, 0)
-                                    : triangle_make(c, a, b, 0);
+            fan.tri[k] = k % 3 == 0   ? triangle_make(a, b, c, 0)
+                         : k % 3 == 1 ? triangle_make(b, c, a, 0)
+                                      : triangle_make(c, a, b, 0);
         }
         int holes = count_holes(fan.tri, 6, on_spoke, &fan, s, 100000, &rng);
         if (holes)

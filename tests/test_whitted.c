@@ -1,4 +1,5 @@
-/* test_whitted.c (chapter 1): the Whitted ray tree (whitted.h, report §2.1, Figure 1, chapter 1).
+/* test_whitted.c (chapter 1): the Whitted ray tree (whitted.h, report §2.1, Figure 1, chapter
+ * 1).
  *
  * Whitted ray tracing is deterministic (no random numbers: every call here passes a
  * NULL generator), so each test compares with a closed form to rounding, 1e-12
@@ -44,7 +45,10 @@ static const Vec3 WALLS = {1, 1, 1};
 
 static int add_material(Scene *scene, MaterialKind kind, Vec3 reflectance, Vec3 emission)
 {
-    Material m = {.name = "test", .kind = kind, .reflectance = reflectance, .emission = emission,
+    Material m = {.name = "test",
+                  .kind = kind,
+                  .reflectance = reflectance,
+                  .emission = emission,
                   .ior = GLASS_IOR};
     int index = scene_add_material(scene, m);
     assert_true(index >= 0);
@@ -133,10 +137,7 @@ static void assert_colour_close(Vec3 a, Vec3 b)
     assert_close(a.z, b.z, RELATIVE * fabs(b.z));
 }
 
-static void assert_black(Vec3 a)
-{
-    assert_true(a.x == 0.0 && a.y == 0.0 && a.z == 0.0);
-}
+static void assert_black(Vec3 a) { assert_true(a.x == 0.0 && a.y == 0.0 && a.z == 0.0); }
 
 /* The closed form at floor point p (normal +z) lit by one point light:
  * rho / pi * I * cos(theta) / d^2 with cos(theta) = h / d, d = sqrt(h^2 + x^2). */
@@ -223,8 +224,8 @@ static void test_hard_shadow(void **state)
     assert_int_equal(scene_prepare(&scene), 0);
     double shadow_radius = 2.0 * tan(asin(0.25));
     const Vec3 dark[] = {vec3(LIGHT.x, LIGHT.y, 0),
-                         vec3(LIGHT.x + shadow_radius - 0.01, LIGHT.y, 0),
-                         vec3(2.2, 2.1, 0), vec3(-1.8, -1.9, 0)};
+                         vec3(LIGHT.x + shadow_radius - 0.01, LIGHT.y, 0), vec3(2.2, 2.1, 0),
+                         vec3(-1.8, -1.9, 0)};
     for (int k = 0; k < 4; k++) {
         RayCounts counts = {0, 0, 0};
         assert_black(radiance(&scene, vec3(dark[k].x, dark[k].y, 0.5), dark[k], 5, &counts));

@@ -33,8 +33,10 @@ static void primitive_bounds(const Scene *scene, int prim, Vec3 *lower, Vec3 *up
     if (prim < scene->triangle_count) {
         const Triangle *t = &scene->triangles[prim];
         Vec3 a = t->v0, b = vec3_add(t->v0, t->e1), c = vec3_add(t->v0, t->e2);
-        *lower = vec3(fmin(a.x, fmin(b.x, c.x)), fmin(a.y, fmin(b.y, c.y)), fmin(a.z, fmin(b.z, c.z)));
-        *upper = vec3(fmax(a.x, fmax(b.x, c.x)), fmax(a.y, fmax(b.y, c.y)), fmax(a.z, fmax(b.z, c.z)));
+        *lower = vec3(fmin(a.x, fmin(b.x, c.x)), fmin(a.y, fmin(b.y, c.y)),
+                      fmin(a.z, fmin(b.z, c.z)));
+        *upper = vec3(fmax(a.x, fmax(b.x, c.x)), fmax(a.y, fmax(b.y, c.y)),
+                      fmax(a.z, fmax(b.z, c.z)));
         return;
     }
     const Sphere *s = &scene->spheres[prim - scene->triangle_count];
@@ -80,12 +82,14 @@ static void check_soup(int count, double scale)
 {
     Scene soup;
     scene_init(&soup);
-    Material grey = {.name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material grey = {
+        .name = "grey", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     int m = scene_add_material(&soup, grey);
     TestRandom rng = test_random(8, 8, 8);
     for (int i = 0; i < count; i++) {
         Vec3 corner = vec3_scale(vec3(2 * test_uniform(&rng) - 1, 2 * test_uniform(&rng) - 1,
-                                      2 * test_uniform(&rng) - 1), scale);
+                                      2 * test_uniform(&rng) - 1),
+                                 scale);
         Vec3 b = vec3_add_scaled(corner, random_unit_vector(&rng), scale * 1e-3);
         Vec3 c = vec3_add_scaled(corner, random_unit_vector(&rng), scale * 1e-3);
         assert_true(scene_add_triangle(&soup, triangle_make(corner, b, c, m)) >= 0);

@@ -183,7 +183,8 @@ static int garbled(AnswerReader *r, const char *what)
 }
 
 /* What is wrong with a header, or NULL. */
-static const char *bad_header(const AnswerReader *r, const unsigned char *frame, const Header *h)
+static const char *bad_header(const AnswerReader *r, const unsigned char *frame,
+                              const Header *h)
 {
     if (memcmp(frame, MAGIC, 4) != 0)
         return "is not a frame of the grader's";
@@ -225,8 +226,8 @@ static int take_frame(AnswerReader *r)
     if (sum != checksum(r->pending, size - CHECKSUM))
         return garbled(r, "is damaged: its checksum does not match");
     if (h.count > 0) {
-        double *values = room_for(r->values, &r->capacity, (size_t)r->count + h.count,
-                                  sizeof *values);
+        double *values =
+            room_for(r->values, &r->capacity, (size_t)r->count + h.count, sizeof *values);
         if (!values)
             return -2;
         r->values = values;
@@ -246,7 +247,8 @@ int answer_feed(AnswerReader *r, const unsigned char *bytes, size_t size)
         return -1;
     if (r->ended)
         return 1;
-    unsigned char *pending = room_for(r->pending, &r->pending_capacity, r->pending_size + size, 1);
+    unsigned char *pending =
+        room_for(r->pending, &r->pending_capacity, r->pending_size + size, 1);
     if (!pending)
         return -2;
     r->pending = pending;

@@ -13,10 +13,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define ANSWERS_FRAME 4096          /* values per frame at most */
-#define ANSWERS_MAX (1L << 24)      /* values per run at most */
-#define ANSWERS_SECRET 16           /* bytes of a run's secret */
-#define ANSWERS_ID 16               /* bytes of an exercise's id in a frame */
+#define ANSWERS_FRAME 4096     /* values per frame at most */
+#define ANSWERS_MAX (1L << 24) /* values per run at most */
+#define ANSWERS_SECRET 16      /* bytes of a run's secret */
+#define ANSWERS_ID 16          /* bytes of an exercise's id in a frame */
 #define ANSWERS_HEADER (24 + ANSWERS_SECRET + ANSWERS_ID) /* bytes before a frame's values */
 
 /* The probe's end: values are buffered and sent a frame at a time. */
@@ -25,8 +25,8 @@ typedef struct {
     unsigned char secret[ANSWERS_SECRET];
     char id[ANSWERS_ID];
     uint32_t sequence;
-    uint64_t sent;  /* values in the frames already written */
-    int buffered;   /* values in the frame being filled */
+    uint64_t sent; /* values in the frames already written */
+    int buffered;  /* values in the frame being filled */
     unsigned char frame[ANSWERS_HEADER + 8 * ANSWERS_FRAME + 8];
 } AnswerWriter;
 
@@ -39,9 +39,9 @@ typedef struct {
     size_t pending_size, pending_capacity;
     double *values;
     long count;
-    size_t capacity;        /* values that fit in `values` */
-    int ended;              /* the end frame arrived */
-    char garbled[256];      /* what was wrong with the first bad frame, or "" */
+    size_t capacity;   /* values that fit in `values` */
+    int ended;         /* the end frame arrived */
+    char garbled[256]; /* what was wrong with the first bad frame, or "" */
 } AnswerReader;
 
 /* Write all `size` bytes to fd, again after an interrupting signal. Returns 0, or -1

@@ -19,10 +19,7 @@
 
 #define TRIES 4000
 
-static int close_to(double a, double b, double tolerance)
-{
-    return fabs(a - b) <= tolerance;
-}
+static int close_to(double a, double b, double tolerance) { return fabs(a - b) <= tolerance; }
 
 static void grade_sphere(Grading *g)
 {
@@ -32,21 +29,25 @@ static void grade_sphere(Grading *g)
     for (int i = 0; i < TRIES && !g->failed; i++) {
         TestRandom rng = test_random(11, 1, (uint64_t)i);
         int kind = i % 4; /* 0, 1: from outside; 2: from inside; 3: sphere behind */
-        double distance = kind == 2 ? 0.6 * r * test_uniform(&rng) : 1.5 + 3.0 * test_uniform(&rng);
+        double distance =
+            kind == 2 ? 0.6 * r * test_uniform(&rng) : 1.5 + 3.0 * test_uniform(&rng);
         Vec3 origin = vec3_add_scaled(sphere.center, random_unit_vector(&rng), distance);
-        Vec3 target = vec3_add_scaled(sphere.center, random_unit_vector(&rng), 1.3 * r * test_uniform(&rng));
+        Vec3 target = vec3_add_scaled(sphere.center, random_unit_vector(&rng),
+                                      1.3 * r * test_uniform(&rng));
         Vec3 d = vec3_normalize(vec3_sub(target, origin));
         if (kind == 3)
             d = vec3_neg(d);
         Vec3 to_centre = vec3_sub(sphere.center, origin);
         double b = vec3_dot(d, to_centre);
-        double miss2 = vec3_dot(to_centre, to_centre) - b * b; /* squared distance of the line */
+        double miss2 =
+            vec3_dot(to_centre, to_centre) - b * b; /* squared distance of the line */
         double pass = sqrt(fmax(0.0, miss2));
         if (fabs(pass - r) < 1e-6)
             continue;
         double half = sqrt(fmax(0.0, r * r - miss2));
         double near = b - half, far = b + half;
-        double expected = pass > r ? INFINITY : (near > 1e-9 ? near : (far > 1e-9 ? far : INFINITY));
+        double expected =
+            pass > r ? INFINITY : (near > 1e-9 ? near : (far > 1e-9 ? far : INFINITY));
         Ray ray = {origin, d};
         double t = ASK(g, sphere_intersect(&sphere, ray, 1e-9, INFINITY));
         if (isnan(t)) {
@@ -55,39 +56,53 @@ static void grade_sphere(Grading *g)
         }
         if (expected == INFINITY && t != INFINITY) {
             if (kind == 3)
-                grading_fail(g, "hits a sphere that lies behind the ray's origin (t = %.3f; the "
+                grading_fail(g,
+                             "hits a sphere that lies behind the ray's origin (t = %.3f; the "
                              "sphere is at t = %.3f and %.3f): only t in (tmin, tmax) counts",
                              t, near, far);
             else
-                grading_fail(g, "hits a ray that passes %.3f from the centre of a sphere of radius "
-                             "%.2f (t = %.3f): is the discriminant's sign right?", pass, r, t);
+                grading_fail(
+                    g,
+                    "hits a ray that passes %.3f from the centre of a sphere of radius "
+                    "%.2f (t = %.3f): is the discriminant's sign right?",
+                    pass, r, t);
         } else if (expected != INFINITY && t == INFINITY) {
             if (kind == 2)
-                grading_fail(g, "a ray starting inside the sphere finds no hit: when the near "
+                grading_fail(g,
+                             "a ray starting inside the sphere finds no hit: when the near "
                              "root t = %.3f is behind the origin, the far root t = %.3f is the "
-                             "hit", near, far);
+                             "hit",
+                             near, far);
             else
-                grading_fail(g, "misses a ray that passes %.3f from the centre of a sphere of "
-                             "radius %.2f (the hit is at t = %.3f)", pass, r, expected);
+                grading_fail(g,
+                             "misses a ray that passes %.3f from the centre of a sphere of "
+                             "radius %.2f (the hit is at t = %.3f)",
+                             pass, r, expected);
         } else if (expected != INFINITY && !close_to(t, expected, 1e-9 * (1.0 + expected))) {
             Vec3 p = vec3_add_scaled(origin, d, t);
             double off = vec3_length(vec3_sub(p, sphere.center)) - r;
             if (close_to(t, far, 1e-9 * (1.0 + far)))
-                grading_fail(g, "returns the far side of the sphere, t = %.4f, where the first "
-                             "hit is at t = %.4f: the smaller root comes first", t, near);
+                grading_fail(g,
+                             "returns the far side of the sphere, t = %.4f, where the first "
+                             "hit is at t = %.4f: the smaller root comes first",
+                             t, near);
             else
-                grading_fail(g, "t = %.*f where the ray meets the sphere at t = %.*f: the point "
+                grading_fail(g,
+                             "t = %.*f where the ray meets the sphere at t = %.*f: the point "
                              "at t is %.3g off the surface (is the direction unit, and are b "
-                             "and c as in eq. 20?)", grading_decimals(t, expected), t,
-                             grading_decimals(t, expected), expected, off);
+                             "and c as in eq. 20?)",
+                             grading_decimals(t, expected), t, grading_decimals(t, expected),
+                             expected, off);
         }
         hits += expected != INFINITY && kind != 2;
         misses += expected == INFINITY;
         inside += kind == 2;
         behind += kind == 3;
     }
-    grading_note(g, "%d rays hitting from outside, %d missing, %d from inside, %d with the "
-                 "sphere behind", hits, misses, inside, behind);
+    grading_note(g,
+                 "%d rays hitting from outside, %d missing, %d from inside, %d with the "
+                 "sphere behind",
+                 hits, misses, inside, behind);
 }
 
 static void grade_triangle(Grading *g)
@@ -107,7 +122,8 @@ static void grade_triangle(Grading *g)
             continue;
         int inside = a > 0.0 && b > 0.0 && a + b < 1.0;
         Vec3 target = vec3_add_scaled(vec3_add_scaled(tri.v0, tri.e1, a), tri.e2, b);
-        Vec3 origin = vec3_add_scaled(target, random_unit_vector(&rng), 1.0 + 3.0 * test_uniform(&rng));
+        Vec3 origin =
+            vec3_add_scaled(target, random_unit_vector(&rng), 1.0 + 3.0 * test_uniform(&rng));
         Vec3 to_target = vec3_sub(target, origin);
         double distance = vec3_length(to_target);
         Vec3 d = vec3_scale(to_target, 1.0 / distance);
@@ -123,31 +139,42 @@ static void grade_triangle(Grading *g)
         double expected = inside && !away ? distance : INFINITY;
         if (expected == INFINITY && t != INFINITY) {
             if (away)
-                grading_fail(g, "hits a triangle behind the ray's origin (t = %.3f): only t in "
-                             "(tmin, tmax) counts", t);
+                grading_fail(g,
+                             "hits a triangle behind the ray's origin (t = %.3f): only t in "
+                             "(tmin, tmax) counts",
+                             t);
             else
-                grading_fail(g, "hits a ray aimed at (u, v) = (%.2f, %.2f), outside the triangle "
-                             "(%s)", a, b,
-                             a < 0.0 ? "u < 0" : b < 0.0 ? "v < 0" : "u + v > 1: is u + v <= 1 tested?");
+                grading_fail(g,
+                             "hits a ray aimed at (u, v) = (%.2f, %.2f), outside the triangle "
+                             "(%s)",
+                             a, b,
+                             a < 0.0   ? "u < 0"
+                             : b < 0.0 ? "v < 0"
+                                       : "u + v > 1: is u + v <= 1 tested?");
         } else if (expected != INFINITY && t == INFINITY) {
-            grading_fail(g, "misses a ray aimed at (u, v) = (%.2f, %.2f), inside the triangle, "
-                         "from %s side", a, b,
-                         vec3_dot(d, tri.normal) < 0.0 ? "the front" : "the back");
+            grading_fail(g,
+                         "misses a ray aimed at (u, v) = (%.2f, %.2f), inside the triangle, "
+                         "from %s side",
+                         a, b, vec3_dot(d, tri.normal) < 0.0 ? "the front" : "the back");
         } else if (expected != INFINITY && !close_to(t, expected, 1e-9 * (1.0 + expected))) {
-            grading_fail(g, "t = %.*f where the triangle is at t = %.*f along the ray (eq. 18: "
-                         "t = (e2 . q) / det)", grading_decimals(t, expected), t,
-                         grading_decimals(t, expected), expected);
+            grading_fail(g,
+                         "t = %.*f where the triangle is at t = %.*f along the ray (eq. 18: "
+                         "t = (e2 . q) / det)",
+                         grading_decimals(t, expected), t, grading_decimals(t, expected),
+                         expected);
         }
         hits += expected != INFINITY;
         misses += expected == INFINITY;
     }
-    grading_note(g, "%d rays that hit a random triangle, %d that miss it or have it behind them",
+    grading_note(g,
+                 "%d rays that hit a random triangle, %d that miss it or have it behind them",
                  hits, misses);
 }
 
 static void grade_camera(Grading *g)
 {
-    Vec3 eye = vec3(-1, 0.2, 0.1), bl = vec3(0, 1, -0.8), br = vec3(0.2, -1, -0.8), tl = vec3(0, 1, 0.9);
+    Vec3 eye = vec3(-1, 0.2, 0.1), bl = vec3(0, 1, -0.8), br = vec3(0.2, -1, -0.8),
+         tl = vec3(0, 1, 0.9);
     Camera camera = camera_make(eye, bl, br, tl);
     const int width = 40, height = 30;
     int tried = 0;
@@ -164,8 +191,10 @@ static void grade_camera(Grading *g)
         if (grading_not_finite(g, length, "the direction's length"))
             break;
         if (vec3_length(vec3_sub(ray.origin, eye)) > 1e-12) {
-            grading_fail(g, "the ray starts at (%.3f, %.3f, %.3f), not at the eye (%.3f, %.3f, "
-                         "%.3f)", ray.origin.x, ray.origin.y, ray.origin.z, eye.x, eye.y, eye.z);
+            grading_fail(g,
+                         "the ray starts at (%.3f, %.3f, %.3f), not at the eye (%.3f, %.3f, "
+                         "%.3f)",
+                         ray.origin.x, ray.origin.y, ray.origin.z, eye.x, eye.y, eye.z);
             break;
         }
         if (!close_to(length, 1.0, 1e-12)) {
@@ -173,8 +202,8 @@ static void grade_camera(Grading *g)
             break;
         }
         double x = (col + u) / width, y = 1.0 - (row + v) / height;
-        Vec3 expected = vec3_normalize(vec3_sub(vec3_add_scaled(vec3_add_scaled(bl, camera.right, x),
-                                                                 camera.up, y), eye));
+        Vec3 expected = vec3_normalize(
+            vec3_sub(vec3_add_scaled(vec3_add_scaled(bl, camera.right, x), camera.up, y), eye));
         if (vec3_length(vec3_sub(ray.dir, expected)) < 1e-9)
             continue;
         /* Which plane point does it go through? Where the ray meets the image plane. */
@@ -182,10 +211,11 @@ static void grade_camera(Grading *g)
         double towards = vec3_dot(ray.dir, normal);
         double t = vec3_dot(vec3_sub(bl, eye), normal) / towards;
         if (!(t > 0.0 && isfinite(t))) {
-            grading_fail(g, "pixel (%d, %d) at (u, v) = (%.2f, %.2f) sends its ray along (%.3f, "
+            grading_fail(g,
+                         "pixel (%d, %d) at (u, v) = (%.2f, %.2f) sends its ray along (%.3f, "
                          "%.3f, %.3f), %s the image plane; it should go through the plane at "
-                         "(%.3f, %.3f) of its width and height, along (%.3f, %.3f, %.3f)", col,
-                         row, u, v, ray.dir.x, ray.dir.y, ray.dir.z,
+                         "(%.3f, %.3f) of its width and height, along (%.3f, %.3f, %.3f)",
+                         col, row, u, v, ray.dir.x, ray.dir.y, ray.dir.z,
                          fabs(towards) < 1e-12 ? "parallel to" : "away from", x, y, expected.x,
                          expected.y, expected.z);
             break;
@@ -198,11 +228,14 @@ static void grade_camera(Grading *g)
             why = ": the image is upside down (row 0 is the top: 1 - (row + v) / H)";
         else if (close_to(got_x, 1.0 - x, 1e-6) && close_to(got_y, y, 1e-6))
             why = ": the image is mirrored left to right";
-        else if (close_to(got_x, (col + 0.5) / width, 1e-6) || close_to(got_x, (double)col / width, 1e-6))
+        else if (close_to(got_x, (col + 0.5) / width, 1e-6) ||
+                 close_to(got_x, (double)col / width, 1e-6))
             why = ": (u, v), the point within the pixel, is not used";
-        grading_fail(g, "pixel (%d, %d) at (u, v) = (%.2f, %.2f) sends its ray through the image "
+        grading_fail(g,
+                     "pixel (%d, %d) at (u, v) = (%.2f, %.2f) sends its ray through the image "
                      "plane at (%.3f, %.3f) of its width and height, where (%.3f, %.3f) is "
-                     "right%s", col, row, u, v, got_x, got_y, x, y, why);
+                     "right%s",
+                     col, row, u, v, got_x, got_y, x, y, why);
     }
     grading_note(g, "%d rays of a %d x %d image checked against BL + x (BR - BL) + y (TL - BL)",
                  tried, width, height);
@@ -213,15 +246,19 @@ static void name_mirror_factor(Grading *g, double k, double dn, double length)
 {
     if (fabs(k) <= 1e-9)
         grading_fail(g, "R(d) = d: the direction goes on through the mirror; its normal part "
-                     "must turn round: R(d) = d - 2 (d . n) n");
+                        "must turn round: R(d) = d - 2 (d . n) n");
     else if (fabs(k - 2.0) <= 1e-9)
-        grading_fail(g, "R(d) = d + 2 (d . n) n: the sign is wrong, so the normal part is "
-                     "doubled, not turned round (R . n = %.4f where -d . n = %.4f): R(d) = d - 2 "
-                     "(d . n) n", 3.0 * dn, -dn);
+        grading_fail(
+            g,
+            "R(d) = d + 2 (d . n) n: the sign is wrong, so the normal part is "
+            "doubled, not turned round (R . n = %.4f where -d . n = %.4f): R(d) = d - 2 "
+            "(d . n) n",
+            3.0 * dn, -dn);
     else
-        grading_fail(g, "R(d) = d %c %.4g (d . n) n, %.4f long for a unit d: the factor of (d . "
-                     "n) n should be 2, subtracted: R(d) = d - 2 (d . n) n", k < 0.0 ? '-' : '+',
-                     fabs(k), length);
+        grading_fail(g,
+                     "R(d) = d %c %.4g (d . n) n, %.4f long for a unit d: the factor of (d . "
+                     "n) n should be 2, subtracted: R(d) = d - 2 (d . n) n",
+                     k < 0.0 ? '-' : '+', fabs(k), length);
 }
 
 static void grade_mirror(Grading *g)
@@ -241,11 +278,15 @@ static void grade_mirror(Grading *g)
         if (isfinite(k) && vec3_length(vec3_sub(r, vec3_add_scaled(d, n, k * dn))) <= 1e-9)
             name_mirror_factor(g, k, dn, length);
         else if (!close_to(length, 1.0, 1e-12))
-            grading_fail(g, "R(d) is %.*f long for a unit d: a reflection keeps the length (d - "
-                         "2 (d . n) n)", grading_decimals(length, 1.0), length);
+            grading_fail(g,
+                         "R(d) is %.*f long for a unit d: a reflection keeps the length (d - "
+                         "2 (d . n) n)",
+                         grading_decimals(length, 1.0), length);
         else if (!close_to(vec3_dot(r, n), -dn, 1e-12))
-            grading_fail(g, "R . n = %.4f where -d . n = %.4f: the reflection leaves at another "
-                         "angle than it arrived", vec3_dot(r, n), -dn);
+            grading_fail(g,
+                         "R . n = %.4f where -d . n = %.4f: the reflection leaves at another "
+                         "angle than it arrived",
+                         vec3_dot(r, n), -dn);
         else if (!close_to(vec3_dot(vec3_cross(d, n), r), 0.0, 1e-12))
             grading_fail(g, "R(d) leaves the plane of d and n");
         else
@@ -276,22 +317,26 @@ static void grade_snell(Grading *g)
         if (sin_t > 1.0) {
             reflected++;
             if (ok)
-                grading_fail(g, "no total internal reflection at %.1f degrees from index %.2f "
+                grading_fail(g,
+                             "no total internal reflection at %.1f degrees from index %.2f "
                              "into %.2f, beyond the critical angle arcsin(n_t / n_i) = %.1f "
-                             "degrees (sin(theta_t) would be %.2f)", degrees, n_i, n_t, critical,
-                             sin_t);
+                             "degrees (sin(theta_t) would be %.2f)",
+                             degrees, n_i, n_t, critical, sin_t);
             continue;
         }
         refracted++;
         if (!ok) {
             if (n_i < n_t)
-                grading_fail(g, "reports total internal reflection at %.1f degrees from index "
-                             "%.2f into %.2f, entering the denser medium, where it cannot happen",
-                             degrees, n_i, n_t);
+                grading_fail(
+                    g,
+                    "reports total internal reflection at %.1f degrees from index "
+                    "%.2f into %.2f, entering the denser medium, where it cannot happen",
+                    degrees, n_i, n_t);
             else
-                grading_fail(g, "reports total internal reflection at %.1f degrees from index "
-                             "%.2f into %.2f, below the critical angle %.1f degrees", degrees, n_i,
-                             n_t, critical);
+                grading_fail(g,
+                             "reports total internal reflection at %.1f degrees from index "
+                             "%.2f into %.2f, below the critical angle %.1f degrees",
+                             degrees, n_i, n_t, critical);
             continue;
         }
         double length = vec3_length(t);
@@ -302,19 +347,24 @@ static void grade_snell(Grading *g)
         if (!close_to(length, 1.0, 1e-9))
             grading_fail(g, "the refracted direction is %.4f long, not 1", length);
         else if (cos_t <= 0.0)
-            grading_fail(g, "the refracted ray turns back to the incident side (t . n = %.3f > 0)",
+            grading_fail(g,
+                         "the refracted ray turns back to the incident side (t . n = %.3f > 0)",
                          -cos_t);
         else if (!close_to(vec3_dot(vec3_cross(d, n), t), 0.0, 1e-9))
             grading_fail(g, "the refracted ray leaves the plane of d and n");
         else if (sin_i > 0.05 && !close_to(got_sin_t / sin_i, n_i / n_t, 1e-6))
-            grading_fail(g, "sin(theta_t) / sin(theta_i) = %.*f from index %.2f into %.2f, where "
-                         "Snell's law gives n_i / n_t = %.*f%s",
-                         grading_decimals(got_sin_t / sin_i, n_i / n_t), got_sin_t / sin_i, n_i,
-                         n_t, grading_decimals(got_sin_t / sin_i, n_i / n_t), n_i / n_t,
-                         close_to(got_sin_t / sin_i, n_t / n_i, 1e-6) ? ": the ratio is inverted" : "");
+            grading_fail(
+                g,
+                "sin(theta_t) / sin(theta_i) = %.*f from index %.2f into %.2f, where "
+                "Snell's law gives n_i / n_t = %.*f%s",
+                grading_decimals(got_sin_t / sin_i, n_i / n_t), got_sin_t / sin_i, n_i, n_t,
+                grading_decimals(got_sin_t / sin_i, n_i / n_t), n_i / n_t,
+                close_to(got_sin_t / sin_i, n_t / n_i, 1e-6) ? ": the ratio is inverted" : "");
     }
-    grading_note(g, "%d refractions and %d total internal reflections at indices 1 / 1.5, 1.5 / "
-                 "1, 1 / 1.33 and 1.6 / 1.2", refracted, reflected);
+    grading_note(g,
+                 "%d refractions and %d total internal reflections at indices 1 / 1.5, 1.5 / "
+                 "1, 1 / 1.33 and 1.6 / 1.2",
+                 refracted, reflected);
 }
 
 /* Schlick's R (eqs. 6-7) with (1 - cos theta) to `power`: theta the transmitted angle
@@ -361,8 +411,8 @@ static const char *schlick_mistake(double r, double cos_i, double n_i, double n_
 /* Where one pair of indices is furthest from Schlick's R: the failure it makes. */
 static void fail_schlick(Grading *g, double n_i, double n_t, int degrees, double got)
 {
-    static const char *const ordinals[] = {"", "first", "second", "third", "fourth", "fifth",
-                                           "sixth"};
+    static const char *const ordinals[] = {"",       "first", "second", "third",
+                                           "fourth", "fifth", "sixth"};
     double cos_i = cos(degrees * PI / 180.0), want = schlick(cos_i, n_i, n_t, 5, 1, 1);
     double sin2_t = (n_i / n_t) * (n_i / n_t) * (1.0 - cos_i * cos_i);
     int decimals = grading_decimals(got, want);
@@ -371,16 +421,20 @@ static void fail_schlick(Grading *g, double n_i, double n_t, int degrees, double
     snprintf(where, sizeof where, "R = %.*f at %d degrees from index %.2f into %.2f", decimals,
              got, degrees, n_i, n_t);
     if (n_i == n_t)
-        grading_fail(g, "%s: with n_i = n_t there is no interface and nothing is reflected, R = "
-                     "0 (eq. 6 alone would still give (1 - cos theta)^5)", where);
+        grading_fail(g,
+                     "%s: with n_i = n_t there is no interface and nothing is reflected, R = "
+                     "0 (eq. 6 alone would still give (1 - cos theta)^5)",
+                     where);
     else if (sin2_t > 1.0)
-        grading_fail(g, "%s, beyond the critical angle %.1f degrees: with no transmitted ray all "
-                     "is reflected, R = 1 (total internal reflection)", where,
-                     asin(n_t / n_i) * 180.0 / PI);
+        grading_fail(g,
+                     "%s, beyond the critical angle %.1f degrees: with no transmitted ray all "
+                     "is reflected, R = 1 (total internal reflection)",
+                     where, asin(n_t / n_i) * 180.0 / PI);
     else if (power)
-        grading_fail(g, "%s is R0 + (1 - R0) (1 - cos theta) to the %s power, where Schlick's "
-                     "approximation takes the fifth: %.*f (eq. 6)", where, ordinals[power],
-                     decimals, want);
+        grading_fail(g,
+                     "%s is R0 + (1 - R0) (1 - cos theta) to the %s power, where Schlick's "
+                     "approximation takes the fifth: %.*f (eq. 6)",
+                     where, ordinals[power], decimals, want);
     else
         grading_fail(g, "%s, where R0 + (1 - R0) (1 - cos theta)^5 = %.*f (R0 = %.4f)%s", where,
                      decimals, want, pow((n_i - n_t) / (n_i + n_t), 2.0),
@@ -389,7 +443,8 @@ static void fail_schlick(Grading *g, double n_i, double n_t, int degrees, double
 
 static void grade_schlick(Grading *g)
 {
-    static const double pairs[][2] = {{1.0, 1.5}, {1.5, 1.0}, {1.0, 1.33}, {1.6, 1.2}, {1.4, 1.4}};
+    static const double pairs[][2] = {
+        {1.0, 1.5}, {1.5, 1.0}, {1.0, 1.33}, {1.6, 1.2}, {1.4, 1.4}};
     int checked = 0;
     for (int k = 0; k < 5 && !g->failed; k++) {
         double n_i = pairs[k][0], n_t = pairs[k][1], worst = 0.0, worst_got = 0.0;
@@ -413,9 +468,11 @@ static void grade_schlick(Grading *g)
         if (worst > 1e-12)
             fail_schlick(g, n_i, n_t, worst_degrees, worst_got);
     }
-    grading_note(g, "%d incidences (every degree from 0 to 89 at n_i / n_t = 1 / 1.5, 1.5 / 1, 1 "
+    grading_note(g,
+                 "%d incidences (every degree from 0 to 89 at n_i / n_t = 1 / 1.5, 1.5 / 1, 1 "
                  "/ 1.33, 1.6 / 1.2, 1.4 / 1.4) against R0 + (1 - R0) (1 - cos theta)^5, theta "
-                 "the transmitted angle leaving the denser medium", checked);
+                 "the transmitted angle leaving the denser medium",
+                 checked);
 }
 
 const Exercise exercises[] = {

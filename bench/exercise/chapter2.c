@@ -51,26 +51,36 @@ static void grade_cosine_pdf(Grading *g)
         if (grading_not_finite(g, pdf, "the pdf"))
             break;
         if (w.z <= 0.0 && pdf != 0.0)
-            grading_fail(g, "the pdf is %.4f below the surface (z = %.3f), where no sample ever "
-                         "goes: it must be 0 there", pdf, w.z);
+            grading_fail(g,
+                         "the pdf is %.4f below the surface (z = %.3f), where no sample ever "
+                         "goes: it must be 0 there",
+                         pdf, w.z);
         else if (w.z > 0.0 && fabs(pdf - right) > 1e-9) {
             double ratio = pdf / right;
             if (fabs(pdf - 1.0 / (2.0 * PI)) < 1e-9)
-                grading_fail(g, "the pdf is 1 / (2 pi) = %.4f at every direction: that is the "
+                grading_fail(g,
+                             "the pdf is 1 / (2 pi) = %.4f at every direction: that is the "
                              "uniform hemisphere's; the cosine sampler's grows with cos(theta)",
                              pdf);
             else if (fabs(ratio - PI) < 1e-6)
-                grading_fail(g, "the pdf is pi times too large (%.4f at cos(theta) = %.3f where "
-                             "cos(theta) / pi = %.4f): a missing 1 / pi; it integrates to pi, not "
-                             "1", pdf, w.z, right);
+                grading_fail(
+                    g,
+                    "the pdf is pi times too large (%.4f at cos(theta) = %.3f where "
+                    "cos(theta) / pi = %.4f): a missing 1 / pi; it integrates to pi, not "
+                    "1",
+                    pdf, w.z, right);
             else
-                grading_fail(g, "the pdf is %.*f at cos(theta) = %.3f, where cos(theta) / pi = "
-                             "%.*f", grading_decimals(pdf, right), pdf, w.z,
+                grading_fail(g,
+                             "the pdf is %.*f at cos(theta) = %.3f, where cos(theta) / pi = "
+                             "%.*f",
+                             grading_decimals(pdf, right), pdf, w.z,
                              grading_decimals(pdf, right), right);
         }
     }
-    grading_note(g, "%d random directions over the whole sphere against cos(theta) / pi above "
-                 "the surface, 0 below", checked);
+    grading_note(g,
+                 "%d random directions over the whole sphere against cos(theta) / pi above "
+                 "the surface, 0 below",
+                 checked);
 }
 
 static void grade_lambert(Grading *g)
@@ -78,9 +88,11 @@ static void grade_lambert(Grading *g)
     const double rho[3] = {0.5, 0.25, 0.8};
     Vec3 f = ASK_VEC3(g, lambert_brdf(vec3(rho[0], rho[1], rho[2])));
     double got[3] = {f.x, f.y, f.z};
-    grading_note(g, "f(rho = (%.2f, %.2f, %.2f)) = (%.4f, %.4f, %.4f); rho / pi = (%.4f, %.4f, "
-                 "%.4f)", rho[0], rho[1], rho[2], got[0], got[1], got[2], rho[0] / PI,
-                 rho[1] / PI, rho[2] / PI);
+    grading_note(g,
+                 "f(rho = (%.2f, %.2f, %.2f)) = (%.4f, %.4f, %.4f); rho / pi = (%.4f, %.4f, "
+                 "%.4f)",
+                 rho[0], rho[1], rho[2], got[0], got[1], got[2], rho[0] / PI, rho[1] / PI,
+                 rho[2] / PI);
     for (int c = 0; c < 3; c++) {
         if (grading_not_finite(g, got[c], "f"))
             return;
@@ -90,30 +102,36 @@ static void grade_lambert(Grading *g)
         double albedo = PI * got[c];
         char furnace[200];
         if (albedo >= 1.0)
-            snprintf(furnace, sizeof furnace, "a furnace box of rho = %.2f would reflect %.2f of "
-                     "what arrives, and its light would grow without bound", rho[c], albedo);
+            snprintf(furnace, sizeof furnace,
+                     "a furnace box of rho = %.2f would reflect %.2f of "
+                     "what arrives, and its light would grow without bound",
+                     rho[c], albedo);
         else
-            snprintf(furnace, sizeof furnace, "a furnace box of rho = %.2f emitting 1 gives L = "
-                     "%.2f where 1 / (1 - rho) = %.2f is exact", rho[c], 1.0 / (1.0 - albedo),
-                     1.0 / (1.0 - rho[c]));
+            snprintf(furnace, sizeof furnace,
+                     "a furnace box of rho = %.2f emitting 1 gives L = "
+                     "%.2f where 1 / (1 - rho) = %.2f is exact",
+                     rho[c], 1.0 / (1.0 - albedo), 1.0 / (1.0 - rho[c]));
         int decimals = grading_decimals(got[c], rho[c] / PI);
         grading_fail(g, "f = %.*f for rho = %.2f, where rho / pi = %.*f: %s (%s)", decimals,
                      got[c], rho[c], decimals, rho[c] / PI, furnace,
-                     fabs(got[c] - rho[c]) < 1e-12 ? "a missing 1 / pi?"
-                                                   : "f cos integrated over the hemisphere must be rho");
+                     fabs(got[c] - rho[c]) < 1e-12
+                         ? "a missing 1 / pi?"
+                         : "f cos integrated over the hemisphere must be rho");
         return;
     }
 }
 
 static const PathSettings path_settings = {.max_depth = 4};
-static const RenderCheck path_check = {render_check_room, path_radiance, &path_settings, 24, 64, 2048};
+static const RenderCheck path_check = {
+    render_check_room, path_radiance, &path_settings, 24, 64, 2048};
 
 static void grade_path(Grading *g)
 {
-    grading_render(g, &path_check, LEVEL,
-                   "does a hit on the front of a light add throughput times its emission, does "
-                   "the path stop at a light or at max_depth, and does the throughput take each "
-                   "bounce's weight (docs/chapter2.md)?");
+    grading_render(
+        g, &path_check, LEVEL,
+        "does a hit on the front of a light add throughput times its emission, does "
+        "the path stop at a light or at max_depth, and does the throughput take each "
+        "bounce's weight (docs/chapter2.md)?");
 }
 
 const Exercise exercises[] = {

@@ -21,13 +21,12 @@
 #define WARP_SAMPLES 200000
 
 /* Two lamps facing down from the plane z = 1: x in [0, 1] and [1, 3], y in [0, 1]. */
-static const char lamps[] =
-    "camera 0 0 -1   -1 -1 0   1 -1 0   -1 1 0\n"
-    "material lamp light 1 1 1\n"
-    "material white lambert 0.5 0.5 0.5\n"
-    "quad lamp 0 0 1   0 1 1   1 1 1   1 0 1\n"
-    "quad lamp 1 0 1   1 1 1   3 1 1   3 0 1\n"
-    "quad white -5 -5 -1   5 -5 -1   5 5 -1   -5 5 -1\n";
+static const char lamps[] = "camera 0 0 -1   -1 -1 0   1 -1 0   -1 1 0\n"
+                            "material lamp light 1 1 1\n"
+                            "material white lambert 0.5 0.5 0.5\n"
+                            "quad lamp 0 0 1   0 1 1   1 1 1   1 0 1\n"
+                            "quad lamp 1 0 1   1 1 1   3 1 1   3 0 1\n"
+                            "quad white -5 -5 -1   5 -5 -1   5 5 -1   -5 5 -1\n";
 
 static void grade_light_sample(Grading *g)
 {
@@ -54,15 +53,15 @@ static void grade_light_sample(Grading *g)
         s.normal = grading_ask_vec3(g, s.normal);
         s.emission = grading_ask_vec3(g, s.emission);
         Vec3 p = s.point;
-        int on = fabs(p.z - 1.0) < 1e-9 && p.x >= 0.0 && p.x <= 3.0 && p.y >= 0.0 && p.y <= 1.0 &&
-                 fabs(s.normal.z + 1.0) < 1e-9 && s.emission.x == 1.0;
+        int on = fabs(p.z - 1.0) < 1e-9 && p.x >= 0.0 && p.x <= 3.0 && p.y >= 0.0 &&
+                 p.y <= 1.0 && fabs(s.normal.z + 1.0) < 1e-9 && s.emission.x == 1.0;
         if (!on) {
             warp_add(&warp, i, -1, 0, u_select, u1, NAN, NAN);
             continue;
         }
         int col = (int)(p.x / 3.0 * COLS), row = (int)((1.0 - p.y) * ROWS);
-        warp_add(&warp, i, row < ROWS ? row : ROWS - 1, col < COLS ? col : COLS - 1, u_select, u1,
-                 p.x / 1.5 - 1.0, (2.0 * p.y - 1.0) / 3.0);
+        warp_add(&warp, i, row < ROWS ? row : ROWS - 1, col < COLS ? col : COLS - 1, u_select,
+                 u1, p.x / 1.5 - 1.0, (2.0 * p.y - 1.0) / 3.0);
     }
     for (int c = 0; c < ROWS * COLS; c++)
         warp.expected[c] = (double)WARP_SAMPLES / (ROWS * COLS);
@@ -84,26 +83,34 @@ static void grade_light_pdf(Grading *g)
     for (int i = 0; i < 200 && !g->failed; i++, checked++) {
         Rng rng = rng_for_sample(32, 1, (uint64_t)i);
         double d = 0.2 + 3.0 * rng_uniform(&rng), cos_beta = 0.05 + 0.95 * rng_uniform(&rng);
-        double pdf = ASK(g, area_light_pdf(&scene, d, cos_beta)), right = d * d / (area * cos_beta);
+        double pdf = ASK(g, area_light_pdf(&scene, d, cos_beta)),
+               right = d * d / (area * cos_beta);
         if (grading_not_finite(g, pdf, "the pdf"))
             break;
         if (fabs(pdf - right) <= 1e-9 * right)
             continue;
         if (fabs(pdf - d * d / area) <= 1e-9 * right)
-            grading_fail(g, "the pdf is %.4f at distance %.2f and cos(beta) = %.2f, where d^2 / "
+            grading_fail(g,
+                         "the pdf is %.4f at distance %.2f and cos(beta) = %.2f, where d^2 / "
                          "(A cos beta) = %.4f: the cosine at the lamp is missing (a lamp seen "
-                         "edge-on covers a smaller solid angle)", pdf, d, cos_beta, right);
+                         "edge-on covers a smaller solid angle)",
+                         pdf, d, cos_beta, right);
         else if (fabs(pdf - 1.0 / area) <= 1e-9 * right)
-            grading_fail(g, "the pdf is 1 / A = %.4f, the density per unit area, where the "
-                         "density in solid angle d^2 / (A cos beta) = %.4f is asked for", pdf,
-                         right);
+            grading_fail(g,
+                         "the pdf is 1 / A = %.4f, the density per unit area, where the "
+                         "density in solid angle d^2 / (A cos beta) = %.4f is asked for",
+                         pdf, right);
         else
-            grading_fail(g, "the pdf is %.*f at distance %.2f and cos(beta) = %.2f, where d^2 / "
-                         "(A cos beta) = %.*f (A = %.1f)", grading_decimals(pdf, right), pdf, d,
-                         cos_beta, grading_decimals(pdf, right), right, area);
+            grading_fail(g,
+                         "the pdf is %.*f at distance %.2f and cos(beta) = %.2f, where d^2 / "
+                         "(A cos beta) = %.*f (A = %.1f)",
+                         grading_decimals(pdf, right), pdf, d, cos_beta,
+                         grading_decimals(pdf, right), right, area);
     }
-    grading_note(g, "%d distances and angles at lamps of total area %.1f against d^2 / (A cos "
-                 "beta)", checked, area);
+    grading_note(g,
+                 "%d distances and angles at lamps of total area %.1f against d^2 / (A cos "
+                 "beta)",
+                 checked, area);
     scene_free(&scene);
 }
 
@@ -118,17 +125,20 @@ static Vec3 first_hit_direct(const Scene *scene, Ray ray, Rng *rng, const void *
         return vec3(0, 0, 0);
     if (!material_is_diffuse(x.material))
         return x.front ? x.material->emission : vec3(0, 0, 0);
-    return area_light_shadow_ray(scene, x.hit.point, x.normal, x.wo, x.material, rng, counts).value;
+    return area_light_shadow_ray(scene, x.hit.point, x.normal, x.wo, x.material, rng, counts)
+        .value;
 }
 
-static const RenderCheck direct_check = {render_check_room, first_hit_direct, NULL, 24, 32, 1024};
+static const RenderCheck direct_check = {
+    render_check_room, first_hit_direct, NULL, 24, 32, 1024};
 
 static void grade_shadow_ray(Grading *g)
 {
-    grading_render(g, &direct_check, LEVEL,
-                   "is the value Le f cos(alpha) cos(beta) A / d^2 (eq. 21), 0 when the lamp or "
-                   "the surface faces away or the shadow ray is blocked (docs/chapter3.md, "
-                   "section 2)?");
+    grading_render(
+        g, &direct_check, LEVEL,
+        "is the value Le f cos(alpha) cos(beta) A / d^2 (eq. 21), 0 when the lamp or "
+        "the surface faces away or the shadow ray is blocked (docs/chapter3.md, "
+        "section 2)?");
 }
 
 /* Points of the room (render_check_room) lit by its lamp, with their normals: on the floor
@@ -136,8 +146,10 @@ static void grade_shadow_ray(Grading *g)
 static const Vec3 room_points[][2] = {{{0.3, -0.8, -1.5}, {0, 0, 1}},
                                       {{0.95, 0.3, -1.5}, {0, 0, 1}},
                                       {{-1.49, -0.5, 0.2}, {1, 0, 0}}};
-static const char *const room_point_names[] = {"the floor", "the floor in the sphere's "
-                                               "half-shadow", "the red wall"};
+static const char *const room_point_names[] = {"the floor",
+                                               "the floor in the sphere's "
+                                               "half-shadow",
+                                               "the red wall"};
 #define ROOM_POINTS 3
 #define DIRECT_TRIALS 50
 
@@ -158,19 +170,23 @@ static void fail_direct(Grading *g, const DirectCheck *c)
     int decimals = grading_decimals(c->direct, c->mean);
     const char *where = room_point_names[c->point];
     if (times_m(c))
-        grading_fail(g, "the sum of M terms is not divided by M: with M = %d the light is %d "
+        grading_fail(g,
+                     "the sum of M terms is not divided by M: with M = %d the light is %d "
                      "times too bright (L_D = %.4f on %s, where the mean of its %d shadow rays "
-                     "is %.4f; eq. 21: A / M times the sum)", c->m, c->m, c->direct, where, c->m,
-                     c->mean);
+                     "is %.4f; eq. 21: A / M times the sum)",
+                     c->m, c->m, c->direct, where, c->m, c->mean);
     else if (c->m > 1 && c->direct == 0.0)
-        grading_fail(g, "L_D is 0 with M = %d on %s, where the mean of its %d shadow rays is "
+        grading_fail(g,
+                     "L_D is 0 with M = %d on %s, where the mean of its %d shadow rays is "
                      "%.4f (and right with M = 1): is 1 / M computed with whole numbers? 1 / M "
-                     "is 0 for M > 1; 1.0 / M is not", c->m, where, c->m, c->mean);
+                     "is 0 for M > 1; 1.0 / M is not",
+                     c->m, where, c->m, c->mean);
     else
-        grading_fail(g, "with M = %d on %s, L_D = %.*f where the mean of the M shadow rays "
+        grading_fail(g,
+                     "with M = %d on %s, L_D = %.*f where the mean of the M shadow rays "
                      "area_light_shadow_ray draws from the same generator is %.*f: L_D is the "
-                     "sum of their values divided by M (eq. 21)", c->m, where, decimals,
-                     c->direct, decimals, c->mean);
+                     "sum of their values divided by M (eq. 21)",
+                     c->m, where, decimals, c->direct, decimals, c->mean);
 }
 
 /* L_D with M shadow rays at the room's points, DIRECT_TRIALS times each, against the mean
@@ -178,7 +194,8 @@ static void fail_direct(Grading *g, const DirectCheck *c)
  * in *first. Returns 0, or -1 after failing on a NaN. */
 static int direct_trials(Grading *g, const Scene *scene, int m, DirectCheck *first)
 {
-    Material white = {.name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.7, 0.7)};
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.7, 0.7)};
     RayCounts counts = {0};
     double sum_direct = 0.0, sum_mean = 0.0;
     *first = (DirectCheck){m, -1, 0.0, 0.0};
@@ -187,7 +204,8 @@ static int direct_trials(Grading *g, const Scene *scene, int m, DirectCheck *fir
             Vec3 x = room_points[p][0], n = room_points[p][1];
             Rng rng = rng_for_sample(34, (uint64_t)m, (uint64_t)(p * DIRECT_TRIALS + t));
             Rng again = rng;
-            double direct = ASK(g, area_light_direct(scene, x, n, n, &white, m, &rng, &counts).y);
+            double direct =
+                ASK(g, area_light_direct(scene, x, n, n, &white, m, &rng, &counts).y);
             double terms = 0.0;
             for (int i = 0; i < m && grading_probing(g); i++)
                 terms += area_light_shadow_ray(scene, x, n, n, &white, &again, &counts).value.y;
@@ -199,9 +217,11 @@ static int direct_trials(Grading *g, const Scene *scene, int m, DirectCheck *fir
             if (first->point < 0 && fabs(direct - mean) > 1e-12 + 1e-9 * fabs(mean))
                 *first = (DirectCheck){m, p, direct, mean};
         }
-    grading_note(g, "M = %d: L_D averages %.4f over %d trials at %d points; the means of their "
-                 "shadow rays %.4f", m, sum_direct / (ROOM_POINTS * DIRECT_TRIALS),
-                 DIRECT_TRIALS, ROOM_POINTS, sum_mean / (ROOM_POINTS * DIRECT_TRIALS));
+    grading_note(g,
+                 "M = %d: L_D averages %.4f over %d trials at %d points; the means of their "
+                 "shadow rays %.4f",
+                 m, sum_direct / (ROOM_POINTS * DIRECT_TRIALS), DIRECT_TRIALS, ROOM_POINTS,
+                 sum_mean / (ROOM_POINTS * DIRECT_TRIALS));
     return 0;
 }
 
@@ -223,7 +243,8 @@ static void grade_direct(Grading *g)
     }
     scene_free(&scene);
     if (wrong == 3 && unscaled == 3)
-        grading_fail(g, "the sum of M terms is not divided by M: with M = 2, 4 and 30 the light "
+        grading_fail(g,
+                     "the sum of M terms is not divided by M: with M = 2, 4 and 30 the light "
                      "is 2, 4 and 30 times too bright (with M = 4 on %s, L_D = %.4f where the "
                      "mean of its 4 shadow rays is %.4f; eq. 21: A / M times the sum)",
                      room_point_names[checks[2].point], checks[2].direct, checks[2].mean);

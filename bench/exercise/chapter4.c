@@ -56,38 +56,49 @@ static void grade_polarised(Grading *g)
             right_fresnel(acos(cos_other) * 180.0 / PI, n_t, n_i, &swapped_s, &swapped_p);
             double got_other_s = ASK(g, fresnel_s(cos_other, n_t, n_i));
             if (s == 1.0 && (got_s != 1.0 || got_p != 1.0))
-                grading_fail(g, "R_s = %.4f, R_p = %.4f at %d degrees from index %.2f into %.2f, "
+                grading_fail(g,
+                             "R_s = %.4f, R_p = %.4f at %d degrees from index %.2f into %.2f, "
                              "beyond the critical angle %.1f degrees: with no transmitted ray "
-                             "both must be 1 (total internal reflection)", got_s, got_p, a, n_i,
-                             n_t, critical);
+                             "both must be 1 (total internal reflection)",
+                             got_s, got_p, a, n_i, n_t, critical);
             else if (fabs(got_s - p) <= 1e-9 && fabs(got_p - s) <= 1e-9)
-                grading_fail(g, "R_s and R_p are swapped: at %d degrees from index %.2f into "
-                             "%.2f, R_s = %.4f and R_p = %.4f should be %.4f and %.4f (R_p, not "
-                             "R_s, vanishes at Brewster's angle, %.1f degrees; the report's "
-                             "labels are swapped)", a, n_i, n_t, got_s, got_p, s, p, brewster);
-            else if (sin_t < 1.0 && a > 0 && fabs(got_s - s) > 1e-9 && fabs(got_s - swapped_s) > 1e-9 &&
-                     fabs(got_s - got_other_s) <= 1e-9 && fabs(cos_other - cos_i) > 1e-6)
-                grading_fail(g, "R_s = %.4f at %d degrees from index %.2f into %.2f, where eqs. "
-                             "4-5 give %.4f: are n_i and n_t, or cos_i and cos_t, swapped?", got_s,
-                             a, n_i, n_t, s);
+                grading_fail(
+                    g,
+                    "R_s and R_p are swapped: at %d degrees from index %.2f into "
+                    "%.2f, R_s = %.4f and R_p = %.4f should be %.4f and %.4f (R_p, not "
+                    "R_s, vanishes at Brewster's angle, %.1f degrees; the report's "
+                    "labels are swapped)",
+                    a, n_i, n_t, got_s, got_p, s, p, brewster);
+            else if (sin_t < 1.0 && a > 0 && fabs(got_s - s) > 1e-9 &&
+                     fabs(got_s - swapped_s) > 1e-9 && fabs(got_s - got_other_s) <= 1e-9 &&
+                     fabs(cos_other - cos_i) > 1e-6)
+                grading_fail(g,
+                             "R_s = %.4f at %d degrees from index %.2f into %.2f, where eqs. "
+                             "4-5 give %.4f: are n_i and n_t, or cos_i and cos_t, swapped?",
+                             got_s, a, n_i, n_t, s);
             else {
                 int d = grading_decimals(got_s, s) > grading_decimals(got_p, p)
                             ? grading_decimals(got_s, s)
                             : grading_decimals(got_p, p);
                 char off[120] = "";
                 if (d > 4)
-                    snprintf(off, sizeof off, " (off by %.2g and %.2g, where rounding stays "
-                             "within 1e-9)", got_s - s, got_p - p);
-                grading_fail(g, "at %d degrees from index %.2f into %.2f, R_s = %.*f and R_p = "
-                             "%.*f, where eqs. 4-5 give %.*f and %.*f%s%s", a, n_i, n_t, d,
-                             got_s, d, got_p, d, s, d, p, off,
+                    snprintf(off, sizeof off,
+                             " (off by %.2g and %.2g, where rounding stays "
+                             "within 1e-9)",
+                             got_s - s, got_p - p);
+                grading_fail(g,
+                             "at %d degrees from index %.2f into %.2f, R_s = %.*f and R_p = "
+                             "%.*f, where eqs. 4-5 give %.*f and %.*f%s%s",
+                             a, n_i, n_t, d, got_s, d, got_p, d, s, d, p, off,
                              fabs(got_s - swapped_s) <= 1e-9 && fabs(got_p - swapped_p) <= 1e-9
                                  ? ": those of the same angles with n_i and n_t swapped"
                                  : "");
             }
         }
-    grading_note(g, "%d incidences (every degree from 0 to 89 at n_i / n_t = 1 / 1.5, 1.5 / 1, 1 "
-                 "/ 1.33, 1.6 / 1.2) against the sin and tan forms", checked);
+    grading_note(g,
+                 "%d incidences (every degree from 0 to 89 at n_i / n_t = 1 / 1.5, 1.5 / 1, 1 "
+                 "/ 1.33, 1.6 / 1.2) against the sin and tan forms",
+                 checked);
 }
 
 static void grade_unpolarised(Grading *g)
@@ -105,25 +116,34 @@ static void grade_unpolarised(Grading *g)
             if (fabs(got - want) <= 1e-9)
                 continue;
             if (got > 1.0)
-                grading_fail(g, "R = %.4f > 1 at %d degrees from index %.2f into %.2f: more light "
+                grading_fail(g,
+                             "R = %.4f > 1 at %d degrees from index %.2f into %.2f: more light "
                              "reflected than arrives; unpolarised light is half s, half p: R = "
-                             "(R_s + R_p) / 2 = %.4f (eq. 3)", got, a, n_i, n_t, want);
+                             "(R_s + R_p) / 2 = %.4f (eq. 3)",
+                             got, a, n_i, n_t, want);
             else if (fabs(got - (s + p)) <= 1e-9)
-                grading_fail(g, "R = %.4f at %d degrees from index %.2f into %.2f is R_s + R_p: "
-                             "unpolarised light is half s, half p, R = (R_s + R_p) / 2 = %.4f "
-                             "(eq. 3); the sum reflects twice the light that arrives beyond the "
-                             "critical angle", got, a, n_i, n_t, want);
+                grading_fail(
+                    g,
+                    "R = %.4f at %d degrees from index %.2f into %.2f is R_s + R_p: "
+                    "unpolarised light is half s, half p, R = (R_s + R_p) / 2 = %.4f "
+                    "(eq. 3); the sum reflects twice the light that arrives beyond the "
+                    "critical angle",
+                    got, a, n_i, n_t, want);
             else if (fabs(got - s) <= 1e-9 || fabs(got - p) <= 1e-9)
-                grading_fail(g, "R = %.4f at %d degrees from index %.2f into %.2f is R_%s alone; "
-                             "unpolarised light is half s, half p: (R_s + R_p) / 2 = %.4f (eq. 3)",
-                             got, a, n_i, n_t, fabs(got - s) <= 1e-9 ? "s" : "p", want);
+                grading_fail(
+                    g,
+                    "R = %.4f at %d degrees from index %.2f into %.2f is R_%s alone; "
+                    "unpolarised light is half s, half p: (R_s + R_p) / 2 = %.4f (eq. 3)",
+                    got, a, n_i, n_t, fabs(got - s) <= 1e-9 ? "s" : "p", want);
             else
-                grading_fail(g, "R = %.*f at %d degrees from index %.2f into %.2f, where (R_s + "
-                             "R_p) / 2 = %.*f (eq. 3)", grading_decimals(got, want), got, a, n_i,
-                             n_t, grading_decimals(got, want), want);
+                grading_fail(g,
+                             "R = %.*f at %d degrees from index %.2f into %.2f, where (R_s + "
+                             "R_p) / 2 = %.*f (eq. 3)",
+                             grading_decimals(got, want), got, a, n_i, n_t,
+                             grading_decimals(got, want), want);
         }
-    grading_note(g, "%d incidences against (R_s + R_p) / 2; the largest R returned %.4f", checked,
-                 largest);
+    grading_note(g, "%d incidences against (R_s + R_p) / 2; the largest R returned %.4f",
+                 checked, largest);
 }
 
 const Exercise exercises[] = {

@@ -24,10 +24,7 @@ static double right_a(double sigma)
     return 1.0 - sigma * sigma / (2.0 * (sigma * sigma + 0.33));
 }
 
-static double right_b(double sigma)
-{
-    return 0.45 * sigma * sigma / (sigma * sigma + 0.09);
-}
+static double right_b(double sigma) { return 0.45 * sigma * sigma / (sigma * sigma + 0.09); }
 
 /* One of A and B against its right value at each roughness, naming a known mistake. */
 static void grade_coefficient(Grading *g, const char *name, double (*yours)(double),
@@ -53,13 +50,13 @@ static void grade_coefficient(Grading *g, const char *name, double (*yours)(doub
             grading_fail(g, "%s(%.2f) = %.6f, which is %s of %.2f degrees: sigma is in radians",
                          name, sigma, got, name, sigma);
         else if (misprint && nonzero)
-            grading_fail(g, "%s(%.2f) = %.*f where eq. 14 gives %.*f: %s", name, sigma, decimals,
-                         got, decimals, want, missing);
+            grading_fail(g, "%s(%.2f) = %.*f where eq. 14 gives %.*f: %s", name, sigma,
+                         decimals, got, decimals, want, missing);
         else
-            grading_fail(g, "%s(%.2f) = %.*f where eq. 14 gives %.*f%s", name, sigma, decimals,
-                         got, decimals, want,
-                         sigma == 0.0 ? " (at sigma = 0 the surface is Lambertian: A = 1, B = 0)"
-                                      : "");
+            grading_fail(
+                g, "%s(%.2f) = %.*f where eq. 14 gives %.*f%s", name, sigma, decimals, got,
+                decimals, want,
+                sigma == 0.0 ? " (at sigma = 0 the surface is Lambertian: A = 1, B = 0)" : "");
     }
 }
 
@@ -70,10 +67,7 @@ static void grade_a(Grading *g)
                       "sigma = 0 is Lambert");
 }
 
-static void grade_b(Grading *g)
-{
-    grade_coefficient(g, "B", oren_nayar_b, right_b, NULL);
-}
+static void grade_b(Grading *g) { grade_coefficient(g, "B", oren_nayar_b, right_b, NULL); }
 
 /* A unit direction above the surface, from its polar angle and azimuth. */
 static Vec3 polar(double theta, double phi)
@@ -87,24 +81,30 @@ static void grade_factor_closed_form(Grading *g)
     for (int i = 0; i < 2000 && !g->failed; i++, checked++) {
         Rng rng = rng_for_sample(51, 1, (uint64_t)i);
         double sigma = 0.05 + 0.95 * rng_uniform(&rng);
-        double ti = 0.5 * PI * 0.98 * rng_uniform(&rng), to = 0.5 * PI * 0.98 * rng_uniform(&rng);
+        double ti = 0.5 * PI * 0.98 * rng_uniform(&rng),
+               to = 0.5 * PI * 0.98 * rng_uniform(&rng);
         double pi_ = 2.0 * PI * rng_uniform(&rng), po = 2.0 * PI * rng_uniform(&rng);
         double alpha = fmax(ti, to), beta = fmin(ti, to);
-        double want = right_a(sigma) + right_b(sigma) * fmax(0.0, cos(pi_ - po)) * sin(alpha) * tan(beta);
+        double want =
+            right_a(sigma) + right_b(sigma) * fmax(0.0, cos(pi_ - po)) * sin(alpha) * tan(beta);
         double got = ASK(g, oren_nayar_factor(sigma, polar(ti, pi_), polar(to, po)));
         if (grading_not_finite(g, got, "the factor") || fabs(got - want) <= 1e-9)
             continue;
-        double with_sin = right_a(sigma) +
-                          right_b(sigma) * fmax(0.0, cos(pi_ - po)) * sin(alpha) * sin(beta);
-        grading_fail(g, "the factor is %.*f at sigma = %.2f, theta_i = %.1f, theta_o = %.1f "
+        double with_sin =
+            right_a(sigma) + right_b(sigma) * fmax(0.0, cos(pi_ - po)) * sin(alpha) * sin(beta);
+        grading_fail(g,
+                     "the factor is %.*f at sigma = %.2f, theta_i = %.1f, theta_o = %.1f "
                      "degrees, cos(phi_i - phi_o) = %.2f, where eq. 13 gives %.*f%s",
                      grading_decimals(got, want), got, sigma, ti * 180.0 / PI, to * 180.0 / PI,
                      cos(pi_ - po), grading_decimals(got, want), want,
                      fabs(got - with_sin) <= 1e-9 ? ": sin(beta) where tan(beta) belongs (the "
-                                                    "report's misprint)" : "");
+                                                    "report's misprint)"
+                                                  : "");
     }
-    grading_note(g, "%d random pairs of directions and roughnesses against A + B max(0, "
-                 "cos(phi_i - phi_o)) sin(alpha) tan(beta)", checked);
+    grading_note(g,
+                 "%d random pairs of directions and roughnesses against A + B max(0, "
+                 "cos(phi_i - phi_o)) sin(alpha) tan(beta)",
+                 checked);
 }
 
 /* A rough sphere (sigma = 1) in a dark room, lit from just above the eye. */
@@ -118,16 +118,16 @@ static const char rough_sphere[] =
     "quad lamp 0 -0.6 0.5   0 0.6 0.5   0 0.6 1.0   0 -0.6 1.0\n";
 
 static const PathSettings direct_settings = {.max_depth = 2, .shadow_rays = 1};
-static const RenderCheck rough_check = {rough_sphere, path_direct_radiance, &direct_settings,
-                                        24, 32, 1024};
+static const RenderCheck rough_check = {
+    rough_sphere, path_direct_radiance, &direct_settings, 24, 32, 1024};
 
 static void grade_factor(Grading *g)
 {
     grade_factor_closed_form(g);
     if (!g->failed)
         grading_render(g, &rough_check, LEVEL,
-                   "is the factor A + B max(0, x_i x_o + y_i y_o) / max(z_i, z_o) (docs/"
-                   "chapter5.md, section 2)?");
+                       "is the factor A + B max(0, x_i x_o + y_i y_o) / max(z_i, z_o) (docs/"
+                       "chapter5.md, section 2)?");
 }
 
 const Exercise exercises[] = {

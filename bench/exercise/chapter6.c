@@ -43,16 +43,21 @@ static int roulette_trials(Grading *g, const PathSettings *settings, int segment
     double mean = sum[1] / TRIALS, var = sum2[1] / TRIALS - mean * mean;
     double se = sqrt(fmax(var, 0.0) / TRIALS);
     double mean_z = se > 0.0 ? (mean - before[1]) / se : (mean == before[1] ? 0.0 : INFINITY);
-    grading_note(g, "%s: %.4f of the paths go on (%.4f expected), mean throughput after %.4f "
-                 "+- %.4f where it was %.4f before", setting, share, survival, mean, se,
-                 before[1]);
+    grading_note(g,
+                 "%s: %.4f of the paths go on (%.4f expected), mean throughput after %.4f "
+                 "+- %.4f where it was %.4f before",
+                 setting, share, survival, mean, se, before[1]);
     if (fabs(share - survival) / share_se > Z_LEVEL)
-        return grading_fail(g, "%s: %.1f%% of the paths go on where the survival probability "
-                            "is %.1f%%", setting, 100.0 * share, 100.0 * survival);
+        return grading_fail(g,
+                            "%s: %.1f%% of the paths go on where the survival probability "
+                            "is %.1f%%",
+                            setting, 100.0 * share, 100.0 * survival);
     if (fabs(mean_z) > Z_LEVEL) {
         double ratio = mean / before[1];
-        return grading_fail(g, "%s: the throughput after roulette is on average %.3f times what "
-                            "it was (z = %.1f): %s", setting, ratio, mean_z,
+        return grading_fail(g,
+                            "%s: the throughput after roulette is on average %.3f times what "
+                            "it was (z = %.1f): %s",
+                            setting, ratio, mean_z,
                             fabs(ratio - survival) < 0.02
                                 ? "the survivors are not divided by the survival probability, "
                                   "so energy is lost (the image darkens)"
@@ -61,9 +66,10 @@ static int roulette_trials(Grading *g, const PathSettings *settings, int segment
     }
     for (int c = 0; c < 3; c++)
         if (fabs(sum[c] / TRIALS - before[c]) > 0.05 * before[c] + 6.0 * se)
-            return grading_fail(g, "%s: channel %d's throughput changes on average from %.4f to "
-                                "%.4f: every channel is divided by the same probability", setting,
-                                c, before[c], sum[c] / TRIALS);
+            return grading_fail(g,
+                                "%s: channel %d's throughput changes on average from %.4f to "
+                                "%.4f: every channel is divided by the same probability",
+                                setting, c, before[c], sum[c] / TRIALS);
     return 1;
 }
 
@@ -74,19 +80,22 @@ static void grade_continues(Grading *g)
     PathSettings bounded = {.max_depth = 10, .rr_throughput = 2};
     PathSettings off = {.max_depth = 10};
     if (!roulette_trials(g, &alpha, 3, t, 0.6, "alpha = 0.6") ||
-        !roulette_trials(g, &bounded, 3, t, 0.5, "bounded weights from segment 2, at segment 3 "
+        !roulette_trials(g, &bounded, 3, t, 0.5,
+                         "bounded weights from segment 2, at segment 3 "
                          "with throughput (0.3, 0.5, 0.2)") ||
-        !roulette_trials(g, &bounded, 2, t, 0.5, "bounded weights from segment 2, at segment 2 "
+        !roulette_trials(g, &bounded, 2, t, 0.5,
+                         "bounded weights from segment 2, at segment 2 "
                          "with throughput (0.3, 0.5, 0.2)") ||
-        !roulette_trials(g, &bounded, 1, t, 1.0, "bounded weights from segment 2, at segment 1") ||
+        !roulette_trials(g, &bounded, 1, t, 1.0,
+                         "bounded weights from segment 2, at segment 1") ||
         !roulette_trials(g, &off, 3, t, 1.0, "no roulette (rr_survival 0, rr_throughput 0)"))
         return;
 }
 
 static void grade_survival(Grading *g)
 {
-    const Vec3 throughputs[] = {{0.3, 0.5, 0.2}, {2.0, 0.1, 0.1}, {0.1, 0.05, 0.9},
-                                {0.0, 0.0, 0.0}, {0.7, 0.7, 0.7}};
+    const Vec3 throughputs[] = {
+        {0.3, 0.5, 0.2}, {2.0, 0.1, 0.1}, {0.1, 0.05, 0.9}, {0.0, 0.0, 0.0}, {0.7, 0.7, 0.7}};
     for (int i = 0; i < (int)(sizeof throughputs / sizeof throughputs[0]) && !g->failed; i++) {
         Vec3 t = throughputs[i];
         double got = ASK(g, roulette_survival_from_throughput(t));
@@ -96,14 +105,20 @@ static void grade_survival(Grading *g)
         if (grading_not_finite(g, got, "the survival probability") || fabs(got - want) <= 1e-12)
             continue;
         if (got > 1.0)
-            grading_fail(g, "survival %.3f > 1 for throughput (%.2f, %.2f, %.2f): a probability "
-                         "is at most 1 (min(1, ...))", got, t.x, t.y, t.z);
+            grading_fail(g,
+                         "survival %.3f > 1 for throughput (%.2f, %.2f, %.2f): a probability "
+                         "is at most 1 (min(1, ...))",
+                         got, t.x, t.y, t.z);
         else if (fabs(got - (t.x + t.y + t.z) / 3.0) <= 1e-12)
-            grading_fail(g, "survival %.3f for throughput (%.2f, %.2f, %.2f) is the channels' "
-                         "mean; the largest channel bounds the weight", got, t.x, t.y, t.z);
+            grading_fail(g,
+                         "survival %.3f for throughput (%.2f, %.2f, %.2f) is the channels' "
+                         "mean; the largest channel bounds the weight",
+                         got, t.x, t.y, t.z);
         else
-            grading_fail(g, "survival %.*f for throughput (%.2f, %.2f, %.2f), where min(1, max "
-                         "component) = %.*f", grading_decimals(got, want), got, t.x, t.y, t.z,
+            grading_fail(g,
+                         "survival %.*f for throughput (%.2f, %.2f, %.2f), where min(1, max "
+                         "component) = %.*f",
+                         grading_decimals(got, want), got, t.x, t.y, t.z,
                          grading_decimals(got, want), want);
     }
 }

@@ -38,24 +38,32 @@ static void grade_power(Grading *g)
         double wf = ASK(g, mis_power_heuristic(cf, pf, cg, pg));
         double wg = ASK(g, mis_power_heuristic(cg, pg, cf, pf));
         double want = right_weight(cf, pf, cg, pg);
-        if (grading_not_finite(g, wf, pf == 0.0 && pg == 0.0 ? "the weight when both densities are 0"
-                                                             : "the weight"))
+        if (grading_not_finite(g, wf,
+                               pf == 0.0 && pg == 0.0 ? "the weight when both densities are 0"
+                                                      : "the weight"))
             break;
         if (fabs(wf - want) <= 1e-12)
             continue;
         double f = cf * pf, h = cg * pg;
         if (pf > 0.0 && pg > 0.0 && fabs(wf + wg - 1.0) > 1e-9)
-            grading_fail(g, "the weights of the two strategies for one direction sum to %.4f, not "
-                         "1 (counts %d and %d, pdfs %.3f and %.3f): the estimate would be biased",
-                         wf + wg, cf, cg, pf, pg);
+            grading_fail(
+                g,
+                "the weights of the two strategies for one direction sum to %.4f, not "
+                "1 (counts %d and %d, pdfs %.3f and %.3f): the estimate would be biased",
+                wf + wg, cf, cg, pf, pg);
         else if (fabs(wf - f / (f + h)) <= 1e-12)
-            grading_fail(g, "the weight is %.4f, the balance heuristic's n_f p_f / (n_f p_f + "
-                         "n_g p_g); the power heuristic squares both: %.4f", wf, want);
+            grading_fail(g,
+                         "the weight is %.4f, the balance heuristic's n_f p_f / (n_f p_f + "
+                         "n_g p_g); the power heuristic squares both: %.4f",
+                         wf, want);
         else if (fabs(wf - pf * pf / (pf * pf + pg * pg)) <= 1e-12)
-            grading_fail(g, "the weight is %.4f, without the sample counts (%d and %d): the power "
-                         "heuristic weighs n_f p_f against n_g p_g, giving %.4f", wf, cf, cg, want);
+            grading_fail(g,
+                         "the weight is %.4f, without the sample counts (%d and %d): the power "
+                         "heuristic weighs n_f p_f against n_g p_g, giving %.4f",
+                         wf, cf, cg, want);
         else
-            grading_fail(g, "the weight is %.*f for counts %d, %d and pdfs %.3f, %.3f, where "
+            grading_fail(g,
+                         "the weight is %.*f for counts %d, %d and pdfs %.3f, %.3f, where "
                          "(n_f p_f)^2 / ((n_f p_f)^2 + (n_g p_g)^2) = %.*f",
                          grading_decimals(wf, want), wf, cf, cg, pf, pg,
                          grading_decimals(wf, want), want);
@@ -101,7 +109,8 @@ static void grade_mirror_light(Grading *g)
         grading_fail(g, "the scene's mirror plane is not found");
         goto done;
     }
-    Material floor = {.name = "floor", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
+    Material floor = {
+        .name = "floor", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.5, 0.5, 0.5)};
     Vec3 x = vec3(0, 0, 0), n = vec3(0, 0, 1), wo = vec3(0, 0, 1);
     double sum[2] = {0, 0}, sum2[2] = {0, 0};
     long wrong_pdf = 0;
@@ -120,7 +129,8 @@ static void grade_mirror_light(Grading *g)
         sum[0] += yours.value.y;
         sum2[0] += yours.value.y * yours.value.y;
         if (!grading_probing(g)) { /* the oracle: the solution's shadow ray to the image */
-            ShadowRay image = area_light_shadow_ray(&image_scene, x, n, wo, &floor, &rng2, &counts);
+            ShadowRay image =
+                area_light_shadow_ray(&image_scene, x, n, wo, &floor, &rng2, &counts);
             sum[1] += image.value.y;
             sum2[1] += image.value.y * image.value.y;
         }
@@ -134,27 +144,38 @@ static void grade_mirror_light(Grading *g)
     Mean a = mean_of(sum[0], sum2[0], SHADOW_RAYS), b = mean_of(sum[1], sum2[1], SHADOW_RAYS);
     double want = MIRROR_REFLECTANCE * b.mean, want_se = MIRROR_REFLECTANCE * b.se;
     double z = (a.mean - want) / sqrt(a.se * a.se + want_se * want_se);
-    grading_note(g, "light at the floor point through the mirror: %.5f +- %.2g; 0.9 times the "
-                 "direct light from the lamp's image: %.5f +- %.2g (z = %+.1f)", a.mean, a.se, want,
-                 want_se, z);
+    grading_note(g,
+                 "light at the floor point through the mirror: %.5f +- %.2g; 0.9 times the "
+                 "direct light from the lamp's image: %.5f +- %.2g (z = %+.1f)",
+                 a.mean, a.se, want, want_se, z);
     if (fabs(z) > Z_LEVEL) {
         double ratio = a.mean / want;
         if (a.mean == 0.0)
-            grading_fail(g, "no light reaches the floor through the mirror (0 where %.4f is "
-                         "right): is the lamp point reflected in the plane (y' = y - 2 h n, h its "
-                         "height above the plane), and is the first hit towards the image the "
-                         "mirror?", want);
+            grading_fail(
+                g,
+                "no light reaches the floor through the mirror (0 where %.4f is "
+                "right): is the lamp point reflected in the plane (y' = y - 2 h n, h its "
+                "height above the plane), and is the first hit towards the image the "
+                "mirror?",
+                want);
         else if (fabs(ratio - 1.0 / MIRROR_REFLECTANCE) < 0.03)
-            grading_fail(g, "%.1f%% too much light through the mirror: the mirror's reflectance "
-                         "(0.9) is missing", 100.0 * (ratio - 1.0));
+            grading_fail(g,
+                         "%.1f%% too much light through the mirror: the mirror's reflectance "
+                         "(0.9) is missing",
+                         100.0 * (ratio - 1.0));
         else
-            grading_fail(g, "the light through the mirror is %.3f times the right %.4f (z = %.1f): "
-                         "is the value Le f R cos(alpha) cos(beta) A / d^2, with d the distance "
-                         "to the image and beta at the image's normal (docs/chapter7.md, section "
-                         "3)?", ratio, want, z);
+            grading_fail(
+                g,
+                "the light through the mirror is %.3f times the right %.4f (z = %.1f): "
+                "is the value Le f R cos(alpha) cos(beta) A / d^2, with d the distance "
+                "to the image and beta at the image's normal (docs/chapter7.md, section "
+                "3)?",
+                ratio, want, z);
     } else if (wrong_pdf > 0)
-        grading_fail(g, "%ld shadow rays carry a pdf other than d^2 / (A cos beta) at the image "
-                     "(area_light_pdf): MIS would weigh them wrongly", wrong_pdf);
+        grading_fail(g,
+                     "%ld shadow rays carry a pdf other than d^2 / (A cos beta) at the image "
+                     "(area_light_pdf): MIS would weigh them wrongly",
+                     wrong_pdf);
 done:
     mirror_planes_free(&planes);
     scene_free(&mirror_scene);

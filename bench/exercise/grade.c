@@ -85,9 +85,10 @@ static void quote_output(Grading *g, const ProbeRun *run)
         atomic_close(&log, 0);
     }
     char bytes[32];
-    grading_note(g, "your code printed %s bytes (exercise-%s.log), not read by the grader; "
-                 "they begin:", grading_count((double)run->output_total, bytes, sizeof bytes),
-                 g->id);
+    grading_note(g,
+                 "your code printed %s bytes (exercise-%s.log), not read by the grader; "
+                 "they begin:",
+                 grading_count((double)run->output_total, bytes, sizeof bytes), g->id);
     const char *text = run->output, *end = run->output + run->output_size;
     for (int line = 0; line < QUOTED_LINES && text < end; line++) {
         char quoted[QUOTED_WIDTH + 4];
@@ -121,8 +122,10 @@ static int judge(const Exercise *e, char **argv)
     if (!g.failed && !run.answers.ended)
         grading_fail(&g, "%s", run.ended);
     else if (!g.failed && g.next < run.answers.count)
-        grading_fail(&g, "your program gave %ld answers where the grader asked for %ld: has a "
-                     "function outside the exercises changed?", run.answers.count, g.next);
+        grading_fail(&g,
+                     "your program gave %ld answers where the grader asked for %ld: has a "
+                     "function outside the exercises changed?",
+                     run.answers.count, g.next);
     quote_output(&g, &run);
     probe_run_free(&run);
     if (g.failed)

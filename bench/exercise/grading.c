@@ -49,8 +49,10 @@ static int used_in_order(Grading *g, const Exercise *e, int depth, const Exercis
         at += length;
         const Exercise *used = exercise_find(id);
         if (!used || *count >= MAX_USED || depth >= MAX_USED) {
-            grading_fail(g, "the grader's table says exercise %s uses exercise %s, which it "
-                         "does not grade, or which uses it in turn", e->id, id);
+            grading_fail(g,
+                         "the grader's table says exercise %s uses exercise %s, which it "
+                         "does not grade, or which uses it in turn",
+                         e->id, id);
             return -1;
         }
         if (used_in_order(g, used, depth + 1, order, count) != 0)
@@ -106,16 +108,14 @@ void exercise_grade(const Exercise *e, Grading *g)
     e->grade(g);
 }
 
-int grading_probing(const Grading *g)
-{
-    return g->writer != NULL;
-}
+int grading_probing(const Grading *g) { return g->writer != NULL; }
 
 double grading_ask(Grading *g, double value)
 {
     if (grading_probing(g)) {
         if (answer_put(g->writer, value) != 0) {
-            fprintf(stderr, "grade: cannot send an answer to the grader: %s\n", strerror(errno));
+            fprintf(stderr, "grade: cannot send an answer to the grader: %s\n",
+                    strerror(errno));
             _exit(3);
         }
         return value;
@@ -165,9 +165,10 @@ int grading_not_finite(Grading *g, double value, const char *what)
 {
     if (isfinite(value))
         return 0;
-    grading_fail(g, "%s is %s", what, isnan(value) ? "NaN (a 0 / 0, a sqrt of a negative "
-                                                     "number or an uninitialised variable?)"
-                                                   : "infinite (a division by 0?)");
+    grading_fail(g, "%s is %s", what,
+                 isnan(value) ? "NaN (a 0 / 0, a sqrt of a negative "
+                                "number or an uninitialised variable?)"
+                              : "infinite (a division by 0?)");
     return 1;
 }
 
@@ -211,7 +212,8 @@ char *grading_p(double p, char *text, size_t size)
 int grading_scene(Grading *g, const char *text, Scene *scene)
 {
     char error[512];
-    if (scene_parse(text, strlen(text), "exercise.scene", scene, NULL, error, sizeof error) == 0)
+    if (scene_parse(text, strlen(text), "exercise.scene", scene, NULL, error, sizeof error) ==
+        0)
         return 0;
     grading_fail(g, "the exercise's scene does not load: %s", error);
     return -1;
@@ -246,7 +248,8 @@ void warp_free(Warp *warp)
     memset(warp, 0, sizeof *warp);
 }
 
-void warp_add(Warp *warp, long index, int row, int col, double u1, double u2, double x, double y)
+void warp_add(Warp *warp, long index, int row, int col, double u1, double u2, double x,
+              double y)
 {
     int cell = row < 0 ? warp->rows * warp->cols : row * warp->cols + col;
     warp->observed[cell] += 1.0;
@@ -293,7 +296,8 @@ static void dot(Image *image, double x, double y, Vec3 colour)
     int col = (int)floor(x), row = (int)floor(y);
     for (int dy = 0; dy < 2; dy++)
         for (int dx = 0; dx < 2; dx++)
-            if (col + dx >= 0 && col + dx < image->width && row + dy >= 0 && row + dy < image->height)
+            if (col + dx >= 0 && col + dx < image->width && row + dy >= 0 &&
+                row + dy < image->height)
                 image_set(image, col + dx, row + dy, colour);
 }
 
@@ -317,7 +321,8 @@ static void histogram_panel(Image *image, const Warp *warp, const double *counts
             }
 }
 
-static void write_warp_picture(Grading *g, const Warp *warp, const char *what, const char *verdict)
+static void write_warp_picture(Grading *g, const Warp *warp, const char *what,
+                               const char *verdict)
 {
     Image panels[4];
     for (int i = 0; i < 4; i++)
@@ -331,7 +336,8 @@ static void write_warp_picture(Grading *g, const Warp *warp, const char *what, c
         dot(&panels[0], u1 * (PANEL - 2), (1.0 - u2) * (PANEL - 2), colour);
         double x = warp->mapped[2 * i], y = warp->mapped[2 * i + 1];
         if (isfinite(x) && isfinite(y))
-            dot(&panels[1], (0.5 + 0.5 * x) * (PANEL - 2), (0.5 - 0.5 * y) * (PANEL - 2), colour);
+            dot(&panels[1], (0.5 + 0.5 * x) * (PANEL - 2), (0.5 - 0.5 * y) * (PANEL - 2),
+                colour);
     }
     double top = 0.0;
     for (int i = 0; i < warp->rows * warp->cols; i++)
@@ -340,8 +346,8 @@ static void write_warp_picture(Grading *g, const Warp *warp, const char *what, c
     histogram_panel(&panels[3], warp, warp->expected, top);
     char mapped[400], observed[400], expected[400];
     snprintf(mapped, sizeof mapped, "where they went: %s", what);
-    snprintf(observed, sizeof observed, "observed counts (%d %ss of %d cells)\n%s",
-             warp->rows, warp->labels.row_name, warp->cols, verdict);
+    snprintf(observed, sizeof observed, "observed counts (%d %ss of %d cells)\n%s", warp->rows,
+             warp->labels.row_name, warp->cols, verdict);
     snprintf(expected, sizeof expected, "expected counts\n(%s at the top)",
              warp->labels.first_row);
     const char *captions[4] = {"the samples (u1, u2)\non the unit square", mapped, observed,
@@ -362,7 +368,8 @@ done:
 }
 
 /* Sum of the histogram over one row (by_row) or one column. */
-static void marginal(const Warp *warp, int by_row, int index, double *observed, double *expected)
+static void marginal(const Warp *warp, int by_row, int index, double *observed,
+                     double *expected)
 {
     *observed = *expected = 0.0;
     int count = by_row ? warp->cols : warp->rows;
@@ -413,9 +420,11 @@ int grading_warp(Grading *g, const Warp *warp, const char *what, double level, i
         }
     if (filled == 1 && warp->observed[only] > 1.0) {
         int row = only / warp->cols;
-        const char *at = row == 0 ? warp->labels.first_row
-                                  : row == warp->rows - 1 ? warp->labels.last_row : "";
-        grading_fail(g, "all %s samples fell into one cell, %s %d of %d%s%s%s and %s %d of %d: "
+        const char *at = row == 0                ? warp->labels.first_row
+                         : row == warp->rows - 1 ? warp->labels.last_row
+                                                 : "";
+        grading_fail(g,
+                     "all %s samples fell into one cell, %s %d of %d%s%s%s and %s %d of %d: "
                      "does the result change with the random numbers at all? (%s): %s",
                      grading_count(warp->observed[only], observed_text, sizeof observed_text),
                      warp->labels.row_name, row + 1, warp->rows, *at ? " (" : "", at,
@@ -447,10 +456,10 @@ int grading_warp(Grading *g, const Warp *warp, const char *what, double level, i
         snprintf(where, sizeof where, " (%s)", warp->labels.first_row);
     else if (worst_row && worst_index == count - 1)
         snprintf(where, sizeof where, " (%s)", warp->labels.last_row);
-    grading_fail(g, "too %s samples in %s %d of %d%s: %s observed where %s are expected (%s): %s",
-                 worst_observed < worst_expected ? "few" : "many", name, worst_index + 1, count,
-                 where, grading_count(worst_observed, observed_text, sizeof observed_text),
-                 grading_count(worst_expected, expected_text, sizeof expected_text), verdict,
-                 hint);
+    grading_fail(
+        g, "too %s samples in %s %d of %d%s: %s observed where %s are expected (%s): %s",
+        worst_observed < worst_expected ? "few" : "many", name, worst_index + 1, count, where,
+        grading_count(worst_observed, observed_text, sizeof observed_text),
+        grading_count(worst_expected, expected_text, sizeof expected_text), verdict, hint);
     return 0;
 }

@@ -23,11 +23,11 @@ typedef struct {
     const char *references; /* the folder with the solution's reference renders (the judge's) */
     AnswerWriter *writer;   /* the probe's: where the answers go (NULL in the judge) */
     const AnswerReader *answers; /* the judge's: the answers that came back */
-    const char *ended;      /* the judge's: why no more came, the verdict if it asks for more */
-    long next;              /* the judge's: the next answer to read */
+    const char *ended; /* the judge's: why no more came, the verdict if it asks for more */
+    long next;         /* the judge's: the next answer to read */
     int failed;
-    char message[1024];     /* what is wrong (the first failure found), when failed */
-    char numbers[4096];     /* the numbers behind the verdict, one line each */
+    char message[1024]; /* what is wrong (the first failure found), when failed */
+    char numbers[4096]; /* the numbers behind the verdict, one line each */
 } Grading;
 
 /* A render the grader compares, pixel by pixel, with the solution's (render_check.h). */
@@ -41,8 +41,8 @@ typedef struct {
                              neutral value */
     void (*grade)(Grading *g);
     const RenderCheck *render; /* its reference render, or NULL */
-    const char *uses;     /* the ids of the chapter's other exercises whose functions its
-                             grader's calls reach ("3.1 3.3"), or "" */
+    const char *uses;          /* the ids of the chapter's other exercises whose functions its
+                                  grader's calls reach ("3.1 3.3"), or "" */
 } Exercise;
 
 /* Each chapter's table, bench/exercise/chapterN.c; the grader links one of them. */
@@ -75,15 +75,14 @@ int grading_probing(const Grading *g);
 double grading_ask(Grading *g, double value);
 Vec3 grading_ask_vec3(Grading *g, Vec3 value);
 #define ASK(g, expression) grading_ask((g), grading_probing(g) ? (double)(expression) : 0.0)
-#define ASK_VEC3(g, expression) \
+#define ASK_VEC3(g, expression)                                                                \
     grading_ask_vec3((g), grading_probing(g) ? (expression) : vec3(0.0, 0.0, 0.0))
 
 /* `count` values in place: sent by the probe, overwritten in the judge. */
 void grading_ask_floats(Grading *g, float *values, long count);
 
 /* Append one line to the numbers behind the verdict. */
-void grading_note(Grading *g, const char *format, ...)
-    __attribute__((format(printf, 2, 3)));
+void grading_note(Grading *g, const char *format, ...) __attribute__((format(printf, 2, 3)));
 
 /* The exercise fails with this message, unless it has already failed (the first
  * failure is the one to fix). Returns 0, so that a grader may `return grading_fail(...)`. */
@@ -119,9 +118,9 @@ typedef struct {
     int rows, cols;
     double *observed, *expected; /* rows * cols + 1 */
     WarpLabels labels;
-    int shown;                   /* samples kept for the picture */
-    double *square, *mapped;     /* their (u1, u2) in [0, 1)^2 and where they went, in
-                                    [-1, 1]^2 (x right, y up) */
+    int shown;               /* samples kept for the picture */
+    double *square, *mapped; /* their (u1, u2) in [0, 1)^2 and where they went, in
+                                [-1, 1]^2 (x right, y up) */
 } Warp;
 
 /* A warp test of rows x cols cells keeping `shown` samples for the picture. Returns 0,

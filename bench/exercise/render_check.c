@@ -36,11 +36,13 @@ static int render_at(const RenderCheck *check, const Scene *scene, int spp, uint
                      RenderResult *result)
 {
     int height = (int)lround(check->width / scene_file_aspect(&scene->camera));
-    RenderSettings settings = {{check->width, height, spp, PIXEL_RANDOM, seed}, 0, 0, "exercise"};
+    RenderSettings settings = {
+        {check->width, height, spp, PIXEL_RANDOM, seed}, 0, 0, "exercise"};
     return render(scene, &settings, check->estimate, check->settings, result);
 }
 
-static void reference_paths(const char *folder, const char *id, char *image, char *se, size_t size)
+static void reference_paths(const char *folder, const char *id, char *image, char *se,
+                            size_t size)
 {
     snprintf(image, size, "%s/exercise-%s-reference.pfm", folder, id);
     snprintf(se, size, "%s/exercise-%s-reference-se.pfm", folder, id);
@@ -88,8 +90,10 @@ static void write_zmap_picture(Grading *g, const Image *yours, const Image *refe
     for (long i = 0; panels[2].pixels && i < 3L * panels[2].width * panels[2].height; i++)
         panels[2].pixels[i] = (float)(panels[2].pixels[i] / exposure);
     char error[256], path[1024], zcaption[512];
-    snprintf(zcaption, sizeof zcaption, "z = (yours - reference) / sigma:\nred brighter, blue "
-             "darker, yellow fails\n%s", verdict);
+    snprintf(zcaption, sizeof zcaption,
+             "z = (yours - reference) / sigma:\nred brighter, blue "
+             "darker, yellow fails\n%s",
+             verdict);
     const char *captions[3] = {"yours", "the solution's reference", zcaption};
     snprintf(path, sizeof path, "%s/exercise-%s-zmap.png", g->out, g->id);
     Font font;
@@ -134,7 +138,9 @@ static PixelTest pixel_test(const RenderResult *yours, const Image *reference, c
             double sb = se->pixels[i], sa = fmax(yours->std_error.pixels[i], sb * spp_ratio);
             double difference = (double)yours->image.pixels[i] - reference->pixels[i];
             double spread = sqrt(sa * sa + sb * sb);
-            double z = spread > 0.0 ? difference / spread : (difference == 0.0 ? 0.0 : copysign(INFINITY, difference));
+            double z = spread > 0.0
+                           ? difference / spread
+                           : (difference == 0.0 ? 0.0 : copysign(INFINITY, difference));
             double pvalue = erfc(fabs(z) / sqrt(2.0));
             if (fabs(z) > fabs(largest))
                 largest = z;
@@ -219,7 +225,7 @@ static int ask_render(Grading *g, const RenderCheck *check, RenderResult *yours)
     yours->nonfinite = ask_count(g, yours->nonfinite);
     if (!g->failed && !finite_render(yours))
         grading_fail(g, "the render's pixels are not all finite numbers, nor its standard "
-                     "errors all >= 0");
+                        "errors all >= 0");
     if (!g->failed)
         return 0;
     render_result_free(yours);
@@ -241,8 +247,10 @@ int grading_render(Grading *g, const RenderCheck *check, double level, const cha
     int ok = 0;
     if (image_read_pfm(image_path, &reference, error, sizeof error) != 0 ||
         image_read_pfm(se_path, &se, error, sizeof error) != 0) {
-        grading_fail(g, "no reference to compare with (%s): check through make "
-                     "check-exercise-chapterN, which renders it", error);
+        grading_fail(g,
+                     "no reference to compare with (%s): check through make "
+                     "check-exercise-chapterN, which renders it",
+                     error);
         goto free_reference;
     }
     if (yours.image.width != reference.width || yours.image.height != reference.height) {
@@ -253,7 +261,8 @@ int grading_render(Grading *g, const RenderCheck *check, double level, const cha
                  reference.width, reference.height, check->spp, check->reference_spp);
     if (yours.nonfinite > 0) {
         char count[32];
-        grading_fail(g, "%s of %s samples were NaN or infinite (a 0 / 0, the sqrt of a negative "
+        grading_fail(g,
+                     "%s of %s samples were NaN or infinite (a 0 / 0, the sqrt of a negative "
                      "number, a division by a zero pdf?): %s",
                      grading_count((double)yours.nonfinite, count, sizeof count),
                      grading_count((double)yours.samples, error, sizeof error), hint);
@@ -274,18 +283,21 @@ int grading_render(Grading *g, const RenderCheck *check, double level, const cha
     PixelTest t = pixel_test(&yours, &reference, &se, spp_ratio, level, &zmap);
     double combined = sqrt(mean_se * mean_se + ref_se * ref_se);
     double mean_z = (mean - ref_mean) / combined;
-    double share = t.tests > 0 ? (double)t.failing_pixels / (reference.width * reference.height) : 0.0;
+    double share =
+        t.tests > 0 ? (double)t.failing_pixels / (reference.width * reference.height) : 0.0;
     char ptext[32], verdict[200];
     grading_p(t.smallest_p, ptext, sizeof ptext);
     grading_note(g, "image mean %.5f +- %.5f, the reference's %.5f +- %.5f (z = %+.1f)", mean,
                  mean_se, ref_mean, ref_se, mean_z);
-    grading_note(g, "per-pixel z-test: %d values, smallest %s (z = %+.1f at pixel %d,%d), Sidak "
-                 "level %.2g; %d pixels of %d fail", t.tests, ptext, t.z, t.col, t.row, t.level,
-                 t.failing_pixels, reference.width * reference.height);
+    grading_note(g,
+                 "per-pixel z-test: %d values, smallest %s (z = %+.1f at pixel %d,%d), Sidak "
+                 "level %.2g; %d pixels of %d fail",
+                 t.tests, ptext, t.z, t.col, t.row, t.level, t.failing_pixels,
+                 reference.width * reference.height);
     ok = t.smallest_p >= t.level && fabs(mean_z) <= 4.0;
-    snprintf(verdict, sizeof verdict, "%d of %d pixels fail; mean %+.1f%%: %s", t.failing_pixels,
-             reference.width * reference.height, ref_mean > 0 ? 100.0 * (mean / ref_mean - 1.0) : 0.0,
-             ok ? "agree" : "DISAGREE");
+    snprintf(verdict, sizeof verdict, "%d of %d pixels fail; mean %+.1f%%: %s",
+             t.failing_pixels, reference.width * reference.height,
+             ref_mean > 0 ? 100.0 * (mean / ref_mean - 1.0) : 0.0, ok ? "agree" : "DISAGREE");
     double exposure = ref_mean > 0.0 ? 0.35 / ref_mean : 1.0;
     write_zmap_picture(g, &yours.image, &reference, &zmap, exposure, verdict);
     image_free(&zmap);
@@ -294,16 +306,19 @@ int grading_render(Grading *g, const RenderCheck *check, double level, const cha
         if (mean == 0.0)
             snprintf(brightness, sizeof brightness, "the image is black");
         else if (fabs(mean_z) > 4.0)
-            snprintf(brightness, sizeof brightness,
-                     "the image is %.0f%% too %s (mean %.4f where the reference has %.4f +- %.4f)",
-                     100.0 * fabs(mean / ref_mean - 1.0), mean > ref_mean ? "bright" : "dark",
-                     mean, ref_mean, ref_se);
+            snprintf(
+                brightness, sizeof brightness,
+                "the image is %.0f%% too %s (mean %.4f where the reference has %.4f +- %.4f)",
+                100.0 * fabs(mean / ref_mean - 1.0), mean > ref_mean ? "bright" : "dark", mean,
+                ref_mean, ref_se);
         else
-            snprintf(brightness, sizeof brightness, "the image's mean is right, but not its "
+            snprintf(brightness, sizeof brightness,
+                     "the image's mean is right, but not its "
                      "pixels");
-        grading_fail(g, "%s; the per-pixel z-test fails at %.0f%% of pixels (%s, level %.2g): "
-                     "see exercise-%s-zmap.png: %s", brightness, 100.0 * share, ptext, t.level,
-                     g->id, hint);
+        grading_fail(g,
+                     "%s; the per-pixel z-test fails at %.0f%% of pixels (%s, level %.2g): "
+                     "see exercise-%s-zmap.png: %s",
+                     brightness, 100.0 * share, ptext, t.level, g->id, hint);
     }
 free_reference:
     render_result_free(&yours);

@@ -18,7 +18,7 @@
 #include "grading.h"
 
 struct RenderCheck {
-    const char *scene;    /* the scene file's text */
+    const char *scene; /* the scene file's text */
     Estimator estimate;
     const void *settings; /* the estimator's settings */
     int width;            /* pixels; the height follows the camera */

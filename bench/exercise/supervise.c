@@ -23,16 +23,13 @@
 
 /* The signals the guard ignores, so that the program's kill(getppid(), ...) cannot
  * stop it; SIGKILL still can, and is then reported. */
-static const int guarded[] = {SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2, SIGPIPE,
-                              SIGALRM, SIGTSTP, SIGTTIN, SIGTTOU};
+static const int guarded[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2,
+                              SIGPIPE, SIGALRM, SIGTSTP, SIGTTIN, SIGTTOU};
 #define GUARDED (int)(sizeof guarded / sizeof guarded[0])
 
 static volatile sig_atomic_t stop_signal;
 
-static void on_stop(int signal)
-{
-    stop_signal = signal;
-}
+static void on_stop(int signal) { stop_signal = signal; }
 
 static double now(void)
 {
@@ -181,10 +178,7 @@ static size_t read_status(Watch *w)
     return got;
 }
 
-static int program_ended(const Watch *w)
-{
-    return w->status_bytes == sizeof w->program_status;
-}
+static int program_ended(const Watch *w) { return w->status_bytes == sizeof w->program_status; }
 
 /* Whether the run is over: answered, garbled, the program ended, or its guard gone. */
 static int over(const Watch *w, const ProbeRun *run)
@@ -194,8 +188,8 @@ static int over(const Watch *w, const ProbeRun *run)
 
 static void poll_once(Watch *w, ProbeRun *run, double seconds)
 {
-    struct pollfd fds[3] = {{w->channel, POLLIN, 0}, {w->output, POLLIN, 0},
-                            {w->status, POLLIN, 0}};
+    struct pollfd fds[3] = {
+        {w->channel, POLLIN, 0}, {w->output, POLLIN, 0}, {w->status, POLLIN, 0}};
     if (poll(fds, 3, (int)(seconds * 1000.0) + 1) <= 0)
         return;
     if (fds[0].revents)
@@ -299,10 +293,7 @@ static void drain(Watch *w, ProbeRun *run)
         ;
 }
 
-static const char *plural(long n)
-{
-    return n == 1 ? "" : "s";
-}
+static const char *plural(long n) { return n == 1 ? "" : "s"; }
 
 /* How the program ended, as the verdict for an answer that never came. */
 static void describe_status(int status, long answers, char *text, size_t size)
@@ -314,9 +305,11 @@ static void describe_status(int status, long answers, char *text, size_t size)
         snprintf(after, sizeof after, "after %ld answer%s, before the last", answers,
                  plural(answers));
     if (WIFEXITED(status)) {
-        snprintf(text, size, "your program ended with exit status %d %s: does your code call "
+        snprintf(text, size,
+                 "your program ended with exit status %d %s: does your code call "
                  "exit() (in an exercise, a constructor or an atexit handler), or close or "
-                 "reuse file descriptor 3?", WEXITSTATUS(status), after);
+                 "reuse file descriptor 3?",
+                 WEXITSTATUS(status), after);
         return;
     }
     int signal_number = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
@@ -324,41 +317,52 @@ static void describe_status(int status, long answers, char *text, size_t size)
         signal_number == SIGSEGV ? "a segmentation fault (an index outside an array, a NULL or "
                                    "uninitialised pointer?)"
         : signal_number == SIGABRT ? "aborted (an assertion failed, or memory was freed twice?)"
-        : signal_number == SIGFPE ? "an arithmetic error (an integer division by zero?)"
-        : signal_number == SIGBUS ? "a bus error (memory that is not there any more?)"
-        : signal_number == SIGILL ? "an illegal instruction"
-                                  : NULL;
+        : signal_number == SIGFPE  ? "an arithmetic error (an integer division by zero?)"
+        : signal_number == SIGBUS  ? "a bus error (memory that is not there any more?)"
+        : signal_number == SIGILL  ? "an illegal instruction"
+                                   : NULL;
     if (crash)
         snprintf(text, size, "crashed: %s, %s", crash, after);
     else if (signal_number == SIGKILL)
-        snprintf(text, size, "killed by SIGKILL %s: does your code send it, or use up the "
-                 "memory?", after);
+        snprintf(text, size,
+                 "killed by SIGKILL %s: does your code send it, or use up the "
+                 "memory?",
+                 after);
     else
-        snprintf(text, size, "stopped by signal %d (%s) %s: does your code send signals, to "
-                 "itself or its process group?", signal_number, strsignal(signal_number), after);
+        snprintf(text, size,
+                 "stopped by signal %d (%s) %s: does your code send signals, to "
+                 "itself or its process group?",
+                 signal_number, strsignal(signal_number), after);
 }
 
 static void describe_end(const Watch *w, ProbeRun *run, int seconds)
 {
     long count = run->answers.count;
     if (run->answers.ended)
-        snprintf(run->ended, sizeof run->ended, "your program gave %ld answer%s, where the "
-                 "grader asks for more: has a function outside the exercises changed?", count,
-                 plural(count));
+        snprintf(run->ended, sizeof run->ended,
+                 "your program gave %ld answer%s, where the "
+                 "grader asks for more: has a function outside the exercises changed?",
+                 count, plural(count));
     else if (run->answers.garbled[0])
-        snprintf(run->ended, sizeof run->ended, "your program's answers arrived garbled after %ld "
-                 "(%s): does your code write to file descriptor 3, fork, or write to memory not "
-                 "its own?", count, run->answers.garbled);
+        snprintf(
+            run->ended, sizeof run->ended,
+            "your program's answers arrived garbled after %ld "
+            "(%s): does your code write to file descriptor 3, fork, or write to memory not "
+            "its own?",
+            count, run->answers.garbled);
     else if (w->timed_out)
-        snprintf(run->ended, sizeof run->ended, "no answer within %d second%s: an endless loop (a "
-                 "path that never ends, a loop whose condition never changes)?", seconds,
-                 plural(seconds));
+        snprintf(run->ended, sizeof run->ended,
+                 "no answer within %d second%s: an endless loop (a "
+                 "path that never ends, a loop whose condition never changes)?",
+                 seconds, plural(seconds));
     else if (program_ended(w))
         describe_status(w->program_status, count, run->ended, sizeof run->ended);
     else
-        snprintf(run->ended, sizeof run->ended, "the grader's guard over your program was "
+        snprintf(run->ended, sizeof run->ended,
+                 "the grader's guard over your program was "
                  "killed after %ld answer%s: does your code send signals to its parent or its "
-                 "process group?", count, plural(count));
+                 "process group?",
+                 count, plural(count));
 }
 
 /* Catch SIGINT, SIGTERM and SIGHUP (into stop_signal) while a run is watched. */

@@ -31,15 +31,22 @@ _Noreturn void fuzz_argv_exit(int status)
     longjmp(parse_ended, status + 1); /* never 0: setjmp's own return */
 }
 
-static const unsigned extra_flags[6] = {FLAG_SPP, FLAG_SHADOW_RAYS, FLAG_RR, FLAG_DEPTH,
-                                        FLAG_FRESNEL, FLAG_REFERENCE_SPP};
+static const unsigned extra_flags[6] = {FLAG_SPP,   FLAG_SHADOW_RAYS, FLAG_RR,
+                                        FLAG_DEPTH, FLAG_FRESNEL,     FLAG_REFERENCE_SPP};
 
 static ProgramInfo program_taking(uint8_t choice)
 {
-    ProgramInfo info = {"fuzz", FLAGS_COMMON,
-                        {.scene = "scenes/room.scene", .size = 800, .spp = 64,
-                         .shadow_rays = 4, .rr = 0.75, .depth = 64, .seed = 1,
-                         .out = "build/figures", .reference_spp = 256}};
+    ProgramInfo info = {"fuzz",
+                        FLAGS_COMMON,
+                        {.scene = "scenes/room.scene",
+                         .size = 800,
+                         .spp = 64,
+                         .shadow_rays = 4,
+                         .rr = 0.75,
+                         .depth = 64,
+                         .seed = 1,
+                         .out = "build/figures",
+                         .reference_spp = 256}};
     for (int i = 0; i < 6; i++)
         if (choice & (1u << i))
             info.flags |= extra_flags[i];

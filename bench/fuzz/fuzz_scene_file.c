@@ -61,9 +61,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (scene_parse((const char *)data, size, "fuzz", &scene, &info, error, sizeof error) == 0)
         check_loaded(&scene, &info, data, size);
     else if (strncmp(error, "fuzz:", 5) != 0 || !is_printable(error) || scene.materials ||
-             scene.triangles || scene.spheres || scene.point_lights ||
-             scene.material_count || scene.triangle_count ||
-             vec3_length(scene.camera.right) != 0.0 || vec3_length(scene.camera.up) != 0.0)
+             scene.triangles || scene.spheres || scene.point_lights || scene.material_count ||
+             scene.triangle_count || vec3_length(scene.camera.right) != 0.0 ||
+             vec3_length(scene.camera.up) != 0.0)
         abort();
     scene_free(&scene);
     return 0;

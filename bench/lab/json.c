@@ -5,10 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-void json_init(Json *json)
-{
-    *json = (Json){NULL, 0, 0, 0};
-}
+void json_init(Json *json) { *json = (Json){NULL, 0, 0, 0}; }
 
 void json_free(Json *json)
 {

@@ -13,10 +13,10 @@
 #include "vec.h"
 
 typedef struct {
-    char *text;      /* NUL-terminated; NULL until something is written */
+    char *text; /* NUL-terminated; NULL until something is written */
     size_t length;
     size_t capacity;
-    int failed;      /* memory ran out: the text is incomplete */
+    int failed; /* memory ran out: the text is incomplete */
 } Json;
 
 void json_init(Json *json);

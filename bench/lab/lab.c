@@ -33,9 +33,9 @@
 
 typedef struct {
     int chapter;
-    int size;          /* image width */
-    int spp;           /* samples per pixel (chapter 8: per pass) */
-    int passes;        /* chapter 8 */
+    int size;   /* image width */
+    int spp;    /* samples per pixel (chapter 8: per pass) */
+    int passes; /* chapter 8 */
     PixelSampling sampling;
     uint64_t seed;
     PathSettings path; /* depth (Whitted's too), M, Fresnel, roulette, mis, mirrors, guide */
@@ -52,7 +52,7 @@ struct Lab {
     int has_scene;
     char scene_name[256];
     SceneFileInfo file;
-    double *scene_sigma;  /* the roughness each material had as read */
+    double *scene_sigma; /* the roughness each material had as read */
     MirrorPlanes mirrors;
     LabSettings settings;
     int configured;
@@ -62,7 +62,7 @@ struct Lab {
     WhittedSettings whitted;
     CausticPathSettings caustic; /* chapter 8: the pass's maps and radius */
     PhotonMap caustics, split;
-    int pass;                    /* whose maps are built, or 0 */
+    int pass; /* whose maps are built, or 0 */
     uint64_t pass_image_seed;
     double rays[4];
     Json json;
@@ -120,10 +120,7 @@ void lab_free(Lab *lab)
     free(lab);
 }
 
-const char *lab_error(const Lab *lab)
-{
-    return lab->error;
-}
+const char *lab_error(const Lab *lab) { return lab->error; }
 
 int lab_load_scene(Lab *lab, const char *text, int length, const char *name)
 {
@@ -151,8 +148,14 @@ int lab_load_scene(Lab *lab, const char *text, int length, const char *name)
 /* Chapter `chapter`'s program's defaults (its figure's main panel), 256 pixels wide. */
 static LabSettings chapter_defaults(int chapter)
 {
-    LabSettings s = {.chapter = chapter, .size = 256, .spp = 1, .passes = 1,
-                     .sampling = PIXEL_CENTRE, .seed = 1, .sigma = -1.0, .alpha = PPM_ALPHA,
+    LabSettings s = {.chapter = chapter,
+                     .size = 256,
+                     .spp = 1,
+                     .passes = 1,
+                     .sampling = PIXEL_CENTRE,
+                     .seed = 1,
+                     .sigma = -1.0,
+                     .alpha = PPM_ALPHA,
                      .program = "lab"};
     s.path.max_depth = chapter == 1 ? 10 : chapter >= 6 ? 64 : 8;
     static const int spp[LAB_CHAPTERS + 1] = {0, 1, 64, 4, 4, 16, 4, 64, 8};
@@ -168,7 +171,8 @@ static LabSettings chapter_defaults(int chapter)
         s.path.sphere_guide = SPHERE_GUIDE_STRENGTH;
         s.sampling = PIXEL_STRATIFIED;
     }
-    if (chapter == 8) { /* chapters/ch08_photon_map.c: the mirror's images at the first vertex */
+    if (chapter ==
+        8) { /* chapters/ch08_photon_map.c: the mirror's images at the first vertex */
         s.path.mirror_light = 1;
         s.mirror_given = 1;
         s.sampling = PIXEL_PROGRESSIVE;
@@ -182,7 +186,8 @@ static int whole(Lab *lab, const char *key, const char *value, long min, long ma
     char *end;
     long n = strtol(value, &end, 10);
     if (*value == '\0' || *end != '\0' || n < min || n > max)
-        return fail(lab, "%s: expected a whole number from %ld to %ld, got '%s'", key, min, max, value);
+        return fail(lab, "%s: expected a whole number from %ld to %ld, got '%s'", key, min, max,
+                    value);
     *out = n;
     return 0;
 }
@@ -194,15 +199,21 @@ static int real(Lab *lab, const char *key, const char *value, double min, double
     char *end;
     double x = strtod(value, &end);
     if (*value == '\0' || *end != '\0' || !(x >= min && x <= max) || (open && x == min))
-        return fail(lab, open ? "%s: expected a number above %g, at most %g, got '%s'"
-                              : "%s: expected a number from %g to %g, got '%s'", key, min, max, value);
+        return fail(lab,
+                    open ? "%s: expected a number above %g, at most %g, got '%s'"
+                         : "%s: expected a number from %g to %g, got '%s'",
+                    key, min, max, value);
     *out = x;
     return 0;
 }
 
 /* The settings: each key, the chapter that introduces it, and for a number where it goes
  * in LabSettings (an int or a double) and its range (`open`: the lower end excluded). */
-typedef enum { WHOLE, REAL, WORD } Kind;
+typedef enum {
+    WHOLE,
+    REAL,
+    WORD
+} Kind;
 static const struct {
     const char *key;
     int chapter;
@@ -236,8 +247,10 @@ static int set_sampling(Lab *lab, LabSettings *s, const char *value)
         const char *name;
         PixelSampling sampling;
         int chapter;
-    } modes[] = {{"centre", PIXEL_CENTRE, 1},         {"subpixels", PIXEL_SUBPIXELS, 2},
-                 {"random", PIXEL_RANDOM, 2},         {"stratified", PIXEL_STRATIFIED, 7},
+    } modes[] = {{"centre", PIXEL_CENTRE, 1},
+                 {"subpixels", PIXEL_SUBPIXELS, 2},
+                 {"random", PIXEL_RANDOM, 2},
+                 {"stratified", PIXEL_STRATIFIED, 7},
                  {"progressive", PIXEL_PROGRESSIVE, 8}};
     for (size_t i = 0; i < sizeof modes / sizeof modes[0]; i++)
         if (strcmp(value, modes[i].name) == 0) {
@@ -246,8 +259,10 @@ static int set_sampling(Lab *lab, LabSettings *s, const char *value)
             s->sampling = modes[i].sampling;
             return 0;
         }
-    return fail(lab, "sampling: expected centre, subpixels, random, stratified or progressive, "
-                     "got '%s'", value);
+    return fail(lab,
+                "sampling: expected centre, subpixels, random, stratified or progressive, "
+                "got '%s'",
+                value);
 }
 
 /* A setting whose value is a word (or a number or a word). */
@@ -345,9 +360,10 @@ static int check_scene(Lab *lab, const LabSettings *s)
         return fail(lab, "%s:%d: no point_light: %s needs one", lab->scene_name,
                     lab->file.line_count, s->program);
     if (s->chapter >= 2 && scene->light_count == 0)
-        return fail(lab, "%s:%d: no area light (a 'light' material on a triangle, quad, box or "
-                         "tetrahedron): %s needs one", lab->scene_name, lab->file.line_count,
-                    s->program);
+        return fail(lab,
+                    "%s:%d: no area light (a 'light' material on a triangle, quad, box or "
+                    "tetrahedron): %s needs one",
+                    lab->scene_name, lab->file.line_count, s->program);
     for (int i = 0; s->chapter < 5 && i < scene->material_count; i++)
         if (scene->materials[i].kind == MATERIAL_OREN_NAYAR)
             return fail(lab, "%s: material '%s' is oren_nayar, which chapter 5 introduces",
@@ -355,8 +371,10 @@ static int check_scene(Lab *lab, const LabSettings *s)
     double aspect = scene_file_aspect(&scene->camera), exact_height = s->size / aspect;
     long height = lround(exact_height);
     if (height < 1 || height > LAB_SIZE_MAX || fabs(height - exact_height) > 0.01 * height)
-        return fail(lab, "size: %d gives no image whose aspect ratio matches the image plane's "
-                         "(%.4g)", s->size, aspect);
+        return fail(lab,
+                    "size: %d gives no image whose aspect ratio matches the image plane's "
+                    "(%.4g)",
+                    s->size, aspect);
     return 0;
 }
 
@@ -383,7 +401,9 @@ static void choose_estimator(Lab *lab)
     case 2:
         lab->estimate = path_radiance;
         break;
-    case 3: case 4: case 5:
+    case 3:
+    case 4:
+    case 5:
         lab->estimate = s->path.shadow_rays > 0 ? path_direct_radiance : path_radiance;
         break;
     case 6:
@@ -416,7 +436,8 @@ int lab_configure(Lab *lab, const char *text)
         if (t->photons == 0)
             t->photons = (int)(PHOTONS_PER_PIXEL * lab->width * lab->height + 0.5);
         if (t->radius == 0.0)
-            t->radius = ppm_first_radius(&lab->scene, PPM_FIRST_RADIUS_AT_800) * 800.0 / lab->width;
+            t->radius =
+                ppm_first_radius(&lab->scene, PPM_FIRST_RADIUS_AT_800) * 800.0 / lab->width;
     }
     choose_estimator(lab);
     lab->configured = 1;
@@ -426,11 +447,16 @@ int lab_configure(Lab *lab, const char *text)
 static const char *sampling_name(PixelSampling sampling)
 {
     switch (sampling) {
-    case PIXEL_CENTRE: return "centre";
-    case PIXEL_SUBPIXELS: return "subpixels";
-    case PIXEL_RANDOM: return "random";
-    case PIXEL_STRATIFIED: return "stratified";
-    default: return "progressive";
+    case PIXEL_CENTRE:
+        return "centre";
+    case PIXEL_SUBPIXELS:
+        return "subpixels";
+    case PIXEL_RANDOM:
+        return "random";
+    case PIXEL_STRATIFIED:
+        return "stratified";
+    default:
+        return "progressive";
     }
 }
 
@@ -449,13 +475,15 @@ const char *lab_settings(Lab *lab)
     if (s->chapter >= 3)
         json_text(json, ",\"M\":%d", p->shadow_rays);
     if (s->chapter >= 4)
-        json_text(json, ",\"fresnel\":\"%s\"", p->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
+        json_text(json, ",\"fresnel\":\"%s\"",
+                  p->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
     if (s->chapter >= 5)
         s->sigma >= 0.0 ? json_text(json, ",\"sigma\":%.17g", s->sigma)
                         : json_text(json, ",\"sigma\":\"scene\"");
     if (s->chapter >= 6)
-        p->rr_throughput ? json_text(json, ",\"rr\":\"bounded\"")
-                         : json_text(json, ",\"rr\":%.17g", p->rr_survival > 0.0 ? p->rr_survival : 1.0);
+        p->rr_throughput
+            ? json_text(json, ",\"rr\":\"bounded\"")
+            : json_text(json, ",\"rr\":%.17g", p->rr_survival > 0.0 ? p->rr_survival : 1.0);
     if (s->chapter >= 7)
         json_text(json, ",\"mis\":%d,\"mirror\":%d,\"guide\":%.17g", p->mis, p->mirror_light,
                   p->sphere_guide);
@@ -466,15 +494,9 @@ const char *lab_settings(Lab *lab)
     return json->failed ? (fail(lab, "out of memory"), NULL) : json->text;
 }
 
-int lab_width(const Lab *lab)
-{
-    return lab->width;
-}
+int lab_width(const Lab *lab) { return lab->width; }
 
-int lab_height(const Lab *lab)
-{
-    return lab->height;
-}
+int lab_height(const Lab *lab) { return lab->height; }
 
 int lab_steps(const Lab *lab)
 {
@@ -561,10 +583,11 @@ int lab_render_band(Lab *lab, int step, int row0, int rows, double *out)
     for (int r = 0; r < rows; r++)
         for (int col = 0; col < lab->width; col++) {
             uint64_t at = (uint64_t)(row0 + r) * (uint64_t)lab->width + (uint64_t)col;
-            Vec3 radiance = chapter8 ? pass_pixel(lab, &order, step, col, row0 + r, &counts)
-                                     : render_sample(&lab->scene, &image, col, row0 + r,
-                                                     sample_order_sample(&order, at, pass),
-                                                     lab->estimate, lab->estimator_settings, &counts);
+            Vec3 radiance =
+                chapter8 ? pass_pixel(lab, &order, step, col, row0 + r, &counts)
+                         : render_sample(&lab->scene, &image, col, row0 + r,
+                                         sample_order_sample(&order, at, pass), lab->estimate,
+                                         lab->estimator_settings, &counts);
             double *pixel = out + 3 * ((long)r * lab->width + col);
             pixel[0] = radiance.x;
             pixel[1] = radiance.y;
@@ -587,9 +610,10 @@ const char *lab_record(Lab *lab, int col, int row, int first, int count)
 {
     if (!lab->configured)
         return fail(lab, "not configured"), NULL;
-    if (col < 0 || col >= lab->width || row < 0 || row >= lab->height || first < 0 || count < 1 ||
-        count > 1024)
-        return fail(lab, "no pixel (%d, %d) or samples %d to %d", col, row, first, first + count - 1),
+    if (col < 0 || col >= lab->width || row < 0 || row >= lab->height || first < 0 ||
+        count < 1 || count > 1024)
+        return fail(lab, "no pixel (%d, %d) or samples %d to %d", col, row, first,
+                    first + count - 1),
                NULL;
     const LabSettings *s = &lab->settings;
     Json *json = &lab->json;
@@ -620,11 +644,16 @@ const char *lab_record(Lab *lab, int col, int row, int first, int count)
 static const char *kind_name(MaterialKind kind)
 {
     switch (kind) {
-    case MATERIAL_LAMBERT: return "lambert";
-    case MATERIAL_MIRROR: return "mirror";
-    case MATERIAL_GLASS: return "glass";
-    case MATERIAL_LIGHT: return "light";
-    default: return "oren_nayar";
+    case MATERIAL_LAMBERT:
+        return "lambert";
+    case MATERIAL_MIRROR:
+        return "mirror";
+    case MATERIAL_GLASS:
+        return "glass";
+    case MATERIAL_LIGHT:
+        return "light";
+    default:
+        return "oren_nayar";
     }
 }
 
@@ -691,7 +720,4 @@ const char *lab_scene(Lab *lab)
     return json->text;
 }
 
-const char *lab_scene_hash(Lab *lab)
-{
-    return lab->has_scene ? lab->hash : "";
-}
+const char *lab_scene_hash(Lab *lab) { return lab->has_scene ? lab->hash : ""; }

@@ -20,7 +20,9 @@
 #include "scene_file.h"
 #include "stats.h"
 
-enum { BAND = 16 };
+enum {
+    BAND = 16
+};
 
 static void fail(int status, const char *message)
 {
@@ -56,7 +58,8 @@ static long whole(const char *text)
 /* Every step of the band starting at row0 (BAND rows at most), into the pixels' sums. */
 static double render_band(Lab *lab, int row0, int step, double *out, PixelSum *pixels)
 {
-    int width = lab_width(lab), rows = lab_height(lab) - row0 < BAND ? lab_height(lab) - row0 : BAND;
+    int width = lab_width(lab),
+        rows = lab_height(lab) - row0 < BAND ? lab_height(lab) - row0 : BAND;
     if (lab_render_band(lab, step, row0, rows, out) != 0)
         fail(1, lab_error(lab));
     for (long i = 0; i < (long)rows * width; i++) {
@@ -119,7 +122,8 @@ static void speed_command(Lab *lab, double seconds)
     } while (elapsed < seconds);
     double cpu = stats_cpu_now() - cpu_start;
     printf("rays %.0f seconds %.3f cpu_seconds %.3f renders %d rays_per_second %.0f "
-           "rays_per_cpu_second %.0f\n", rays, elapsed, cpu, renders, rays / elapsed, rays / cpu);
+           "rays_per_cpu_second %.0f\n",
+           rays, elapsed, cpu, renders, rays / elapsed, rays / cpu);
     free(pixels);
     free(out);
 }
@@ -127,8 +131,9 @@ static void speed_command(Lab *lab, double seconds)
 int main(int argc, char **argv)
 {
     if (argc < 4)
-        fail(2, "usage: lab-native SCENE SETTINGS record COL ROW FIRST COUNT | render OUT.pfm | "
-                "speed SECONDS");
+        fail(2,
+             "usage: lab-native SCENE SETTINGS record COL ROW FIRST COUNT | render OUT.pfm | "
+             "speed SECONDS");
     Lab *lab = open_lab(argv[1], argv[2]);
     const char *command = argv[3];
     if (strcmp(command, "record") == 0 && argc == 8) {

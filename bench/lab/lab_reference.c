@@ -23,11 +23,14 @@
 
 static void write_base64(FILE *out, const unsigned char *bytes, size_t length)
 {
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    static const char digits[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     for (size_t i = 0; i < length; i += 3) {
         unsigned long group = (unsigned long)bytes[i] << 16;
-        if (i + 1 < length) group |= (unsigned long)bytes[i + 1] << 8;
-        if (i + 2 < length) group |= bytes[i + 2];
+        if (i + 1 < length)
+            group |= (unsigned long)bytes[i + 1] << 8;
+        if (i + 2 < length)
+            group |= bytes[i + 2];
         fputc(digits[group >> 18 & 63], out);
         fputc(digits[group >> 12 & 63], out);
         fputc(i + 1 < length ? digits[group >> 6 & 63] : '=', out);
@@ -53,8 +56,9 @@ static void write_reference(const Options *options, const PathSettings *path,
     ErrorEstimate noise;
     measure_error_estimate(&reference->image, &reference->image, &reference->std_error, &noise);
     char name[128], file[4400];
-    snprintf(name, sizeof name, "%016llx-%dx%d-d%d-%s.js", (unsigned long long)options->scene_hash,
-             reference->image.width, reference->image.height, path->max_depth,
+    snprintf(name, sizeof name, "%016llx-%dx%d-d%d-%s.js",
+             (unsigned long long)options->scene_hash, reference->image.width,
+             reference->image.height, path->max_depth,
              path->fresnel == FRESNEL_EXACT ? "exact" : "schlick");
     experiment_path(options, name, file, sizeof file);
     size_t length = 12 * (size_t)reference->image.width * reference->image.height;
@@ -63,9 +67,10 @@ static void write_reference(const Options *options, const PathSettings *path,
     if (!bytes || atomic_open(&out, file) != 0)
         cli_fail(1, "cannot write %s", file);
     little_endian(&reference->image, bytes);
-    fprintf(out.file, "labReference({\"file\": \"%s\", \"spp\": %.17g, \"mse\": %.17g, "
-                      "\"rel_mse\": %.17g}, \"", name, reference->spp, noise.reference_mse,
-            noise.reference_rel_mse);
+    fprintf(out.file,
+            "labReference({\"file\": \"%s\", \"spp\": %.17g, \"mse\": %.17g, "
+            "\"rel_mse\": %.17g}, \"",
+            name, reference->spp, noise.reference_mse, noise.reference_rel_mse);
     write_base64(out.file, bytes, length);
     fputs("\");\n", out.file);
     free(bytes);
@@ -89,8 +94,12 @@ int main(int argc, char **argv)
         "The lab's references: a chapter program's reference, written for the page (or, with\n"
         "--error IMAGE.pfm, the error of that image against it).",
         FLAGS_COMMON | FLAG_DEPTH | FLAG_FRESNEL | FLAG_REFERENCE_SPP,
-        {.scene = "scenes/room.scene", .size = 256, .depth = 8, .seed = 1,
-         .out = "build/lab/references", .reference_spp = REFERENCE_SPP},
+        {.scene = "scenes/room.scene",
+         .size = 256,
+         .depth = 8,
+         .seed = 1,
+         .out = "build/lab/references",
+         .reference_spp = REFERENCE_SPP},
     };
     Options options;
     Scene scene;
@@ -104,7 +113,8 @@ int main(int argc, char **argv)
         ErrorEstimate estimate;
         if (image_read_pfm(measured, &image, error, sizeof error) != 0)
             cli_fail(2, "%s", error);
-        if (measure_error_estimate(&image, &reference.image, &reference.std_error, &estimate) != 0)
+        if (measure_error_estimate(&image, &reference.image, &reference.std_error, &estimate) !=
+            0)
             cli_fail(2, "%s: not the reference's size", measured);
         printf("rmse %.17g rel_mse %.17g\n", estimate.rmse, estimate.rel_mse);
         image_free(&image);

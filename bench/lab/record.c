@@ -22,7 +22,13 @@
 /* The outermost wrapped function running: the estimator itself (OUTSIDE), the direct
  * light of eq. 21 (chapters 3-6) or of direct_light.h (7-8), a photon estimate, or any
  * other. */
-typedef enum { OUTSIDE, IN_AREA_DIRECT, IN_DIRECT, IN_PHOTONS, IN_OTHER } Context;
+typedef enum {
+    OUTSIDE,
+    IN_AREA_DIRECT,
+    IN_DIRECT,
+    IN_PHOTONS,
+    IN_OTHER
+} Context;
 
 typedef struct {
     Json *json;
@@ -30,13 +36,13 @@ typedef struct {
     const PathSettings *path;
     int on, tree;
     Context context;
-    int events;          /* written so far */
-    Vec3 throughput;     /* the estimator's: the bounces' weights and roulette's division */
-    Vec3 accounted;      /* the radiance the notes added, in the estimator's order */
-    int material;        /* the last vertex's material, or -1 (none, or a miss) */
-    int front;           /* the last vertex was hit on its front side */
-    int bounced;         /* a bounce was noted since the last vertex */
-    double mis_weight;   /* noted since the last vertex, or NAN */
+    int events;        /* written so far */
+    Vec3 throughput;   /* the estimator's: the bounces' weights and roulette's division */
+    Vec3 accounted;    /* the radiance the notes added, in the estimator's order */
+    int material;      /* the last vertex's material, or -1 (none, or a miss) */
+    int front;         /* the last vertex was hit on its front side */
+    int bounced;       /* a bounce was noted since the last vertex */
+    double mis_weight; /* noted since the last vertex, or NAN */
 } Recorder;
 
 /* The one recording: the wrappers have no other way to find it. */
@@ -50,10 +56,7 @@ static Context enter(Context inside)
     return outer;
 }
 
-static void leave(Context outer)
-{
-    recorder.context = outer;
-}
+static void leave(Context outer) { recorder.context = outer; }
 
 static void event(const char *name)
 {
@@ -72,10 +75,7 @@ static void number_field(const char *name, double value)
     json_number(recorder.json, value);
 }
 
-static void end_event(void)
-{
-    json_text(recorder.json, "}");
-}
+static void end_event(void) { json_text(recorder.json, "}"); }
 
 /* A bounce: its direction, density (NAN: a choice of none or of a discrete branch),
  * weight, and the throughput after it. */
@@ -106,7 +106,8 @@ static void note_ray(Ray ray, const Hit *hit)
     if (hit) {
         recorder.material = hit->material;
         recorder.front = vec3_dot(ray.dir, hit->normal) < 0.0;
-        json_text(recorder.json, ",\"hit\":{\"m\":%d,\"front\":%d", hit->material, recorder.front);
+        json_text(recorder.json, ",\"hit\":{\"m\":%d,\"front\":%d", hit->material,
+                  recorder.front);
         number_field("t", hit->t);
         vec3_field("p", hit->point);
         vec3_field("n", hit->normal);
@@ -151,8 +152,10 @@ int __wrap_scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit)
     return found;
 }
 
-int __real_scene_occluded(const Scene *scene, Vec3 from, Vec3 from_normal, Vec3 to, Vec3 to_normal);
-int __wrap_scene_occluded(const Scene *scene, Vec3 from, Vec3 from_normal, Vec3 to, Vec3 to_normal)
+int __real_scene_occluded(const Scene *scene, Vec3 from, Vec3 from_normal, Vec3 to,
+                          Vec3 to_normal);
+int __wrap_scene_occluded(const Scene *scene, Vec3 from, Vec3 from_normal, Vec3 to,
+                          Vec3 to_normal)
 {
     if (!recorder.on)
         return __real_scene_occluded(scene, from, from_normal, to, to_normal);
@@ -250,7 +253,8 @@ double __wrap_direct_light_hit_weight(const Scene *scene, const PathSettings *se
     if (!recorder.on)
         return __real_direct_light_hit_weight(scene, settings, bsdf_pdf, distance, cos_beta);
     Context outer = enter(IN_OTHER);
-    double weight = __real_direct_light_hit_weight(scene, settings, bsdf_pdf, distance, cos_beta);
+    double weight =
+        __real_direct_light_hit_weight(scene, settings, bsdf_pdf, distance, cos_beta);
     leave(outer);
     if (outer == OUTSIDE) {
         recorder.mis_weight = weight;
@@ -290,10 +294,10 @@ Vec3 __wrap_sphere_guide_bounce(const Scene *scene, const Vertex *x, double stre
     return weight;
 }
 
-Vec3 __real_glass_scatter(Vec3 d, Vec3 n, int entering, double ior, const PathSettings *settings,
-                          Rng *rng);
-Vec3 __wrap_glass_scatter(Vec3 d, Vec3 n, int entering, double ior, const PathSettings *settings,
-                          Rng *rng)
+Vec3 __real_glass_scatter(Vec3 d, Vec3 n, int entering, double ior,
+                          const PathSettings *settings, Rng *rng);
+Vec3 __wrap_glass_scatter(Vec3 d, Vec3 n, int entering, double ior,
+                          const PathSettings *settings, Rng *rng)
 {
     if (!recorder.on)
         return __real_glass_scatter(d, n, entering, ior, settings, rng);
@@ -312,8 +316,10 @@ Vec3 __wrap_glass_scatter(Vec3 d, Vec3 n, int entering, double ior, const PathSe
     return direction;
 }
 
-int __real_roulette_continues(const PathSettings *settings, int segment, Vec3 *throughput, Rng *rng);
-int __wrap_roulette_continues(const PathSettings *settings, int segment, Vec3 *throughput, Rng *rng)
+int __real_roulette_continues(const PathSettings *settings, int segment, Vec3 *throughput,
+                              Rng *rng);
+int __wrap_roulette_continues(const PathSettings *settings, int segment, Vec3 *throughput,
+                              Rng *rng)
 {
     if (!recorder.on)
         return __real_roulette_continues(settings, segment, throughput, rng);
@@ -324,7 +330,9 @@ int __wrap_roulette_continues(const PathSettings *settings, int segment, Vec3 *t
     if (outer == OUTSIDE) {
         /* The survival probability roulette.h defines for these settings. */
         double q = settings->rr_throughput > 0
-                       ? (segment >= settings->rr_throughput ? roulette_survival_from_throughput(before) : 1.0)
+                       ? (segment >= settings->rr_throughput
+                              ? roulette_survival_from_throughput(before)
+                              : 1.0)
                        : settings->rr_survival;
         recorder.throughput = *throughput;
         event("roulette");
@@ -336,10 +344,10 @@ int __wrap_roulette_continues(const PathSettings *settings, int segment, Vec3 *t
     return survives;
 }
 
-Vec3 __real_photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 n, Vec3 wo,
-                                     const Material *m);
-Vec3 __wrap_photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 n, Vec3 wo,
-                                     const Material *m)
+Vec3 __real_photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 n,
+                                     Vec3 wo, const Material *m);
+Vec3 __wrap_photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 n,
+                                     Vec3 wo, const Material *m)
 {
     if (!recorder.on)
         return __real_photon_estimate_radiance(map, radius, x, n, wo, m);
@@ -368,8 +376,8 @@ Vec3 __wrap_photon_estimate_reachable(const Scene *scene, const PhotonMap *map, 
 
 void record_start(Json *json, const Scene *scene, const PathSettings *path, int tree)
 {
-    recorder = (Recorder){json, scene, path, 1, tree, OUTSIDE, 0, vec3(1, 1, 1), vec3(0, 0, 0),
-                          -1, 0, 0, NAN};
+    recorder = (Recorder){json,          scene,         path, 1, tree, OUTSIDE, 0,
+                          vec3(1, 1, 1), vec3(0, 0, 0), -1,   0, 0,    NAN};
     json_text(json, "{\"events\":[");
 }
 
@@ -393,7 +401,8 @@ void record_finish(Vec3 radiance)
         json_text(json, ",\"emission\":null,\"accounted\":null}");
         return;
     }
-    const Material *m = recorder.material >= 0 ? &recorder.scene->materials[recorder.material] : NULL;
+    const Material *m =
+        recorder.material >= 0 ? &recorder.scene->materials[recorder.material] : NULL;
     int emitter = m && recorder.front && material_emits(m);
     /* The weights the estimators give emission hit: all, MIS's share, or none. */
     double weights[3] = {1.0, recorder.mis_weight, 0.0};

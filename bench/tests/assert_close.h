@@ -10,11 +10,11 @@
 
 #include <math.h>
 
-#define assert_close(a, b, tol) \
-    do { \
-        double a_ = (a), b_ = (b); \
-        if (!(fabs(a_ - b_) <= (tol))) \
-            fail_msg("%s = %.17g, expected %.17g within %.3g", #a, a_, b_, (double)(tol)); \
+#define assert_close(a, b, tol)                                                                \
+    do {                                                                                       \
+        double a_ = (a), b_ = (b);                                                             \
+        if (!(fabs(a_ - b_) <= (tol)))                                                         \
+            fail_msg("%s = %.17g, expected %.17g within %.3g", #a, a_, b_, (double)(tol));     \
     } while (0)
 
 #endif

@@ -1,5 +1,5 @@
-/* font_fixture.h (bench, chapter 1): the figures' font, loaded once per test program (include after
- * cmocka.h), for the tests of the text, figure and plot files (chapter 1).
+/* font_fixture.h (bench, chapter 1): the figures' font, loaded once per test program (include
+ * after cmocka.h), for the tests of the text, figure and plot files (chapter 1).
  *
  * load_font and free_font are a cmocka group's setup and teardown; a missing font
  * fails the whole group with font_load's message, which names the Debian package.

@@ -88,8 +88,8 @@ static inline int read_by(int fd, void *data, size_t size, double deadline)
  * image back through a pipe; the child is killed if it has not finished within
  * RENDER_SECONDS. Returns 0; -1 with `why` (the scene refused, the render failed or
  * crashed) or -2 (no answer in time). */
-static inline int render_text(const char *text, RenderScene render, uint64_t seed, Rendering *out,
-                              char *why, size_t why_size)
+static inline int render_text(const char *text, RenderScene render, uint64_t seed,
+                              Rendering *out, char *why, size_t why_size)
 {
     memset(out, 0, sizeof *out);
     int ends[2];
@@ -105,7 +105,8 @@ static inline int render_text(const char *text, RenderScene render, uint64_t see
         Scene scene;
         char error[512];
         Rendering r;
-        int status = scene_parse(text, strlen(text), "scene", &scene, NULL, error, sizeof error);
+        int status =
+            scene_parse(text, strlen(text), "scene", &scene, NULL, error, sizeof error);
         if (status != 0) {
             fprintf(stderr, "%s\n", error);
             _exit(3);
@@ -113,7 +114,8 @@ static inline int render_text(const char *text, RenderScene render, uint64_t see
         if (render(text, &scene, seed, &r) != 0)
             _exit(4);
         long n = 3L * r.width * r.height;
-        int header[4] = {r.width, r.height, r.samples, (r.error != NULL) | (r.independent << 1)};
+        int header[4] = {r.width, r.height, r.samples,
+                         (r.error != NULL) | (r.independent << 1)};
         if (write_all(ends[1], header, sizeof header) != 0 ||
             write_all(ends[1], r.value, (size_t)n * sizeof *r.value) != 0 ||
             (r.error && write_all(ends[1], r.error, (size_t)n * sizeof *r.error) != 0))
@@ -125,11 +127,16 @@ static inline int render_text(const char *text, RenderScene render, uint64_t see
     int header[4], result = -1;
     if (read_by(ends[0], header, sizeof header, deadline) == 0) {
         long n = 3L * header[0] * header[1];
-        *out = (Rendering){header[0], header[1], header[2], header[3] >> 1, malloc((size_t)n * sizeof(double)),
+        *out = (Rendering){header[0],
+                           header[1],
+                           header[2],
+                           header[3] >> 1,
+                           malloc((size_t)n * sizeof(double)),
                            header[3] & 1 ? malloc((size_t)n * sizeof(double)) : NULL};
         assert_non_null(out->value);
         if (read_by(ends[0], out->value, (size_t)n * sizeof(double), deadline) == 0 &&
-            (!out->error || read_by(ends[0], out->error, (size_t)n * sizeof(double), deadline) == 0))
+            (!out->error ||
+             read_by(ends[0], out->error, (size_t)n * sizeof(double), deadline) == 0))
             result = 0;
     }
     int timed_out = result != 0 && now_seconds() >= deadline;
@@ -149,8 +156,8 @@ static inline int render_text(const char *text, RenderScene render, uint64_t see
     if (WIFSIGNALED(status))
         snprintf(why, why_size, "the render crashed (signal %d)", WTERMSIG(status));
     else
-        snprintf(why, why_size, "%s", WEXITSTATUS(status) == 3 ? "the scene was refused"
-                                                              : "the render failed");
+        snprintf(why, why_size, "%s",
+                 WEXITSTATUS(status) == 3 ? "the scene was refused" : "the render failed");
     return -1;
 }
 
@@ -197,8 +204,10 @@ static inline Verdict judge_deterministic(const Rendering *a, const Rendering *b
         worst = fmax(worst, relative);
     }
     Verdict v = {differ <= n / 100, ""};
-    snprintf(v.detail, sizeof v.detail, "%ld of %ld values off by more than 1e-2 (at most %ld "
-             "may be), the largest by %.2g", differ, n, n / 100, worst);
+    snprintf(v.detail, sizeof v.detail,
+             "%ld of %ld values off by more than 1e-2 (at most %ld "
+             "may be), the largest by %.2g",
+             differ, n, n / 100, worst);
     return v;
 }
 
@@ -206,7 +215,9 @@ static inline Verdict judge_deterministic(const Rendering *a, const Rendering *b
  * block means (their standard errors from the pixels', which are independent); the sum
  * of z^2 over the blocks is chi-square with as many degrees of freedom. It sees a
  * change spread thinly over many pixels, which no single pixel shows. */
-enum { BLOCK = 4 };
+enum {
+    BLOCK = 4
+};
 
 static inline double block_chi_square_p(const Rendering *a, const Rendering *b, double factor)
 {
@@ -266,21 +277,26 @@ static inline Verdict judge_statistical(const Rendering *a, const Rendering *b, 
                                         : (sum_a == sum_b ? 0.0 : INFINITY);
     double blocks_p = independent ? block_chi_square_p(a, b, factor) : 1.0;
     Verdict v = {smallest_p >= level && (!independent || fabs(mean_z) <= MEAN_SIGMAS) &&
-                 blocks_p >= METAMORPHIC_LEVEL, ""};
+                     blocks_p >= METAMORPHIC_LEVEL,
+                 ""};
     if (independent)
-        snprintf(v.detail, sizeof v.detail, "means %.5f and %.5f (z %+.2f); blocks p %.2g; "
+        snprintf(v.detail, sizeof v.detail,
+                 "means %.5f and %.5f (z %+.2f); blocks p %.2g; "
                  "smallest p %.2g (z %+.2f at pixel %ld,%ld), Sidak level %.2g over %ld values",
                  sum_a / n, sum_b / n, mean_z, blocks_p, smallest_p, worst_z, at / 3 % a->width,
                  at / 3 / a->width, level, tests);
     else
-        snprintf(v.detail, sizeof v.detail, "smallest p %.2g (z %+.2f at pixel %ld,%ld), Sidak level "
-                 "%.2g over %ld values (means %.5f and %.5f, not judged: the pixels share photons)",
-                 smallest_p, worst_z, at / 3 % a->width, at / 3 / a->width, level, tests,
-                 sum_a / n, sum_b / n);
+        snprintf(
+            v.detail, sizeof v.detail,
+            "smallest p %.2g (z %+.2f at pixel %ld,%ld), Sidak level "
+            "%.2g over %ld values (means %.5f and %.5f, not judged: the pixels share photons)",
+            smallest_p, worst_z, at / 3 % a->width, at / 3 / a->width, level, tests, sum_a / n,
+            sum_b / n);
     return v;
 }
 
-static inline Verdict judge(const Rendering *a, const Rendering *b, Judged judged, double factor)
+static inline Verdict judge(const Rendering *a, const Rendering *b, Judged judged,
+                            double factor)
 {
     if (a->width != b->width || a->height != b->height) {
         Verdict v = {0, "the images differ in size"};
@@ -288,17 +304,18 @@ static inline Verdict judge(const Rendering *a, const Rendering *b, Judged judge
     }
     if (judged == JUDGED_BIT)
         return judge_bit(a, b, factor);
-    return a->error && b->error ? judge_statistical(a, b, factor) : judge_deterministic(a, b, factor);
+    return a->error && b->error ? judge_statistical(a, b, factor)
+                                : judge_deterministic(a, b, factor);
 }
 
 /* ---- the cases, run ---------------------------------------------------------------- */
 
 typedef struct {
-    const char *chapter;   /* what renders, for the table */
+    const char *chapter; /* what renders, for the table */
     RenderScene render;
-    int point_lights;      /* the scenes lit by point lights (chapter 1) */
-    int hashes_points;     /* hashes the bits of points, so a power of two scaling is not
-                              exact: judged by agreement */
+    int point_lights;  /* the scenes lit by point lights (chapter 1) */
+    int hashes_points; /* hashes the bits of points, so a power of two scaling is not
+                          exact: judged by agreement */
 } Renderer;
 
 /* The text of `c`'s scene, its base change applied, then (`changed`) its changes. */
@@ -373,7 +390,8 @@ static inline void run_cases(const Renderer *r)
                  judged == JUDGED_BIT ? "bit" : "agree", verdict, seconds);
         print_message("    %s\n        %s\n", rows[k], v.detail);
     }
-    print_message("\n    %-28s %-10s %-6s %-10s %7s\n", "case", "chapter", "judged", "verdict", "seconds");
+    print_message("\n    %-28s %-10s %-6s %-10s %7s\n", "case", "chapter", "judged", "verdict",
+                  "seconds");
     for (int k = 0; k < CASE_COUNT; k++)
         print_message("    %s\n", rows[k]);
     for (int i = 0; i < cached; i++)

@@ -8,15 +8,21 @@
 #include "metamorphic.h"
 #include "renderer.h"
 
-enum { MONTE_CARLO_SIDE = 24 };
+enum {
+    MONTE_CARLO_SIDE = 24
+};
 
 /* The render's image and standard errors as a Rendering. */
 static inline int rendering_of(const RenderResult *result, int samples, int independent,
                                Rendering *out)
 {
     long n = 3L * result->image.width * result->image.height;
-    *out = (Rendering){result->image.width, result->image.height, samples, independent,
-                       malloc((size_t)n * sizeof(double)), malloc((size_t)n * sizeof(double))};
+    *out = (Rendering){result->image.width,
+                       result->image.height,
+                       samples,
+                       independent,
+                       malloc((size_t)n * sizeof(double)),
+                       malloc((size_t)n * sizeof(double))};
     if (!out->value || !out->error)
         return -1;
     for (long i = 0; i < n; i++) {
@@ -31,7 +37,8 @@ static inline int render_path(const Scene *scene, uint64_t seed, Estimator estim
                               const void *settings, int spp, Rendering *out)
 {
     int height = (int)lround(MONTE_CARLO_SIDE / scene_file_aspect(&scene->camera));
-    RenderSettings render_settings = {{MONTE_CARLO_SIDE, height, spp, PIXEL_RANDOM, seed}, 0, 0, "test"};
+    RenderSettings render_settings = {
+        {MONTE_CARLO_SIDE, height, spp, PIXEL_RANDOM, seed}, 0, 0, "test"};
     RenderResult result;
     if (render(scene, &render_settings, estimate, settings, &result) != 0)
         return -1;

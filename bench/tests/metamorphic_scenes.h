@@ -18,7 +18,10 @@
 
 /* ---- scene text ------------------------------------------------------------------ */
 
-enum { STATEMENTS_MAX = 80, NUMBERS_MAX = 13 };
+enum {
+    STATEMENTS_MAX = 80,
+    NUMBERS_MAX = 13
+};
 
 /* One statement of a scene file: its keyword, its material's name (geometry) or its own
  * name and kind (a material), and its numbers. */
@@ -73,7 +76,8 @@ static inline char *scene_text_write(const SceneText *scene)
     text[0] = '\0';
     for (int i = 0; i < scene->count; i++) {
         const Statement *s = &scene->s[i];
-        used += (size_t)snprintf(text + used, size - used, "%s %s %s", s->keyword, s->name, s->kind);
+        used += (size_t)snprintf(text + used, size - used, "%s %s %s", s->keyword, s->name,
+                                 s->kind);
         for (int k = 0; k < s->count; k++)
             used += (size_t)snprintf(text + used, size - used, " %.17g", s->n[k]);
         used += (size_t)snprintf(text + used, size - used, "\n");
@@ -139,8 +143,10 @@ static inline void geometry_box(const SceneText *scene, Vec3 *lower, Vec3 *upper
         double r = is_keyword(s, "sphere") ? s->n[3] : 0.0;
         for (int k = 0; k < point_count(s); k++) {
             Vec3 p = point_of(s, k);
-            *lower = vec3(fmin(lower->x, p.x - r), fmin(lower->y, p.y - r), fmin(lower->z, p.z - r));
-            *upper = vec3(fmax(upper->x, p.x + r), fmax(upper->y, p.y + r), fmax(upper->z, p.z + r));
+            *lower =
+                vec3(fmin(lower->x, p.x - r), fmin(lower->y, p.y - r), fmin(lower->z, p.z - r));
+            *upper =
+                vec3(fmax(upper->x, p.x + r), fmax(upper->y, p.y + r), fmax(upper->z, p.z + r));
         }
     }
 }
@@ -212,7 +218,8 @@ static inline void flip_scene(SceneText *scene, double z0)
             st->n[2] = st->n[5];
             st->n[5] = low;
         }
-        if (is_keyword(st, "triangle") || is_keyword(st, "quad")) { /* v0 kept, the rest reversed */
+        if (is_keyword(st, "triangle") ||
+            is_keyword(st, "quad")) { /* v0 kept, the rest reversed */
             for (int k = 1; k < points - k; k++) {
                 Vec3 a = point_of(st, k), b = point_of(st, points - k);
                 set_point(st, k, b);
@@ -231,8 +238,10 @@ static inline void camera_back(SceneText *scene, double distance)
         if (!is_keyword(c, "camera"))
             continue;
         Vec3 eye = point_of(c, 0), bottom_left = point_of(c, 1);
-        Vec3 centre = vec3_add(bottom_left, vec3_scale(vec3_add(vec3_sub(point_of(c, 2), bottom_left),
-                                                                vec3_sub(point_of(c, 3), bottom_left)), 0.5));
+        Vec3 centre =
+            vec3_add(bottom_left, vec3_scale(vec3_add(vec3_sub(point_of(c, 2), bottom_left),
+                                                      vec3_sub(point_of(c, 3), bottom_left)),
+                                             0.5));
         Vec3 away = vec3_normalize(vec3_sub(eye, centre));
         set_point(c, 0, vec3_add_scaled(centre, away, distance));
     }
@@ -242,9 +251,14 @@ static inline void camera_back(SceneText *scene, double distance)
 static inline void add_far_sphere(SceneText *scene)
 {
     double size = scene_size(scene);
-    Statement grey = {.keyword = "material", .name = "far_grey", .kind = "lambert", .count = 3,
+    Statement grey = {.keyword = "material",
+                      .name = "far_grey",
+                      .kind = "lambert",
+                      .count = 3,
                       .n = {0.5, 0.5, 0.5}};
-    Statement sphere = {.keyword = "sphere", .name = "far_grey", .count = 4,
+    Statement sphere = {.keyword = "sphere",
+                        .name = "far_grey",
+                        .count = 4,
                         .n = {0.3e12 * size, -0.8e12 * size, 0.52e12 * size, size}};
     append(scene, grey);
     append(scene, sphere);
@@ -274,7 +288,8 @@ static inline void extend_floor(SceneText *scene)
     assert_true(material[0] != '\0');
     Vec3 c = vec3_scale(vec3_add(lower, upper), 0.5);
     append(scene, quad_of(material, vec3(c.x - reach, c.y - reach, lower.z),
-                          vec3(c.x + reach, c.y - reach, lower.z), vec3(c.x + reach, c.y + reach, lower.z),
+                          vec3(c.x + reach, c.y - reach, lower.z),
+                          vec3(c.x + reach, c.y + reach, lower.z),
                           vec3(c.x - reach, c.y + reach, lower.z)));
 }
 
@@ -395,21 +410,25 @@ static const char ROOM_POINT_LIGHT[] = "point_light 5 0 4   150 150 150\n";
 
 /* A box on a mirror floor, a glass ball and a wall behind, open to the sky, seen
  * obliquely from above (its camera is pulled back by each case). */
-static const char OPEN[] =
-    "camera 9.856 -5.913 4.949   3.044 2.838 -2.331   -1.072 -4.022 -2.331   1.072 4.022 5.331\n"
-    "material floor  mirror  0.9 0.9 0.9\n"
-    "material yellow lambert 0.8 0.7 0.25\n"
-    "material white  lambert 0.75 0.75 0.75\n"
-    "material glass  glass   1.5\n"
-    "material lamp   light   25 25 25\n"
-    "quad  floor  -6 -6 0   6 -6 0   6 6 0   -6 6 0\n"
-    "box   yellow -1 -1 0   1 1 2\n"
-    "quad  white  -6 6 0    6 6 0    6 6 5   -6 6 5\n"
-    "sphere glass 2.5 -2 1   1\n";
+static const char OPEN[] = "camera 9.856 -5.913 4.949   3.044 2.838 -2.331   -1.072 -4.022 "
+                           "-2.331   1.072 4.022 5.331\n"
+                           "material floor  mirror  0.9 0.9 0.9\n"
+                           "material yellow lambert 0.8 0.7 0.25\n"
+                           "material white  lambert 0.75 0.75 0.75\n"
+                           "material glass  glass   1.5\n"
+                           "material lamp   light   25 25 25\n"
+                           "quad  floor  -6 -6 0   6 -6 0   6 6 0   -6 6 0\n"
+                           "box   yellow -1 -1 0   1 1 2\n"
+                           "quad  white  -6 6 0    6 6 0    6 6 5   -6 6 5\n"
+                           "sphere glass 2.5 -2 1   1\n";
 static const char OPEN_LAMP[] = "quad lamp -1 -1 6   -1 1 6   1 1 6   1 -1 6\n";
 static const char OPEN_POINT_LIGHT[] = "point_light 3 -2 6   60 60 60\n";
 
-typedef enum { SCENE_ROOM, SCENE_OPEN, SCENE_SYMMETRIC } SceneKind;
+typedef enum {
+    SCENE_ROOM,
+    SCENE_OPEN,
+    SCENE_SYMMETRIC
+} SceneKind;
 
 /* The scene of a case: the room, the open mirror floor, or the room with its light
  * moved over the eye and a second light at that one's point reflection through the
@@ -419,7 +438,8 @@ static inline void base_scene(SceneKind kind, int point_lights, SceneText *scene
     char text[4096];
     int room = kind != SCENE_OPEN;
     snprintf(text, sizeof text, "%s%s", room ? ROOM : OPEN,
-             point_lights ? (room ? ROOM_POINT_LIGHT : OPEN_POINT_LIGHT) : (room ? ROOM_LAMP : OPEN_LAMP));
+             point_lights ? (room ? ROOM_POINT_LIGHT : OPEN_POINT_LIGHT)
+                          : (room ? ROOM_LAMP : OPEN_LAMP));
     scene_text_parse(text, scene);
     if (kind != SCENE_SYMMETRIC)
         return;
@@ -444,9 +464,17 @@ static inline void base_scene(SceneKind kind, int point_lights, SceneText *scene
 /* ---- the cases ------------------------------------------------------------------- */
 
 typedef enum {
-    CHANGE_NONE, CHANGE_SCALE, CHANGE_TRANSLATE, CHANGE_CAMERA_BACK, CHANGE_FAR_SPHERE,
-    CHANGE_FAR_FLOOR, CHANGE_MIRROR_BEHIND, CHANGE_SPLIT_LAMPS, CHANGE_SPLIT_QUADS,
-    CHANGE_REVERSE, CHANGE_FLIP
+    CHANGE_NONE,
+    CHANGE_SCALE,
+    CHANGE_TRANSLATE,
+    CHANGE_CAMERA_BACK,
+    CHANGE_FAR_SPHERE,
+    CHANGE_FAR_FLOOR,
+    CHANGE_MIRROR_BEHIND,
+    CHANGE_SPLIT_LAMPS,
+    CHANGE_SPLIT_QUADS,
+    CHANGE_REVERSE,
+    CHANGE_FLIP
 } ChangeKind;
 
 typedef struct {
@@ -454,7 +482,10 @@ typedef struct {
     double amount; /* scale factor, translation or camera distance in scene sizes */
 } Change;
 
-typedef enum { JUDGED_BIT, JUDGED_AGREE } Judged;
+typedef enum {
+    JUDGED_BIT,
+    JUDGED_AGREE
+} Judged;
 
 typedef struct {
     const char *name;
@@ -468,19 +499,38 @@ static inline void apply_change(SceneText *scene, Change change)
 {
     double size = scene_size(scene);
     switch (change.kind) {
-    case CHANGE_NONE: break;
-    case CHANGE_SCALE: move_scene(scene, change.amount, vec3(0, 0, 0)); break;
+    case CHANGE_NONE:
+        break;
+    case CHANGE_SCALE:
+        move_scene(scene, change.amount, vec3(0, 0, 0));
+        break;
     case CHANGE_TRANSLATE:
         move_scene(scene, 1.0, vec3_scale(vec3(0.62, -0.71, 0.33), change.amount * size));
         break;
-    case CHANGE_CAMERA_BACK: camera_back(scene, change.amount * size); break;
-    case CHANGE_FAR_SPHERE: add_far_sphere(scene); break;
-    case CHANGE_FAR_FLOOR: extend_floor(scene); break;
-    case CHANGE_MIRROR_BEHIND: add_mirror_behind(scene); break;
-    case CHANGE_SPLIT_LAMPS: split_lamps(scene); break;
-    case CHANGE_SPLIT_QUADS: split_quads(scene); break;
-    case CHANGE_REVERSE: reverse_statements(scene); break;
-    case CHANGE_FLIP: flip_scene(scene, camera_eye(scene).z); break;
+    case CHANGE_CAMERA_BACK:
+        camera_back(scene, change.amount * size);
+        break;
+    case CHANGE_FAR_SPHERE:
+        add_far_sphere(scene);
+        break;
+    case CHANGE_FAR_FLOOR:
+        extend_floor(scene);
+        break;
+    case CHANGE_MIRROR_BEHIND:
+        add_mirror_behind(scene);
+        break;
+    case CHANGE_SPLIT_LAMPS:
+        split_lamps(scene);
+        break;
+    case CHANGE_SPLIT_QUADS:
+        split_quads(scene);
+        break;
+    case CHANGE_REVERSE:
+        reverse_statements(scene);
+        break;
+    case CHANGE_FLIP:
+        flip_scene(scene, camera_eye(scene).z);
+        break;
     }
 }
 
@@ -495,7 +545,10 @@ static inline double radiance_factor(const Case *c, int point_lights)
     return factor;
 }
 
-#define NOTHING {CHANGE_NONE, 0}
+#define NOTHING                                                                                \
+    {                                                                                          \
+        CHANGE_NONE, 0                                                                         \
+    }
 static const Case CASES[] = {
     {"scale 2^-40", SCENE_ROOM, NOTHING, {{CHANGE_SCALE, 0x1p-40}, NOTHING}, JUDGED_BIT},
     {"scale 2^50", SCENE_ROOM, NOTHING, {{CHANGE_SCALE, 0x1p50}, NOTHING}, JUDGED_BIT},
@@ -505,21 +558,52 @@ static const Case CASES[] = {
     {"scale 1e12", SCENE_ROOM, NOTHING, {{CHANGE_SCALE, 1e12}, NOTHING}, JUDGED_AGREE},
     {"scale 1e-40", SCENE_ROOM, NOTHING, {{CHANGE_SCALE, 1e-40}, NOTHING}, JUDGED_AGREE},
     {"scale 1e40", SCENE_ROOM, NOTHING, {{CHANGE_SCALE, 1e40}, NOTHING}, JUDGED_AGREE},
-    {"translate 1e6 sizes", SCENE_ROOM, NOTHING, {{CHANGE_TRANSLATE, 1e6}, NOTHING}, JUDGED_AGREE},
-    {"camera back 1e8 (1e5)", SCENE_OPEN, {CHANGE_CAMERA_BACK, 1e5}, {{CHANGE_CAMERA_BACK, 1e8}, NOTHING},
+    {"translate 1e6 sizes",
+     SCENE_ROOM,
+     NOTHING,
+     {{CHANGE_TRANSLATE, 1e6}, NOTHING},
      JUDGED_AGREE},
-    {"camera back 1e11 (1e5)", SCENE_OPEN, {CHANGE_CAMERA_BACK, 1e5},
-     {{CHANGE_CAMERA_BACK, 1e11}, NOTHING}, JUDGED_AGREE},
+    {"camera back 1e8 (1e5)",
+     SCENE_OPEN,
+     {CHANGE_CAMERA_BACK, 1e5},
+     {{CHANGE_CAMERA_BACK, 1e8}, NOTHING},
+     JUDGED_AGREE},
+    {"camera back 1e11 (1e5)",
+     SCENE_OPEN,
+     {CHANGE_CAMERA_BACK, 1e5},
+     {{CHANGE_CAMERA_BACK, 1e11}, NOTHING},
+     JUDGED_AGREE},
     {"far sphere", SCENE_ROOM, NOTHING, {{CHANGE_FAR_SPHERE, 0}, NOTHING}, JUDGED_BIT},
-    {"floor far beyond the walls", SCENE_ROOM, NOTHING, {{CHANGE_FAR_FLOOR, 0}, NOTHING}, JUDGED_AGREE},
-    {"mirror behind the mirror", SCENE_ROOM, NOTHING, {{CHANGE_MIRROR_BEHIND, 0}, NOTHING},
+    {"floor far beyond the walls",
+     SCENE_ROOM,
+     NOTHING,
+     {{CHANGE_FAR_FLOOR, 0}, NOTHING},
+     JUDGED_AGREE},
+    {"mirror behind the mirror",
+     SCENE_ROOM,
+     NOTHING,
+     {{CHANGE_MIRROR_BEHIND, 0}, NOTHING},
      JUDGED_AGREE},
     {"lamp in two", SCENE_ROOM, NOTHING, {{CHANGE_SPLIT_LAMPS, 0}, NOTHING}, JUDGED_AGREE},
-    {"quads in four triangles", SCENE_ROOM, NOTHING, {{CHANGE_SPLIT_QUADS, 0}, NOTHING}, JUDGED_AGREE},
-    {"statements reversed", SCENE_SYMMETRIC, NOTHING, {{CHANGE_REVERSE, 0}, NOTHING}, JUDGED_AGREE},
-    {"lamps symmetric, flipped", SCENE_SYMMETRIC, NOTHING, {{CHANGE_FLIP, 0}, NOTHING}, JUDGED_AGREE},
+    {"quads in four triangles",
+     SCENE_ROOM,
+     NOTHING,
+     {{CHANGE_SPLIT_QUADS, 0}, NOTHING},
+     JUDGED_AGREE},
+    {"statements reversed",
+     SCENE_SYMMETRIC,
+     NOTHING,
+     {{CHANGE_REVERSE, 0}, NOTHING},
+     JUDGED_AGREE},
+    {"lamps symmetric, flipped",
+     SCENE_SYMMETRIC,
+     NOTHING,
+     {{CHANGE_FLIP, 0}, NOTHING},
+     JUDGED_AGREE},
 };
 #undef NOTHING
-enum { CASE_COUNT = sizeof CASES / sizeof CASES[0] };
+enum {
+    CASE_COUNT = sizeof CASES / sizeof CASES[0]
+};
 
 #endif

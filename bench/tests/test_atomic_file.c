@@ -298,10 +298,7 @@ static void raise_if_at(Step step)
         raise_planned();
 }
 
-static void raise_planned_before_rename(void)
-{
-    raise_if_at(AT_BEFORE_RENAME);
-}
+static void raise_planned_before_rename(void) { raise_if_at(AT_BEFORE_RENAME); }
 
 /* With the program's signal handling installed: write the file, raising the planned
  * signals at the planned step. Exits 0 if it lives to the end with the file in place,
@@ -430,7 +427,8 @@ int main(void)
                                         remove_scratch),
         cmocka_unit_test_setup_teardown(test_unbuffered_write_error_discards, make_scratch,
                                         remove_scratch),
-        cmocka_unit_test_setup_teardown(test_crash_keeps_old_file, make_scratch, remove_scratch),
+        cmocka_unit_test_setup_teardown(test_crash_keeps_old_file, make_scratch,
+                                        remove_scratch),
         cmocka_unit_test_setup_teardown(test_refused_rename_discards, make_scratch,
                                         remove_scratch),
         cmocka_unit_test_setup_teardown(test_open_failures, make_scratch, remove_scratch),

@@ -22,7 +22,10 @@
 #include "bias_variance.h"
 #include "rng.h"
 
-enum { SIDE = 128, K = 4 };
+enum {
+    SIDE = 128,
+    K = 4
+};
 #define BIAS 0.05
 #define NOISE 0.1     /* s: each image's */
 #define REF_NOISE 0.1 /* r: each reference's */
@@ -53,7 +56,8 @@ static BiasVariance estimate(const unsigned char *left_out)
     Rng rng = rng_for_sample(1, 2, 3);
     for (long i = 0; i < 3L * SIDE * SIDE; i++)
         truth.pixels[i] = (float)(1.0 + rng_uniform(&rng));
-    Image references[2] = {noisy(&truth, 0.0, REF_NOISE, 100), noisy(&truth, 0.0, REF_NOISE, 101)};
+    Image references[2] = {noisy(&truth, 0.0, REF_NOISE, 100),
+                           noisy(&truth, 0.0, REF_NOISE, 101)};
     SeedImages seeds;
     assert_int_equal(seed_images_begin(&seeds, SIDE, SIDE, left_out), 0);
     for (int k = 0; k < K; k++) {
@@ -161,7 +165,8 @@ static void test_table_by_hand(void **state)
     char line[512];
     assert_non_null(fgets(line, sizeof line, csv));
     assert_non_null(fgets(line, sizeof line, csv));
-    assert_string_equal(line, "photon map a=0.67,2,128,0.5,0.666667,16,1,2,0.3,0.2,0.4,2,3,1,0.75,0.25\n");
+    assert_string_equal(
+        line, "photon map a=0.67,2,128,0.5,0.666667,16,1,2,0.3,0.2,0.4,2,3,1,0.75,0.25\n");
     fclose(csv);
     remove(path);
 }

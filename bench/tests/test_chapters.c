@@ -49,7 +49,8 @@ static void smoke_at(const char *name, const char *size, const char *samples)
 {
     char folder[500], out[600], command[2048];
     scratch(folder, sizeof folder);
-    snprintf(out, sizeof out, "%s/%s%s", folder, name, strcmp(size, SMALL) == 0 ? "" : "-smallest");
+    snprintf(out, sizeof out, "%s/%s%s", folder, name,
+             strcmp(size, SMALL) == 0 ? "" : "-smallest");
     snprintf(command, sizeof command, "rm -rf %s && %s/%s %s %s --out %s", out, programs(),
              name, size, samples, out);
     FILE *pipe = popen(command, "r");
@@ -78,16 +79,14 @@ static void smoke_at(const char *name, const char *size, const char *samples)
     }
     int status = pclose(pipe);
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        fail_msg("%s exited with status %d", name, WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+        fail_msg("%s exited with status %d", name,
+                 WIFEXITED(status) ? WEXITSTATUS(status) : -1);
     print_message("    %s: %d tables, %d PFM images\n", name, tables, pfms);
     assert_true(tables >= 1);
     assert_true(pfms >= 1);
 }
 
-static void smoke(const char *name, const char *samples)
-{
-    smoke_at(name, SMALL, samples);
-}
+static void smoke(const char *name, const char *samples) { smoke_at(name, SMALL, samples); }
 
 static void test_chapter1(void **state) { smoke("ch01_whitted", ""); }
 #if CHAPTER >= 2
@@ -111,11 +110,13 @@ static void test_chapter3_conclusion_follows_the_numbers(void **state)
           "material floor lambert 0.5 0.5 0.5\n"
           "material lamp light 5 5 5\n"
           "quad floor  -10 -10 0  10 -10 0  10 10 0  -10 10 0\n"
-          "quad lamp   -2 -2 1  -2 2 1  2 2 1  2 -2 1\n", file);
+          "quad lamp   -2 -2 1  -2 2 1  2 2 1  2 -2 1\n",
+          file);
     assert_int_equal(fclose(file), 0);
-    snprintf(command, sizeof command, "%s/ch03_shadow_rays --quiet --scene %s --depth 2 "
-             "--size 64 --runs 8 --reference-spp 1024 --out %s/near_lamp", programs(), scene,
-             folder);
+    snprintf(command, sizeof command,
+             "%s/ch03_shadow_rays --quiet --scene %s --depth 2 "
+             "--size 64 --runs 8 --reference-spp 1024 --out %s/near_lamp",
+             programs(), scene, folder);
     FILE *pipe = popen(command, "r");
     assert_non_null(pipe);
     char line[4608];
@@ -147,10 +148,7 @@ static void test_chapter8(void **state) { smoke("ch08_photon_map", FEW_SAMPLES);
 #endif
 #if CHAPTER >= 9
 /* Chapter 9 exits 1 unless every stage rendered the same image, bit for bit. */
-static void test_chapter9(void **state)
-{
-    smoke("ch09_fast", "--quick --spp 1");
-}
+static void test_chapter9(void **state) { smoke("ch09_fast", "--quick --spp 1"); }
 
 /* A lamp with no blue: chapter 8's ratio of the image's channel means to the reference's
  * has nothing to divide by in blue, and must say so rather than print "nan". */
@@ -159,11 +157,15 @@ static void test_chapter8_lamp_without_blue(void **state)
     char folder[500], scene[600], command[2400];
     scratch(folder, sizeof folder);
     snprintf(scene, sizeof scene, "%s/yellow_lamp.scene", folder);
-    snprintf(command, sizeof command, "sed 's/^material lamp   light   25 25 25/material lamp "
-             "light 25 25 0/' scenes/room.scene > %s", scene);
+    snprintf(command, sizeof command,
+             "sed 's/^material lamp   light   25 25 25/material lamp "
+             "light 25 25 0/' scenes/room.scene > %s",
+             scene);
     assert_int_equal(system(command), 0);
-    snprintf(command, sizeof command, "%s/ch08_photon_map " SMALL " " FEW_SAMPLES " --scene %s "
-             "--out %s/yellow 2>&1", programs(), scene, folder);
+    snprintf(command, sizeof command,
+             "%s/ch08_photon_map " SMALL " " FEW_SAMPLES " --scene %s "
+             "--out %s/yellow 2>&1",
+             programs(), scene, folder);
     FILE *pipe = popen(command, "r");
     assert_non_null(pipe);
     char line[4608];
@@ -183,9 +185,9 @@ static void test_chapter8_lamp_without_blue(void **state)
  * quarter-size sweeps and plots included. */
 static void test_smallest_size(void **state)
 {
-    static const char *const names[] = {"ch01_whitted", "ch02_monte_carlo", "ch03_shadow_rays",
-                                        "ch04_fresnel", "ch05_oren_nayar",
-                                        "ch06_russian_roulette", "ch07_final", "ch08_photon_map"};
+    static const char *const names[] = {
+        "ch01_whitted",    "ch02_monte_carlo",      "ch03_shadow_rays", "ch04_fresnel",
+        "ch05_oren_nayar", "ch06_russian_roulette", "ch07_final",       "ch08_photon_map"};
     for (int c = 0; c < CHAPTER && c < 8; c++)
         smoke_at(names[c], SMALLEST, c == 0 ? "" : FEW_SAMPLES);
 }

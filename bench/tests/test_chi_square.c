@@ -96,8 +96,7 @@ static void test_p_value_closed_forms(void **state)
                 sum += term;
                 term *= 0.5 * x / (i + 1);
             }
-            assert_float_equal(chi_square_p_value(x, even_dofs[k]), sum,
-                               1e-13 + 1e-10 * sum);
+            assert_float_equal(chi_square_p_value(x, even_dofs[k]), sum, 1e-13 + 1e-10 * sum);
         }
     }
 }

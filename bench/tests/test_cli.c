@@ -42,7 +42,8 @@ static int capture(const char *command, char *output, size_t size)
 static int run(const char *args, char *output, size_t size)
 {
     char command[2048];
-    snprintf(command, sizeof command, "%s --quiet --out %s/figures %s 2>&1", program, out_dir, args);
+    snprintf(command, sizeof command, "%s --quiet --out %s/figures %s 2>&1", program, out_dir,
+             args);
     return capture(command, output, size);
 }
 
@@ -118,8 +119,8 @@ static void test_number_extremes(void **state)
 }
 
 #if CHAPTER >= 7
-/* --rr (chapter 7's) takes a real number in (0, 1]: 1e-310 is in it, but a subnormal, so it is refused
- * as too small to compute with, not as outside the range; 1e-300 is taken. */
+/* --rr (chapter 7's) takes a real number in (0, 1]: 1e-310 is in it, but a subnormal, so it is
+ * refused as too small to compute with, not as outside the range; 1e-300 is taken. */
 static void test_roulette_extremes(void **state)
 {
     const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
@@ -134,8 +135,8 @@ static void test_roulette_extremes(void **state)
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char command[800], output[4096];
-        snprintf(command, sizeof command, "%s/ch07_final --rr %s --help 2>&1",
-                 directory, cases[i][0]);
+        snprintf(command, sizeof command, "%s/ch07_final --rr %s --help 2>&1", directory,
+                 cases[i][0]);
         int status = capture(command, output, sizeof output);
         if (cases[i][1] ? status != 2 || !strstr(output, cases[i][1]) : status != 0)
             fail_msg("--rr %s gave status %d and\n%s\nexpected %s", cases[i][0], status, output,
@@ -210,19 +211,27 @@ static void expect_scene_failure(const char *text, int line, const char *message
  * the line where it is. */
 static void test_bad_scenes(void **state)
 {
-    expect_scene_failure(CAMERA MATERIAL "frobnicate 1 2 3\n", 3, "unknown keyword 'frobnicate'");
-    expect_scene_failure(CAMERA MATERIAL "sphere white 1 2 3\n", 3, "expected 4 numbers, found 3");
-    expect_scene_failure(CAMERA MATERIAL "sphere white 1 2 x3 1\n", 3, "'x3' is not a decimal number");
-    expect_scene_failure(CAMERA MATERIAL "sphere white 1 2 nan 1\n", 3, "'nan' is not a decimal number");
-    expect_scene_failure(CAMERA MATERIAL "sphere white 1 2 inf 1\n", 3, "'inf' is not a decimal number");
+    expect_scene_failure(CAMERA MATERIAL "frobnicate 1 2 3\n", 3,
+                         "unknown keyword 'frobnicate'");
+    expect_scene_failure(CAMERA MATERIAL "sphere white 1 2 3\n", 3,
+                         "expected 4 numbers, found 3");
+    expect_scene_failure(CAMERA MATERIAL "sphere white 1 2 x3 1\n", 3,
+                         "'x3' is not a decimal number");
+    expect_scene_failure(CAMERA MATERIAL "sphere white 1 2 nan 1\n", 3,
+                         "'nan' is not a decimal number");
+    expect_scene_failure(CAMERA MATERIAL "sphere white 1 2 inf 1\n", 3,
+                         "'inf' is not a decimal number");
     expect_scene_failure(CAMERA MATERIAL "sphere red 1 2 3 1\n", 3, "unknown material 'red'");
     expect_scene_failure(CAMERA MATERIAL MATERIAL, 3, "duplicate material 'white'");
     expect_scene_failure(CAMERA "material white lambert 1.5 0.5 0.5\n", 2, "outside [0, 1]");
     expect_scene_failure(CAMERA MATERIAL "sphere white 1 2 3 -1\n", 3, "must be > 0");
-    expect_scene_failure(CAMERA "material rough oren_nayar 0.5 0.5 0.5 -0.1\n", 2, "negative sigma");
+    expect_scene_failure(CAMERA "material rough oren_nayar 0.5 0.5 0.5 -0.1\n", 2,
+                         "negative sigma");
     expect_scene_failure(CAMERA "material g glass 0\n", 2, "must be > 0");
-    expect_scene_failure(CAMERA MATERIAL "triangle white 0 0 0  1 1 1  2 2 2\n", 3, "degenerate");
-    expect_scene_failure(CAMERA MATERIAL "quad white 0 0 0  1 0 0  1 1 0  0 1 1\n", 3, "non-planar quad");
+    expect_scene_failure(CAMERA MATERIAL "triangle white 0 0 0  1 1 1  2 2 2\n", 3,
+                         "degenerate");
+    expect_scene_failure(CAMERA MATERIAL "quad white 0 0 0  1 0 0  1 1 0  0 1 1\n", 3,
+                         "non-planar quad");
     expect_scene_failure(MATERIAL LIGHT, 2, "camera");
     expect_scene_failure(CAMERA MATERIAL "sphere white 5 0 0 1\n", 3, "no point_light");
     char *long_line = malloc(5000);
@@ -279,7 +288,8 @@ static int run_chapter2(const char *scene_command, const char *scene, char *outp
     char command[2048];
     snprintf(command, sizeof command,
              "%s timeout 60 %s/ch02_monte_carlo --quiet --size 16 --spp 1 --reference-spp 2 "
-             "--scene %s --out %s/ch02 2>&1", scene_command, directory, scene, out_dir);
+             "--scene %s --out %s/ch02 2>&1",
+             scene_command, directory, scene, out_dir);
     return capture(command, output, size);
 }
 
@@ -289,8 +299,8 @@ static const char *unique_room(const char *name, int variant)
     static char path[600];
     snprintf(path, sizeof path, "%s/%s.scene", out_dir, name);
     char command[1400];
-    snprintf(command, sizeof command, "(echo '# %s %d %ld'; cat scenes/room.scene) > %s", out_dir,
-             variant, (long)getpid(), path);
+    snprintf(command, sizeof command, "(echo '# %s %d %ld'; cat scenes/room.scene) > %s",
+             out_dir, variant, (long)getpid(), path);
     assert_int_equal(system(command), 0);
     return path;
 }
@@ -322,12 +332,15 @@ static void test_unwritable_cache(void **state)
 {
     const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
     char command[2400], output[16384];
-    snprintf(command, sizeof command, "mkdir -p %s/nocache && cp %s/ch02_monte_carlo %s/reference "
-             "%s/nocache/ && : > %s/nocache/references", out_dir, directory, directory, out_dir,
-             out_dir);
+    snprintf(command, sizeof command,
+             "mkdir -p %s/nocache && cp %s/ch02_monte_carlo %s/reference "
+             "%s/nocache/ && : > %s/nocache/references",
+             out_dir, directory, directory, out_dir, out_dir);
     assert_int_equal(system(command), 0);
-    snprintf(command, sizeof command, "%s/nocache/ch02_monte_carlo --quiet --size 16 --spp 1 "
-             "--runs 1 --reference-spp 8 --out %s/nocache/figures 2>&1", out_dir, out_dir);
+    snprintf(command, sizeof command,
+             "%s/nocache/ch02_monte_carlo --quiet --size 16 --spp 1 "
+             "--runs 1 --reference-spp 8 --out %s/nocache/figures 2>&1",
+             out_dir, out_dir);
     int status = capture(command, output, sizeof output);
     if (status != 0)
         fail_msg("status %d:\n%s", status, output);
@@ -343,8 +356,10 @@ static void test_dark_lamp_named(void **state)
 {
     char path[600], command[1400], output[16384];
     snprintf(path, sizeof path, "%s/dark.scene", out_dir);
-    snprintf(command, sizeof command, "sed 's/^material lamp .*/material lamp light 0 0 0/' "
-             "scenes/room.scene > %s", path);
+    snprintf(command, sizeof command,
+             "sed 's/^material lamp .*/material lamp light 0 0 0/' "
+             "scenes/room.scene > %s",
+             path);
     assert_int_equal(system(command), 0);
     assert_int_equal(run_chapter2("", path, output, sizeof output), 2);
     if (!strstr(output, "no area light: material 'lamp' is a light of emission 0 0 0, which "
@@ -363,8 +378,10 @@ static void test_full_cache(void **state)
     snprintf(folder, sizeof folder, "%s/fullcache", out_dir);
     snprintf(log, sizeof log, "%s/log", folder);
     snprintf(temporary, sizeof temporary, "%s/tmp", folder);
-    snprintf(command, sizeof command, "mkdir -p %s/references %s && cp %s/ch02_monte_carlo "
-             "%s/reference %s/", folder, temporary, directory, directory, folder);
+    snprintf(command, sizeof command,
+             "mkdir -p %s/references %s && cp %s/ch02_monte_carlo "
+             "%s/reference %s/",
+             folder, temporary, directory, directory, folder);
     assert_int_equal(system(command), 0);
     fflush(NULL);
     pid_t child = fork();
@@ -373,7 +390,8 @@ static void test_full_cache(void **state)
         char cache[700], program[700];
         snprintf(cache, sizeof cache, "%s/references", folder);
         snprintf(program, sizeof program, "%s/ch02_monte_carlo", folder);
-        if (unshare(CLONE_NEWNS) != 0 || mount("none", "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0 ||
+        if (unshare(CLONE_NEWNS) != 0 ||
+            mount("none", "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0 ||
             mount("none", cache, "tmpfs", 0, "size=12k") != 0)
             _exit(77);
         setenv("TMPDIR", temporary, 1);
@@ -417,8 +435,9 @@ static void test_scene_from_a_fifo(void **state)
 #endif
 
 /* The bench's own programs speak as the chapters' do: the reference renderer prints its
- * usage for --help and refuses a cache key or seed that is not all digits; the gallery makes its --out folder however deep, and fails, rather
- * than exit 0, when what it prints is lost (standard output on a full device). */
+ * usage for --help and refuses a cache key or seed that is not all digits; the gallery makes
+ * its --out folder however deep, and fails, rather than exit 0, when what it prints is lost
+ * (standard output on a full device). */
 static void test_bench_programs(void **state)
 {
     const char *directory = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
@@ -426,21 +445,24 @@ static void test_bench_programs(void **state)
     snprintf(command, sizeof command, "%s/reference --help 2>&1", directory);
     assert_int_equal(capture(command, output, sizeof output), 0);
     assert_non_null(strstr(output, "usage: reference"));
-    const char *bad_numbers[][2] = {{"room", "1"}, {"-1", "1"}, {"12345678901234567", "1"},
-                                    {"ab", "x"}, {"ab", "-2"}};
+    const char *bad_numbers[][2] = {
+        {"room", "1"}, {"-1", "1"}, {"12345678901234567", "1"}, {"ab", "x"}, {"ab", "-2"}};
     for (size_t i = 0; i < sizeof bad_numbers / sizeof bad_numbers[0]; i++) {
-        snprintf(command, sizeof command, "%s/reference --scene scenes/room.scene --size 8 "
+        snprintf(command, sizeof command,
+                 "%s/reference --scene scenes/room.scene --size 8 "
                  "--reference-spp 8 --depth 2 --out %s --key %s --seed %s --quiet 2>&1",
                  directory, out_dir, bad_numbers[i][0], bad_numbers[i][1]);
         if (capture(command, output, sizeof output) != 2 || !strstr(output, "expected"))
             fail_msg("reference with --key %s --seed %s: %s", bad_numbers[i][0],
                      bad_numbers[i][1], output);
     }
-    snprintf(command, sizeof command, "%s/gallery --out %s/deep/er/gallery 2>&1", directory, out_dir);
+    snprintf(command, sizeof command, "%s/gallery --out %s/deep/er/gallery 2>&1", directory,
+             out_dir);
     assert_int_equal(capture(command, output, sizeof output), 0);
     snprintf(command, sizeof command, "%s/deep/er/gallery/index.html", out_dir);
     assert_int_equal(access(command, F_OK), 0);
-    snprintf(command, sizeof command, "%s/gallery --out %s/deep 2>&1 >/dev/full", directory, out_dir);
+    snprintf(command, sizeof command, "%s/gallery --out %s/deep 2>&1 >/dev/full", directory,
+             out_dir);
     assert_int_equal(capture(command, output, sizeof output), 1);
     assert_non_null(strstr(output, "cannot write to the standard output"));
 }

@@ -52,13 +52,15 @@ static void test_slope(void **state)
  * 1 / sqrt(time) to 3. Too many settings or steps are refused. */
 static void test_plot(void **state)
 {
-    TableRow rows[4] = {row(1, 4, 0.5, 1), row(2, 3, NAN, 0), row(2, 3, 1, 0), row(8, 1, 0.25, 1)};
+    TableRow rows[4] = {row(1, 4, 0.5, 1), row(2, 3, NAN, 0), row(2, 3, 1, 0),
+                        row(8, 1, 0.25, 1)};
     const char *labels[2] = {"first", "second"};
     const Vec3 colours[2] = {{1, 0, 0}, {0, 0, 1}};
     ConvergencePlot plot;
     assert_int_equal(convergence_plot(&plot, rows, 2, 2, labels, colours), 0);
     assert_int_equal(plot.plot.series_count, 3);
-    const PlotSeries *first = &plot.series[0], *second = &plot.series[1], *guide = &plot.series[2];
+    const PlotSeries *first = &plot.series[0], *second = &plot.series[1],
+                     *guide = &plot.series[2];
     assert_string_equal(first->label, "first");
     assert_true(first->colour.x == 1 && second->colour.z == 1);
     assert_int_equal(first->count, 2);
@@ -74,8 +76,10 @@ static void test_plot(void **state)
     assert_close(guide->y[1], 3, 1e-15);
     assert_true(guide->dashed && !guide->markers);
     assert_true(plot.plot.x.scale == PLOT_LOG && plot.plot.y.scale == PLOT_LOG);
-    assert_int_equal(convergence_plot(&plot, rows, CONVERGENCE_MAX_SERIES + 1, 1, labels, colours), -1);
-    assert_int_equal(convergence_plot(&plot, rows, 1, CONVERGENCE_MAX_STEPS + 1, labels, colours), -1);
+    assert_int_equal(
+        convergence_plot(&plot, rows, CONVERGENCE_MAX_SERIES + 1, 1, labels, colours), -1);
+    assert_int_equal(
+        convergence_plot(&plot, rows, 1, CONVERGENCE_MAX_STEPS + 1, labels, colours), -1);
 }
 
 int main(void)

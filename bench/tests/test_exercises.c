@@ -29,7 +29,7 @@ typedef struct {
     const char *mistake; /* in a student's words */
     const char *file;    /* in the chapter's tree */
     const char *from, *to;
-    const char *symptom; /* a phrase its verdict must hold */
+    const char *symptom;    /* a phrase its verdict must hold */
     const char *misleading; /* a phrase it must not hold, or NULL */
 } Mistake;
 
@@ -41,8 +41,8 @@ static const Mistake mistakes[] = {
     {1, "1.3", "the direction not normalised", "lib/camera.c",
      "vec3_normalize(vec3_sub(on_plane, camera->eye))", "vec3_sub(on_plane, camera->eye)",
      "normalise", NULL},
-    {1, "1.4", "the normal part subtracted once, not twice", "lib/mirror.h", "-2.0 * vec3_dot(d, n)",
-     "-vec3_dot(d, n)", "should be 2", NULL},
+    {1, "1.4", "the normal part subtracted once, not twice", "lib/mirror.h",
+     "-2.0 * vec3_dot(d, n)", "-vec3_dot(d, n)", "should be 2", NULL},
     {1, "1.5", "Snell's ratio inverted", "lib/snell.c",
      "vec3_scale(d, eta), vec3_scale(n, eta * cos_i - cos_t)",
      "vec3_scale(d, 1.0 / eta), vec3_scale(n, cos_i / eta - cos_t)", "Snell", NULL},
@@ -58,7 +58,8 @@ static const Mistake mistakes[] = {
      "if (snell_cos_transmitted(cos_i, n_i, n_t) < 0.0)", "the transmitted angle", NULL},
     {2, "2.1", "cos(theta) = u instead of sqrt(1 - u)", "lib/hemisphere.c",
      "double sin_theta = sqrt(u1);\n    double cos_theta = sqrt(1.0 - u1);",
-     "double sin_theta = sqrt(1.0 - u1 * u1);\n    double cos_theta = u1;", "nearest the horizon", NULL},
+     "double sin_theta = sqrt(1.0 - u1 * u1);\n    double cos_theta = u1;",
+     "nearest the horizon", NULL},
     {2, "2.1", "phi over half a turn", "lib/hemisphere.c", "double phi = 2.0 * PI * u2;",
      "double phi = PI * u2;", "sector", NULL},
     {2, "2.2", "the pdf without 1 / pi", "lib/hemisphere.c", "w_local.z / PI : 0.0",
@@ -82,10 +83,11 @@ static const Mistake mistakes[] = {
      "double target = scene->light_cumulative[(int)(u_select * scene->light_count)] - 1e-12;",
      "column", NULL},
     {3, "3.2", "the pdf without the cosine at the lamp", "lib/area_light.c",
-     "(scene->light_area * cos_beta)", "scene->light_area", "cosine at the lamp is missing", NULL},
+     "(scene->light_area * cos_beta)", "scene->light_area", "cosine at the lamp is missing",
+     NULL},
     {3, "3.3", "eq. 21 without cos(beta)", "lib/area_light.c",
-     "scene->light_area * cos_alpha * cos_beta / distance2", "scene->light_area * cos_alpha / distance2",
-     "too bright", NULL},
+     "scene->light_area * cos_alpha * cos_beta / distance2",
+     "scene->light_area * cos_alpha / distance2", "too bright", NULL},
     {3, "3.3", "the distance not squared", "lib/area_light.c", "cos_beta / distance2);",
      "cos_beta / sqrt(distance2));", "too bright", NULL},
     {3, "3.3", "a right shadow ray over the sampler of 3.1 gone wrong", "lib/area_light.c",
@@ -95,38 +97,43 @@ static const Mistake mistakes[] = {
     {3, "3.4", "eq. 21's sum not divided by M", "lib/area_light.c",
      "return vec3_scale(sum, 1.0 / shadow_rays);", "return sum;",
      "the sum of M terms is not divided by M: with M = 2, 4 and 30 the light is 2, 4 and 30 "
-     "times too bright", NULL},
+     "times too bright",
+     NULL},
     {3, "3.4", "1 / M in whole numbers", "lib/area_light.c", "1.0 / shadow_rays",
      "1 / shadow_rays", "whole numbers", NULL},
     {3, "3.4", "a right eq. 21 over the shadow ray of 3.3 gone wrong", "lib/area_light.c",
-     "scene->light_area * cos_alpha * cos_beta / distance2", "scene->light_area * cos_alpha / distance2",
+     "scene->light_area * cos_alpha * cos_beta / distance2",
+     "scene->light_area * cos_alpha / distance2",
      "exercise 3.3 (area_light_shadow_ray), which area_light_direct depends on, is wrong first",
      NULL},
     {4, "4.1", "R_s and R_p swapped", "lib/fresnel.c",
-     "r.s = squared_ratio(n_i * cos_i - n_t * cos_t", "r.p = squared_ratio(n_i * cos_i - n_t * cos_t",
-     "R_p", NULL},
+     "r.s = squared_ratio(n_i * cos_i - n_t * cos_t",
+     "r.p = squared_ratio(n_i * cos_i - n_t * cos_t", "R_p", NULL},
     {4, "4.1", "no total internal reflection", "lib/fresnel.c",
      "if (cos_t < 0.0) {\n        r.s = r.p = 1.0;\n        return r;\n    }", "",
      "total internal reflection", NULL},
     {4, "4.2", "R_s + R_p, not their mean", "lib/fresnel.c", "return 0.5 * (r.s + r.p);",
      "return r.s + r.p;", "is R_s + R_p", NULL},
     {4, "4.1", "R_s and R_p rounded through a float", "lib/fresnel.c",
-     "    double r = numerator / denominator;", "    float r = (float)(numerator / denominator);",
-     "R_s = 0.040000003", "R_s = 0.0400 and R_p = 0.0400,"},
+     "    double r = numerator / denominator;",
+     "    float r = (float)(numerator / denominator);", "R_s = 0.040000003",
+     "R_s = 0.0400 and R_p = 0.0400,"},
     {4, "4.2", "a right mean of R_s and R_p rounded through a float", "lib/fresnel.c",
-     "    double r = numerator / denominator;", "    float r = (float)(numerator / denominator);",
+     "    double r = numerator / denominator;",
+     "    float r = (float)(numerator / denominator);",
      "exercise 4.1 (fresnel_polarised), which fresnel_reflectance depends on, is wrong first",
      "R = 0.0400"},
     {5, "5.1", "the report's A, without \"1 -\"", "lib/oren_nayar.c",
-     "return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);", "return 0.5 * roughness_ratio(sigma, 0.33);",
-     "misprint", NULL},
+     "return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);",
+     "return 0.5 * roughness_ratio(sigma, 0.33);", "misprint", NULL},
     {5, "5.1", "sigma taken as degrees", "lib/oren_nayar.c",
      "return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);",
      "return 1.0 - 0.5 * roughness_ratio(sigma * PI / 180.0, 0.33);", "radians", NULL},
     {5, "5.3", "sin(beta) for tan(beta)", "lib/oren_nayar.c",
      "fmax(0.0, projected_dot) / cos_beta;", "fmax(0.0, projected_dot);", "sin(beta)", NULL},
     {5, "5.3", "a right factor over the report's A (5.1)", "lib/oren_nayar.c",
-     "return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);", "return 0.5 * roughness_ratio(sigma, 0.33);",
+     "return 1.0 - 0.5 * roughness_ratio(sigma, 0.33);",
+     "return 0.5 * roughness_ratio(sigma, 0.33);",
      "exercise 5.1 (oren_nayar_a), which oren_nayar_factor depends on, is wrong first",
      "where eq. 13 gives"},
     {6, "6.1", "survivors not divided by the survival probability", "lib/roulette.c",
@@ -139,12 +146,14 @@ static const Mistake mistakes[] = {
     {6, "6.1", "right roulette over the mean for the maximum (6.2)", "lib/roulette.c",
      "fmin(1.0, vec3_max_component(throughput))",
      "fmin(1.0, (throughput.x + throughput.y + throughput.z) / 3.0)",
-     "exercise 6.2 (roulette_survival_from_throughput), which roulette_continues depends on, is "
-     "wrong first", "of the paths go on"},
+     "exercise 6.2 (roulette_survival_from_throughput), which roulette_continues depends on, "
+     "is "
+     "wrong first",
+     "of the paths go on"},
     {7, "7.1", "the balance heuristic", "lib/mis.c", "return 1.0 / (1.0 + ratio * ratio);",
      "return 1.0 / (1.0 + ratio);", "balance heuristic", NULL},
-    {7, "7.1", "weights that do not sum to one", "lib/mis.c", "return 1.0 / (1.0 + ratio * ratio);",
-     "return 1.0 / (1.0 + g * g);", "sum to", NULL},
+    {7, "7.1", "weights that do not sum to one", "lib/mis.c",
+     "return 1.0 / (1.0 + ratio * ratio);", "return 1.0 / (1.0 + g * g);", "sum to", NULL},
     {7, "7.2", "the mirror's reflectance left out", "lib/mirror_light.c",
      "vec3_mul(diffuse_brdf(m, n, wi, wo), mirror->reflectance)", "diffuse_brdf(m, n, wi, wo)",
      "reflectance", NULL},
@@ -254,7 +263,8 @@ static void test_planted_mistakes(void **state)
         int status = grade(m->chapter, tree, m->id, &out);
         char line[2048];
         const char *verdict = verdict_of(out, m->id, line, sizeof line);
-        int ok = status != 0 && verdict && strstr(verdict, "FAIL") && strstr(verdict, m->symptom) &&
+        int ok = status != 0 && verdict && strstr(verdict, "FAIL") &&
+                 strstr(verdict, m->symptom) &&
                  !(m->misleading && strstr(verdict, m->misleading));
         printf("%2d. %-3s %-52s %s\n    %s\n", i + 1, m->id, m->mistake,
                ok ? "caught" : "NOT CAUGHT", verdict ? verdict : out);
@@ -265,8 +275,8 @@ static void test_planted_mistakes(void **state)
             assert_int_equal(system(command), 0);
         }
     }
-    printf("%d of %d planted mistakes caught by their exercise, each naming its symptom\n", caught,
-           MISTAKES);
+    printf("%d of %d planted mistakes caught by their exercise, each naming its symptom\n",
+           caught, MISTAKES);
     assert_int_equal(caught, MISTAKES);
 }
 

@@ -22,7 +22,10 @@
 
 #include "experiment.h"
 
-enum { SIDE = 8, SPP = 4 };
+enum {
+    SIDE = 8,
+    SPP = 4
+};
 static char out_dir[] = "/tmp/test_experiment_XXXXXX";
 
 /* The estimator's settings: it raises SIGINT at its call number `raise_at` (one thread,
@@ -61,17 +64,18 @@ static Outcome run_panel(void (*when)(void), long raise_at)
         close(pipe_ends[0]);
         Scene scene;
         scene_init(&scene);
-        scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
+        scene.camera =
+            camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
         Options options = {.out = out_dir, .quiet = 1, .size = SIDE, .threads = 1};
-        RenderSettings settings = experiment_render_settings(&options, &scene, SPP,
-                                                             PIXEL_RANDOM, "panel");
+        RenderSettings settings =
+            experiment_render_settings(&options, &scene, SPP, PIXEL_RANDOM, "panel");
         render_install_interrupt();
         when();
         long calls = 0;
         Interrupting estimator = {raise_at, &calls};
         RenderResult result;
-        experiment_runs(&options, &scene, &settings, interrupting, &estimator, "panel",
-                        "test", NULL, 1, &result);
+        experiment_runs(&options, &scene, &settings, interrupting, &estimator, "panel", "test",
+                        NULL, 1, &result);
         _exit(0);
     }
     close(pipe_ends[1]);

@@ -72,7 +72,8 @@ static Decoded figure_of(int count, int width, int height, const char *const *ca
             for (int col = 0; col < width; col++)
                 image_set(&panels[i], col, row, panel_radiance(i, col, row, width, height));
     }
-    assert_int_equal(figure_write_png(figure_path, &font, panels, captions, count, exposure), 0);
+    assert_int_equal(figure_write_png(figure_path, &font, panels, captions, count, exposure),
+                     0);
     for (int i = 0; i < count; i++)
         image_free(&panels[i]);
     Decoded figure;
@@ -112,10 +113,7 @@ static int nominal_size(int width)
     return size < 12 ? 12 : size > 24 ? 24 : size;
 }
 
-static int pitch_at(int size)
-{
-    return (int)ceil(font_line_height(&font, size));
-}
+static int pitch_at(int size) { return (int)ceil(font_line_height(&font, size)); }
 
 /* The documented size: n W + (n - 1) (s / 2) wide, H + L p + 2 (s / 2) high, with
  * s = W / 50 rounded and clamped to [12, 24]; here for 1, 2 and 3 panels at sizes either
@@ -126,8 +124,8 @@ static void test_dimensions(void **state)
 {
     const struct {
         int width, size;
-    } sizes[] = {{64, 12}, {200, 12}, {624, 12}, {625, 13}, {800, 16}, {1174, 23},
-                 {1175, 24}, {1600, 24}};
+    } sizes[] = {{64, 12},  {200, 12},  {624, 12},  {625, 13},
+                 {800, 16}, {1174, 23}, {1175, 24}, {1600, 24}};
     const char *one_line[] = {"a", "b", "c"}, *two_lines[] = {"a\nb", "c", "d"};
     for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
         assert_int_equal(nominal_size(sizes[s].width), sizes[s].size);
@@ -199,7 +197,7 @@ static void test_captions_are_drawn_in_their_band(void **state)
             assert_true(ink.count > 150); /* some 30 letters */
             assert_true(ink.left >= left + margin - 1 && ink.right <= left + 200 - margin);
             assert_close(0.5 * (ink.left + ink.right), left + 100, 3.0);
-            assert_true(ink.top >= 100 + margin);   /* two lines below the margin */
+            assert_true(ink.top >= 100 + margin); /* two lines below the margin */
             assert_true(ink.bottom - ink.top > pitch_at(12));
         } else {
             assert_int_equal(ink.count, 0); /* an empty caption draws nothing */
@@ -309,7 +307,8 @@ static void test_long_word_shrinks_text(void **state)
  * character is never split. */
 static void test_tiny_panels_break_words(void **state)
 {
-    const char *captions[] = {"unbreakable_word", "tab\there \x01\x7f\xff \xce\xb1\xce\xb1\xce\xb1", NULL};
+    const char *captions[] = {"unbreakable_word",
+                              "tab\there \x01\x7f\xff \xce\xb1\xce\xb1\xce\xb1", NULL};
     Decoded figure = figure_of(3, 20, 20, captions, 1.0);
     assert_int_equal(figure.width, 3 * 20 + 2 * 6);
     assert_true(figure.height - 20 >= 4 * pitch_at(8) + 12); /* 16 letters, <= 3 a line */

@@ -139,9 +139,15 @@ static void test_undrawable_characters_become_question_marks(void **state)
 {
     const struct {
         const char *text, *drawn_as;
-    } odd[] = {{"\x01", "?"},         {"\n", "?"},           {"\x80", "?"},
-               {"\xc3", "?"},         {"\xc0\xbf", "??"},    {"\xed\xa0\x80", "???"},
-               {"\xf4\x90\x80\x80", "????"}, {"\xee\x80\x80", "?"}, {"a\tb", "a?b"}};
+    } odd[] = {{"\x01", "?"},
+               {"\n", "?"},
+               {"\x80", "?"},
+               {"\xc3", "?"},
+               {"\xc0\xbf", "??"},
+               {"\xed\xa0\x80", "???"},
+               {"\xf4\x90\x80\x80", "????"},
+               {"\xee\x80\x80", "?"},
+               {"a\tb", "a?b"}};
     for (size_t i = 0; i < sizeof odd / sizeof odd[0]; i++) {
         Image image = black_on_white(odd[i].text), expected = black_on_white(odd[i].drawn_as);
         if (!images_equal(&image, &expected))

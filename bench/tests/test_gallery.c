@@ -93,7 +93,8 @@ static void write_png(const char *name, int width, int height, int pfm_too)
 static void empty_fixture(void)
 {
     const char *build = getenv("CHAPTER_DIR");
-    snprintf(fixture, sizeof fixture, "%s/test_gallery.%d", build ? build : "build", (int)getpid());
+    snprintf(fixture, sizeof fixture, "%s/test_gallery.%d", build ? build : "build",
+             (int)getpid());
     mkdir(fixture, 0777);
     DIR *folder = opendir(fixture);
     assert_non_null(folder);
@@ -108,8 +109,8 @@ static void empty_fixture(void)
 }
 
 /* Chapter 1: a figure, a panel (PNG and PFM), a table, a settings file; chapter 2: a
- * figure, a plot, a CRLF table, an exercise's picture and verdicts; chapter 3: nothing; chapter 4: a figure whose name needs
- * escaping. A run record (QUICK) and a diff for chapter 2. */
+ * figure, a plot, a CRLF table, an exercise's picture and verdicts; chapter 3: nothing; chapter
+ * 4: a figure whose name needs escaping. A run record (QUICK) and a diff for chapter 2. */
 static void make_fixture(void)
 {
     empty_fixture();
@@ -206,7 +207,9 @@ static int check_links(const char *page, const char *const *files, int file_coun
 {
     int links = 0;
     for (const char *at = page; (at = strpbrk(at, "sh")) != NULL; at++) {
-        size_t prefix = strncmp(at, "src=\"", 5) == 0 ? 5 : strncmp(at, "href=\"", 6) == 0 ? 6 : 0;
+        size_t prefix = strncmp(at, "src=\"", 5) == 0    ? 5
+                        : strncmp(at, "href=\"", 6) == 0 ? 6
+                                                         : 0;
         if (!prefix || (at > page && at[-1] != ' '))
             continue;
         const char *value = at + prefix, *end = strchr(value, '"');
@@ -237,10 +240,12 @@ static int check_links(const char *page, const char *const *files, int file_coun
 static void test_links_resolve(void **state)
 {
     char *page = make_page();
-    const char *const files[] = {"ch01_figure1.png", "ch01_panel.png", "ch01_panel.pfm",
-                                 "ch01_table.csv", "ch01_settings.txt", "ch02_figure2.png",
-                                 "ch02_plot.png", "ch02_data.csv", "ch04_a b&c#d.png",
-                                 "ch02_exercise-2.1-warp.png", "ch02_exercises.txt"};
+    const char *const files[] = {"ch01_figure1.png",  "ch01_panel.png",
+                                 "ch01_panel.pfm",    "ch01_table.csv",
+                                 "ch01_settings.txt", "ch02_figure2.png",
+                                 "ch02_plot.png",     "ch02_data.csv",
+                                 "ch04_a b&c#d.png",  "ch02_exercise-2.1-warp.png",
+                                 "ch02_exercises.txt"};
     const int count = (int)(sizeof files / sizeof files[0]);
     int reached[sizeof files / sizeof files[0]] = {0};
     int links = check_links(page, files, count, reached);
@@ -265,7 +270,8 @@ static int table_cells(const char *page, const char *csv, int columns, char cell
     assert_non_null(table);
     assert_true(end > table);
     int rows = 0;
-    for (const char *row = strstr(table, "<tr>"); row && row < end; row = strstr(row + 1, "<tr>")) {
+    for (const char *row = strstr(table, "<tr>"); row && row < end;
+         row = strstr(row + 1, "<tr>")) {
         assert_true(rows < max_rows);
         const char *row_end = strstr(row, "</tr>");
         int column = 0;
@@ -337,7 +343,8 @@ static void test_missing_chapter_and_figure_are_listed(void **state)
         previous = start;
         assert_int_equal(in_range(start, end, "Not rendered yet"), n == 3);
         /* Chapter 2 has files but not its Figure 8: that one is said to be missing. */
-        assert_int_equal(in_range(start, end, "Not rendered:</strong> ch02_figure8.png"), n == 2);
+        assert_int_equal(in_range(start, end, "Not rendered:</strong> ch02_figure8.png"),
+                         n == 2);
         assert_int_equal(in_range(start, end, "Not rendered:</strong> ch02_figure2.png"), 0);
         assert_true(in_range(start, end, CHAPTERS[n - 1].teaches));
     }
@@ -383,7 +390,8 @@ static void test_layout(void **state)
 static void test_text_is_escaped_and_no_script(void **state)
 {
     char *page = make_page();
-    assert_non_null(strstr(page, "--size 200 &lt;script&gt;alert(1)&lt;/script&gt; &amp; more"));
+    assert_non_null(
+        strstr(page, "--size 200 &lt;script&gt;alert(1)&lt;/script&gt; &amp; more"));
     for (char *c = page; *c; c++)
         *c = (char)(*c >= 'A' && *c <= 'Z' ? *c - 'A' + 'a' : *c);
     assert_null(strstr(page, "<script"));
@@ -425,17 +433,23 @@ static void test_figures_link_to_the_lab(void **state)
     memcpy(chapters, CHAPTERS, sizeof chapters);
     chapters[0].lab = "ch01_figure1 chapter=1&M=2";
     chapters[1].lab = "ch02_figure8 chapter=2&spp=9  ch02_plot chapter=2&b.spp=4";
-    GalleryPage page = {"Test gallery", fixture, fixture, chapters, CHAPTER_COUNT, 0, "../lab/index.html"};
+    GalleryPage page = {"Test gallery",     fixture, fixture, chapters, CHAPTER_COUNT, 0,
+                        "../lab/index.html"};
     char *text = written(&page);
-    const char *one = strstr(text, "<img src=\"ch01_figure1.png\""), *plot = strstr(text, "<img src=\"ch02_plot.png\"");
+    const char *one = strstr(text, "<img src=\"ch01_figure1.png\""),
+               *plot = strstr(text, "<img src=\"ch02_plot.png\"");
     const char *figure = strstr(text, "<img src=\"ch02_figure2.png\"");
     assert_non_null(one);
     assert_non_null(plot);
     assert_non_null(figure);
-    const char *link = "<a class=\"lab\" href=\"../lab/index.html#chapter=1&amp;M=2&amp;size=6\">live in the lab</a>";
+    const char *link =
+        "<a class=\"lab\" href=\"../lab/index.html#chapter=1&amp;M=2&amp;size=6\">live in the "
+        "lab</a>";
     assert_true(in_range(one, strstr(one, "</figure>"), link));
-    assert_true(in_range(plot, strstr(plot, "</figure>"),
-                         "<a class=\"lab\" href=\"../lab/index.html#chapter=2&amp;b.spp=4\">live in the lab</a>"));
+    assert_true(
+        in_range(plot, strstr(plot, "</figure>"),
+                 "<a class=\"lab\" href=\"../lab/index.html#chapter=2&amp;b.spp=4\">live in "
+                 "the lab</a>"));
     assert_false(in_range(figure, strstr(figure, "</figure>"), "live in the lab"));
     int links = 0;
     for (const char *at = text; (at = strstr(at, "live in the lab")) != NULL; at++)

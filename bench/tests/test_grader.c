@@ -25,8 +25,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#define LIMIT 1      /* TIME_LIMIT, seconds */
-#define SLACK 5.0    /* seconds a verdict may take beyond it */
+#define LIMIT 1   /* TIME_LIMIT, seconds */
+#define SLACK 5.0 /* seconds a verdict may take beyond it */
 
 #define GARBLED "FAIL: your program's answers arrived garbled after 0 (frame 0 "
 
@@ -40,7 +40,8 @@ static const Case cases[] = {
     {"", "blank", "FAIL: misses a ray"},
     {"exit", "blank", "FAIL: your program ended with exit status 0 before answering"},
     {"fork-then-exit", "blank", "FAIL: your program ended with exit status 0 before answering"},
-    {"constructor-exit", "blank", "FAIL: your program ended with exit status 0 before answering"},
+    {"constructor-exit", "blank",
+     "FAIL: your program ended with exit status 0 before answering"},
     {"atexit", "blank", "FAIL: your program ended with exit status 0"},
     {"exec-true", "blank", "FAIL: your program ended with exit status 0"},
     {"segv-handler-exit", "blank", "FAIL: your program ended with exit status 0"},
@@ -131,20 +132,22 @@ static int check(const char *student, const char *behaviour, const char *only,
                  const char *pipe_to, char **out, double *seconds)
 {
     char command[8192], q_student[2200], q_behaviour[200], q_only[100];
-    snprintf(command, sizeof command,
-             "env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL GRADER_TEST_MARK=%s GRADER_BEHAVIOUR=%s "
-             "TIME_LIMIT=%d ASAN_OPTIONS=handle_segv=0:handle_abort=0 make --no-print-directory "
-             "-s BUILD=%s check-exercise-chapter1 STUDENT=%s ONLY=%s 2>&1 %s", mark,
-             quoted(behaviour, q_behaviour, sizeof q_behaviour), LIMIT, build,
-             quoted(student, q_student, sizeof q_student), quoted(only, q_only, sizeof q_only),
-             pipe_to);
+    snprintf(
+        command, sizeof command,
+        "env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL GRADER_TEST_MARK=%s GRADER_BEHAVIOUR=%s "
+        "TIME_LIMIT=%d ASAN_OPTIONS=handle_segv=0:handle_abort=0 make --no-print-directory "
+        "-s BUILD=%s check-exercise-chapter1 STUDENT=%s ONLY=%s 2>&1 %s",
+        mark, quoted(behaviour, q_behaviour, sizeof q_behaviour), LIMIT, build,
+        quoted(student, q_student, sizeof q_student), quoted(only, q_only, sizeof q_only),
+        pipe_to);
     double start = now();
     int status = run_command(command, out);
     *seconds = now() - start;
     return status;
 }
 
-/* Processes alive with this test's mark in their environment; each is killed when `kill_them`. */
+/* Processes alive with this test's mark in their environment; each is killed when `kill_them`.
+ */
 static int marked(int kill_them)
 {
     char wanted[128];
@@ -229,8 +232,8 @@ static int graded_as_expected(const char *label, const char *student, const char
     verdict_of(file, "1.1", file_line, sizeof file_line);
     int passes = strcmp(expected, "pass") == 0;
     int ok = strstr(line, expected) == line && strcmp(line, file_line) == 0 &&
-             (passes ? status == 0 : status != 0) && file &&
-             strstr(file, "chapter 1: ") && seconds <= LIMIT + SLACK && left == 0;
+             (passes ? status == 0 : status != 0) && file && strstr(file, "chapter 1: ") &&
+             seconds <= LIMIT + SLACK && left == 0;
     printf("%-4s %-28s %5.1f s  %s  %s\n", ok ? "ok" : "BAD", label, seconds,
            left ? "PROCESSES LEFT" : "none left", line);
     if (!ok)
@@ -243,13 +246,17 @@ static int graded_as_expected(const char *label, const char *student, const char
 static void make_tree(const char *tree, const char *source)
 {
     shell("rm -rf '%s' && cp -R '%s' '%s' && "
-          "cp bench/tests/student_behaviours.c '%s/lib/zz_behaviours.c'", tree, source, tree, tree);
+          "cp bench/tests/student_behaviours.c '%s/lib/zz_behaviours.c'",
+          tree, source, tree, tree);
     shell("sed -i 's/^double sphere_intersect(/double original_sphere_intersect(/' "
           "'%s/lib/sphere.c' && "
           "printf '%%s\\n' 'double student_behaviour(double answer);' "
-          "'double sphere_intersect(const Sphere *sphere, Ray ray, double tmin, double tmax)' '{' "
-          "'    return student_behaviour(original_sphere_intersect(sphere, ray, tmin, tmax));' '}' "
-          ">> '%s/lib/sphere.c'", tree, tree);
+          "'double sphere_intersect(const Sphere *sphere, Ray ray, double tmin, double tmax)' "
+          "'{' "
+          "'    return student_behaviour(original_sphere_intersect(sphere, ray, tmin, tmax));' "
+          "'}' "
+          ">> '%s/lib/sphere.c'",
+          tree, tree);
     char *out;
     double seconds;
     check(tree, "", "1.1", "", &out, &seconds); /* builds it */
@@ -259,12 +266,14 @@ static void make_tree(const char *tree, const char *source)
 static int setup(void **state)
 {
     (void)state;
-    snprintf(build, sizeof build, "%s", getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build");
+    snprintf(build, sizeof build, "%s",
+             getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build");
     snprintf(root, sizeof root, "%s/exercise/grader-test", build);
     snprintf(mark, sizeof mark, "%ld-%ld", (long)getpid(), (long)time(NULL));
-    shell("rm -rf '%s' && mkdir -p '%s' && sh bench/exercise/exercise.sh 1 '%s/source/chapter1' "
-          "'%s/chapter1/bench/exercise/grade' '%s/blank-source' > /dev/null", root, root, build,
-          build, root);
+    shell(
+        "rm -rf '%s' && mkdir -p '%s' && sh bench/exercise/exercise.sh 1 '%s/source/chapter1' "
+        "'%s/chapter1/bench/exercise/grade' '%s/blank-source' > /dev/null",
+        root, root, build, build, root);
     char tree[1300], source[1300];
     snprintf(tree, sizeof tree, "%s/blank", root);
     snprintf(source, sizeof source, "%s/blank-source", root);
@@ -311,8 +320,8 @@ static void test_paths(void **state)
     }
     snprintf(tree, sizeof tree, "%s/dash", root);
     snprintf(link, sizeof link, "-grader-test-%ld", (long)getpid());
-    shell("rm -rf '%s' && cp -Rp '%s' '%s' && ln -s \"$PWD\"/'%s' ./%s", tree, blank, tree, tree,
-          link);
+    shell("rm -rf '%s' && cp -Rp '%s' '%s' && ln -s \"$PWD\"/'%s' ./%s", tree, blank, tree,
+          tree, link);
     int dash = graded_as_expected(link, link, tree, "", "FAIL: misses a ray");
     shell("rm -f ./%s", link);
     assert_int_equal(good + dash, 3);
@@ -328,8 +337,8 @@ static void test_reader_that_stops(void **state)
     snprintf(path, sizeof path, "%s/check/verdicts.txt", tree);
     check(tree, "", "1.1 1.4", "| head -n 1", &out, &seconds);
     const char *file = read_text(path);
-    printf("| head -1: printed \"%.*s\"; the verdicts file has %s\n", (int)strcspn(out, "\n"), out,
-           file ? verdict_of(file, "1.4", line, sizeof line) : "(no file)");
+    printf("| head -1: printed \"%.*s\"; the verdicts file has %s\n", (int)strcspn(out, "\n"),
+           out, file ? verdict_of(file, "1.4", line, sizeof line) : "(no file)");
     assert_non_null(strstr(out, "chapter 1: checking"));
     assert_null(strchr(out, '\n') ? strchr(strchr(out, '\n') + 1, '\n') : NULL);
     assert_non_null(file);

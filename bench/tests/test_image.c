@@ -1,5 +1,5 @@
-/* test_image.c (bench, chapter 1): the framebuffer, its tone map and its PNG and PFM files (image.h,
- * chapter 1).
+/* test_image.c (bench, chapter 1): the framebuffer, its tone map and its PNG and PFM files
+ * (image.h, chapter 1).
  *
  * The tone map is checked at its fixed points and for rounding to the nearest code over
  * the whole range; PFM must round-trip bit for bit, read either byte order, and reject
@@ -107,16 +107,26 @@ static void test_tonemap_values(void **state)
     } cases[] = {
         /* Black is 0, white 255, and linear 0.5 is sRGB 0.735, code 188 (not 128: the
          * curve spends more codes on the dark end, where the eye discerns more). */
-        {0.0, 1.0, 0}, {1.0, 1.0, 255}, {0.5, 1.0, 188},
+        {0.0, 1.0, 0},
+        {1.0, 1.0, 255},
+        {0.5, 1.0, 188},
         /* The linear segment near black: 12.92 * 0.002 * 255 = 6.6, code 7. */
         {0.002, 1.0, 7},
         /* Exposure multiplies the radiance before anything else. */
-        {0.25, 2.0, 188}, {1.0, 0.5, 188}, {0.5, 4.0, 255}, {100.0, 0.0, 0},
+        {0.25, 2.0, 188},
+        {1.0, 0.5, 188},
+        {0.5, 4.0, 255},
+        {100.0, 0.0, 0},
         /* Out of range values clamp. */
-        {1.5, 1.0, 255}, {1e30, 1.0, 255}, {INFINITY, 1.0, 255}, {-0.5, 1.0, 0},
+        {1.5, 1.0, 255},
+        {1e30, 1.0, 255},
+        {INFINITY, 1.0, 255},
+        {-0.5, 1.0, 0},
         {-INFINITY, 1.0, 0},
         /* NaN (a broken sample, or inf * 0) shows as black, not as noise. */
-        {NAN, 1.0, 0}, {0.5, NAN, 0}, {INFINITY, 0.0, 0},
+        {NAN, 1.0, 0},
+        {0.5, NAN, 0},
+        {INFINITY, 0.0, 0},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         int code = image_tonemap(cases[i].value, cases[i].exposure);
@@ -228,7 +238,7 @@ static void test_pfm_round_trip_is_bit_exact(void **state)
         assert_round_trip(&image);
         image_free(&image);
     }
-    const float extremes[] = {1e-30f, 1e30f, FLT_MAX, FLT_MIN, 1e-40f /* denormal */,
+    const float extremes[] = {1e-30f, 1e30f, FLT_MAX, FLT_MIN,    1e-40f /* denormal */,
                               -1.5f,  -0.0f, 0.1f,    1.0f / 3.0f};
     Image image = image_new(3, 3);
     memcpy(image.pixels, extremes, sizeof extremes);
@@ -249,8 +259,8 @@ static void test_pfm_layout(void **state)
     assert_memory_equal(data, header, strlen(header));
     assert_int_equal(size, (long)strlen(header) + 3 * 5 * 12);
     const unsigned char *first = data + strlen(header);
-    uint32_t bits = (uint32_t)first[0] | (uint32_t)first[1] << 8 |
-                    (uint32_t)first[2] << 16 | (uint32_t)first[3] << 24;
+    uint32_t bits = (uint32_t)first[0] | (uint32_t)first[1] << 8 | (uint32_t)first[2] << 16 |
+                    (uint32_t)first[3] << 24;
     float value;
     memcpy(&value, &bits, sizeof value);
     assert_true(value == (float)image_get(&image, 0, 4).x); /* bottom-left pixel, red */
@@ -294,23 +304,23 @@ static void test_pfm_rejects_broken_files(void **state)
         long data_bytes; /* zero bytes of pixel data after the header */
         const char *words;
     } cases[] = {
-        {"P6\n1 1\n255\n", 3, "PF"},            /* a PPM, not a PFM */
-        {"Pf\n1 1\n-1.0\n", 4, "grey-scale"},   /* one channel */
-        {"", 0, "PF"},                          /* empty file */
+        {"P6\n1 1\n255\n", 3, "PF"},          /* a PPM, not a PFM */
+        {"Pf\n1 1\n-1.0\n", 4, "grey-scale"}, /* one channel */
+        {"", 0, "PF"},                        /* empty file */
         {"PF\n-3 5\n-1.0\n", 180, "width"},
         {"PF\n0 5\n-1.0\n", 0, "width"},
         {"PF\n3 0\n-1.0\n", 0, "height"},
         {"PF\n3 x\n-1.0\n", 180, "height"},
-        {"PF\n32769 1\n-1.0\n", 0, "width"},    /* one more than the cap */
+        {"PF\n32769 1\n-1.0\n", 0, "width"}, /* one more than the cap */
         {"PF\n1 100000\n-1.0\n", 0, "height"},
         {"PF\n99999999999999999999 1\n-1.0\n", 0, "width"},
         {"PF\n1 1\n0.0\n", 12, "scale"},
         {"PF\n1 1\nnan\n", 12, "scale"},
         {"PF\n1 1\n-inf\n", 12, "scale"},
-        {"PF\n1 1\n", 0, "scale"},              /* the header stops short */
-        {"PF\n2 1\n-1.0\n", 23, "24 bytes"},    /* truncated by one byte */
-        {"PF\n2 1\n-1.0\n", 25, "24 bytes"},    /* one byte too many */
-        {"PF\n1 1\n-1.0\n", 0, "12 bytes"},     /* no data at all */
+        {"PF\n1 1\n", 0, "scale"},           /* the header stops short */
+        {"PF\n2 1\n-1.0\n", 23, "24 bytes"}, /* truncated by one byte */
+        {"PF\n2 1\n-1.0\n", 25, "24 bytes"}, /* one byte too many */
+        {"PF\n1 1\n-1.0\n", 0, "12 bytes"},  /* no data at all */
     };
     const char *path = in_scratch("broken.pfm");
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -377,7 +387,8 @@ static void test_png_is_the_tone_mapped_image(void **state)
     assert_true(size > 33);
     assert_memory_equal(data, signature, 8);
     assert_memory_equal(data + 8, ihdr, 8);
-    const unsigned char size_and_format[10] = {0, 0, 0, 5, 0, 0, 0, 3, 8 /* bits */, 2 /* RGB */};
+    const unsigned char size_and_format[10] = {0, 0, 0, 5, 0, 0, 0, 3, 8 /* bits */,
+                                               2 /* RGB */};
     assert_memory_equal(data + 16, size_and_format, 10);
     free(data);
 
@@ -393,8 +404,7 @@ static void test_png_is_the_tone_mapped_image(void **state)
 
 /* Both writers refuse `image` at `path` with `expected` errno, and afterwards the
  * scratch directory holds `entries` entries: no file and no temporary file appeared. */
-static void assert_writes_fail(const Image *image, const char *path, int expected,
-                               int entries)
+static void assert_writes_fail(const Image *image, const char *path, int expected, int entries)
 {
     errno = 0;
     assert_int_equal(image_write_png(image, path, 1.0), -1);
@@ -444,7 +454,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_pfm_round_trip_is_bit_exact, make_scratch,
                                         remove_scratch),
         cmocka_unit_test_setup_teardown(test_pfm_layout, make_scratch, remove_scratch),
-        cmocka_unit_test_setup_teardown(test_pfm_reads_big_endian, make_scratch, remove_scratch),
+        cmocka_unit_test_setup_teardown(test_pfm_reads_big_endian, make_scratch,
+                                        remove_scratch),
         cmocka_unit_test_setup_teardown(test_pfm_rejects_broken_files, make_scratch,
                                         remove_scratch),
         cmocka_unit_test_setup_teardown(test_pfm_rejects_non_finite_pixels, make_scratch,
@@ -456,7 +467,8 @@ int main(void)
                                         remove_scratch),
         cmocka_unit_test_setup_teardown(test_failed_rename_leaves_nothing, make_scratch,
                                         remove_scratch),
-        cmocka_unit_test_setup_teardown(test_write_without_pixels, make_scratch, remove_scratch),
+        cmocka_unit_test_setup_teardown(test_write_without_pixels, make_scratch,
+                                        remove_scratch),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -27,8 +27,8 @@
 #include <unistd.h>
 
 static const char *const PROGRAMS[] = {
-    "ch01_whitted",          "ch02_monte_carlo", "ch03_shadow_rays", "ch04_fresnel",
-    "ch05_oren_nayar",       "ch06_russian_roulette", "ch07_final",  "ch08_photon_map",
+    "ch01_whitted",    "ch02_monte_carlo",      "ch03_shadow_rays", "ch04_fresnel",
+    "ch05_oren_nayar", "ch06_russian_roulette", "ch07_final",       "ch08_photon_map",
 };
 
 static char out_dir[] = "/tmp/test_interrupt_XXXXXX";
@@ -93,10 +93,7 @@ static void empty_folder(const char *folder)
 
 /* Panels rendered for as long as another took (chapter 8's photon map beside the path
  * tracer, at equal time): their pass count, and so their bytes, vary from run to run. */
-static int time_budgeted(const char *name)
-{
-    return strcmp(name, "ch08_photon_map.pfm") == 0;
-}
+static int time_budgeted(const char *name) { return strcmp(name, "ch08_photon_map.pfm") == 0; }
 
 /* The panel the program says it saved when interrupted, and after how many samples per
  * pixel ("interrupted: saved NAME after S samples per pixel"); 0 if it says none. */
@@ -124,7 +121,8 @@ static int saved_when_interrupted(const char *log, char *name, size_t size, doub
  * interrupted, which must have at least one sample in every pixel, and those rendered
  * in a time budget. Returns the number of
  * PFMs. */
-static int check_folder(const char *folder, const char *whole, const char *log, const char *what)
+static int check_folder(const char *folder, const char *whole, const char *log,
+                        const char *what)
 {
     char partial[300] = "";
     double spp = 0.0;
@@ -205,7 +203,8 @@ static void test_sigint_at_random_moments(void **state)
         snprintf(folder, sizeof folder, "%s/%s-endless", out_dir, PROGRAMS[c]);
         interrupt_at(PROGRAMS[c], endless, folder, NULL, 2.0, 2.0);
         for (int m = 0; m < 3; m++)
-            interrupt_at(PROGRAMS[c], endless, folder, NULL, 0.02 + 0.3 * rand() / RAND_MAX, 0.0);
+            interrupt_at(PROGRAMS[c], endless, folder, NULL, 0.02 + 0.3 * rand() / RAND_MAX,
+                         0.0);
     }
 }
 
@@ -216,7 +215,8 @@ static int children_of(pid_t parent)
 {
     /* The arguments in /proc/PID/cmdline end each in a NUL. */
     char needle[40];
-    int needle_length = snprintf(needle, sizeof needle, "--parent%c%ld", '\0', (long)parent) + 1;
+    int needle_length =
+        snprintf(needle, sizeof needle, "--parent%c%ld", '\0', (long)parent) + 1;
     DIR *proc = opendir("/proc");
     if (!proc)
         return 0;
@@ -308,9 +308,9 @@ static void signal_while_the_reference_renders(const char *programs_dir, int sig
     int left = reference_outlives(child);
     names_in(temporary, names, sizeof names);
     print_message("    %s: %s to the program alone while its reference renders: status %d, "
-                  "the reference renderer %s, temporary folders left: %s\n", what,
-                  strsignal(signal_number), status, left ? "outlived it" : "ended with it",
-                  names[0] ? names : "none");
+                  "the reference renderer %s, temporary folders left: %s\n",
+                  what, strsignal(signal_number), status,
+                  left ? "outlived it" : "ended with it", names[0] ? names : "none");
     assert_int_equal(status, signal_number == SIGINT ? 130 : 128 + signal_number);
     assert_false(left);
     assert_string_equal(names, "");
@@ -327,9 +327,10 @@ static void test_signals_to_the_program_alone_stop_the_reference(void **state)
     assert_non_null(programs_dir);
     char unwritable[700], command[2400];
     snprintf(unwritable, sizeof unwritable, "%s/unwritable", out_dir);
-    snprintf(command, sizeof command, "mkdir -p '%s' && cp '%s/ch02_monte_carlo' '%s/reference' "
-             "'%s/' && touch '%s/references'", unwritable, programs_dir, programs_dir,
-             unwritable, unwritable);
+    snprintf(command, sizeof command,
+             "mkdir -p '%s' && cp '%s/ch02_monte_carlo' '%s/reference' "
+             "'%s/' && touch '%s/references'",
+             unwritable, programs_dir, programs_dir, unwritable, unwritable);
     assert_int_equal(system(command), 0);
     const int signals[3] = {SIGINT, SIGTERM, SIGHUP};
     for (int i = 0; i < 3; i++) {
@@ -351,7 +352,8 @@ static void test_sigint_while_waiting_for_another_programs_reference(void **stat
         snprintf(log[i], sizeof log[i], "%s/waiting-%d.log", out_dir, i);
         snprintf(arguments[i], sizeof arguments[i],
                  "--quiet --size 64 --spp 1 --runs 1 --reference-spp 1000000 --seed %u "
-                 "--out %s/waiting-%d", seed, out_dir, i);
+                 "--out %s/waiting-%d",
+                 seed, out_dir, i);
     }
     children[0] = start("ch02_monte_carlo", arguments[0], log[0]);
     int started = 0;
@@ -391,7 +393,8 @@ static void test_one_reference_for_two_programs(void **state)
     for (int i = 0; i < 2; i++) {
         snprintf(log[i], sizeof log[i], "%s/twice-%d.log", out_dir, i);
         snprintf(arguments[i], sizeof arguments[i],
-                 "--quiet --size 32 --spp 1 --runs 1 --reference-spp 5000 --seed %u --out %s/twice-%d",
+                 "--quiet --size 32 --spp 1 --runs 1 --reference-spp 5000 --seed %u --out "
+                 "%s/twice-%d",
                  seed, out_dir, i);
         children[i] = start("ch02_monte_carlo", arguments[i], log[i]);
     }
@@ -444,9 +447,11 @@ static void test_sigint_saves_the_photon_passes(void **state)
         kill(child, SIGINT);
         status = wait_for(child);
         said = saved_when_interrupted(log, saved, sizeof saved, &spp);
-        print_message("    path-traced panel after %.2f s, SIGINT %.2f s into the photon passes: "
-                      "status %d, saved %s after %.2f samples per pixel\n", path_seconds,
-                      moments[attempt] * path_seconds, status, said ? saved : "nothing", spp);
+        print_message(
+            "    path-traced panel after %.2f s, SIGINT %.2f s into the photon passes: "
+            "status %d, saved %s after %.2f samples per pixel\n",
+            path_seconds, moments[attempt] * path_seconds, status, said ? saved : "nothing",
+            spp);
         assert_int_equal(status, 130);
     }
     assert_true(said);
@@ -459,10 +464,7 @@ static void test_sigint_saves_the_photon_passes(void **state)
 }
 #endif
 
-static int make_out_dir(void **state)
-{
-    return mkdtemp(out_dir) ? 0 : -1;
-}
+static int make_out_dir(void **state) { return mkdtemp(out_dir) ? 0 : -1; }
 
 static int remove_out_dir(void **state)
 {

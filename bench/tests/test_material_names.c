@@ -27,7 +27,9 @@
  * first one found, by the table and by the scene's own scan alike. */
 static void test_material_lookup(void **state)
 {
-    enum { COUNT = 100000 };
+    enum {
+        COUNT = 100000
+    };
     Scene scene;
     scene_init(&scene);
     MaterialNames names;
@@ -55,8 +57,8 @@ static void test_material_lookup(void **state)
         worst = cost > worst ? cost : worst;
     }
     print_message("    material lookups: %.2f names compared on average (%.2f for unknown "
-                  "names), %d at worst\n", (double)total / COUNT,
-                  (double)unknown_total / COUNT, worst);
+                  "names), %d at worst\n",
+                  (double)total / COUNT, (double)unknown_total / COUNT, worst);
     assert_true(total <= 2L * COUNT && unknown_total <= 2L * COUNT);
     assert_true(worst <= 40);
     strcpy(m.name, "material7");

@@ -144,7 +144,9 @@ static void test_channel_means_by_hand(void **state)
  * measured (not NaN); -1 when none is. */
 static void test_most_efficient(void **state)
 {
-    TableRow rows[4] = {{.efficiency = NAN}, {.efficiency = 3}, {.efficiency = 9, .infinite_variance = 1},
+    TableRow rows[4] = {{.efficiency = NAN},
+                        {.efficiency = 3},
+                        {.efficiency = 9, .infinite_variance = 1},
                         {.efficiency = 5}};
     assert_int_equal(measure_most_efficient(rows, 4), 3);
     assert_int_equal(measure_most_efficient(rows, 3), 1);
@@ -175,7 +177,8 @@ static void test_z_and_changed_fraction_by_hand(void **state)
 {
     assert_close(measure_z(5, 3, 1, 4), 0.8, 1e-15);
     assert_close(measure_z(1, 4, 5, 3), -0.8, 1e-15);
-    const float a_values[] = {1, 2, 3, 4, 5, 6, 7, 8, 9}, b_values[] = {1, 2, 3, 4, 5, 6.5f, 7, 8, 9};
+    const float a_values[] = {1, 2, 3, 4, 5, 6, 7, 8, 9},
+                b_values[] = {1, 2, 3, 4, 5, 6.5f, 7, 8, 9};
     Image a = image_of(3, 1, a_values), b = image_of(3, 1, b_values);
     assert_close(measure_changed_fraction(&a, &b), 1.0 / 3.0, 1e-15);
     assert_close(measure_changed_fraction(&a, &a), 0.0, 0.0);
@@ -257,9 +260,10 @@ static double image_mean_std_error(Estimator estimate)
     Scene scene;
     scene_init(&scene);
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
-    RenderSettings settings = {.image = {.width = 16, .height = 16, .spp = 50,
-                                         .sampling = PIXEL_RANDOM, .seed = 8},
-                               .threads = 2, .label = "test"};
+    RenderSettings settings = {
+        .image = {.width = 16, .height = 16, .spp = 50, .sampling = PIXEL_RANDOM, .seed = 8},
+        .threads = 2,
+        .label = "test"};
     RenderResult result;
     assert_int_equal(render(&scene, &settings, estimate, NULL, &result), 0);
     double mean, std_error;
@@ -278,10 +282,7 @@ static void test_image_mean_error_of_known_variance(void **state)
 }
 
 /* The standard normal distribution function. */
-static double normal_cdf(double z)
-{
-    return 0.5 * erfc(-z / sqrt(2.0));
-}
+static double normal_cdf(double z) { return 0.5 * erfc(-z / sqrt(2.0)); }
 
 /* Kolmogorov-Smirnov test of n values against the standard normal distribution: the
  * largest distance D between their empirical distribution function and Phi, and its
@@ -312,7 +313,8 @@ static double ks_normal_p_value(double *values, int n, double *distance)
     return fmin(fmax(q, 0.0), 1.0);
 }
 
-#if CHAPTER >= 3 /* the estimator with a shadow ray (path_direct.h), for noise without fireflies */
+#if CHAPTER >=                                                                                 \
+    3 /* the estimator with a shadow ray (path_direct.h), for noise without fireflies */
 /* The z-score of an unbiased setting is standard normal when its standard error is
  * right (chapters 4 and 6 print such z-scores). The report's room at 8 x 8 pixels, the
  * path tracer with one shadow ray, depth 6, 32 spp: PAIRS pairs of renders with
@@ -328,9 +330,9 @@ static double ks_normal_p_value(double *values, int n, double *distance)
 static double room_image_mean(const Scene *scene, uint64_t seed, double *std_error)
 {
     PathSettings path = {.max_depth = 6, .shadow_rays = 1};
-    RenderSettings settings = {.image = {.width = 8, .height = 8, .spp = 32,
-                                         .sampling = PIXEL_RANDOM, .seed = seed},
-                               .label = "test"};
+    RenderSettings settings = {
+        .image = {.width = 8, .height = 8, .spp = 32, .sampling = PIXEL_RANDOM, .seed = seed},
+        .label = "test"};
     RenderResult result;
     assert_int_equal(render(scene, &settings, path_direct_radiance, &path, &result), 0);
     double mean;
@@ -354,8 +356,9 @@ static void test_image_mean_z_scores_are_standard_normal(void **state)
         squares += z[i] * z[i];
     }
     double distance, p = ks_normal_p_value(z, PAIRS, &distance);
-    print_message("    %d z-scores: mean %.3f, spread %.3f; KS distance %.3f, p = %.3f\n", PAIRS,
-                  sum / PAIRS, sqrt(squares / PAIRS - sum * sum / PAIRS / PAIRS), distance, p);
+    print_message("    %d z-scores: mean %.3f, spread %.3f; KS distance %.3f, p = %.3f\n",
+                  PAIRS, sum / PAIRS, sqrt(squares / PAIRS - sum * sum / PAIRS / PAIRS),
+                  distance, p);
     assert_true(p > 0.01);
     scene_free(&scene);
 }
@@ -368,7 +371,8 @@ static void test_ks_test_has_power(void **state)
     double normal[400], scaled[400], shifted[400], distance;
     Rng rng = rng_for_sample(5, 5, 5);
     for (int i = 0; i < 400; i++) {
-        double r = sqrt(-2.0 * log(1.0 - rng_uniform(&rng))), phi = 2.0 * PI * rng_uniform(&rng);
+        double r = sqrt(-2.0 * log(1.0 - rng_uniform(&rng))),
+               phi = 2.0 * PI * rng_uniform(&rng);
         normal[i] = r * cos(phi);
         scaled[i] = 1.5 * normal[i];
         shifted[i] = normal[i] + 0.25;
@@ -474,8 +478,8 @@ static void test_error_estimate_removes_reference_variance(void **state)
     }
     ErrorEstimate e;
     assert_int_equal(measure_error_estimate(&image, &reference, &reference_error, &e), 0);
-    print_message("    raw MSE %.5f, reference's %.5f (share %.3f), corrected %.5f\n", e.raw_mse,
-                  e.reference_mse, e.reference_share, e.mse);
+    print_message("    raw MSE %.5f, reference's %.5f (share %.3f), corrected %.5f\n",
+                  e.raw_mse, e.reference_mse, e.reference_share, e.mse);
     assert_close(e.raw_mse, 0.05, 0.02 * 0.05);
     assert_close(e.mse, 0.01, 0.02 * 0.01);
     assert_close(e.reference_share, 0.8, 0.01);
@@ -555,8 +559,8 @@ static void test_summarise_runs(void **state)
 /* Infinite variance of constant-alpha roulette: alpha <= rho_max^2. The room's brightest
  * diffuse surface has rho = 0.8 (rho^2 = 0.64): Table 1's alpha = 0.25 and Figure 12's
  * 0.01 are infinite, 0.75 and 0.9 finite. The boundary alpha = rho^2 (every term of the
- * series equal) is infinite: 0.25 for rho = 0.5, both exact in binary. alpha = 1 is no roulette, finite even for rho = 1; a black scene is finite
- * for any alpha. */
+ * series equal) is infinite: 0.25 for rho = 0.5, both exact in binary. alpha = 1 is no
+ * roulette, finite even for rho = 1; a black scene is finite for any alpha. */
 static void test_roulette_variance_infinite(void **state)
 {
     assert_true(measure_roulette_variance_infinite(0.25, 0.8));

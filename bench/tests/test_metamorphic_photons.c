@@ -17,7 +17,9 @@
 #include "experiment.h"
 #include "ppm.h"
 
-enum { PASSES = 24 };
+enum {
+    PASSES = 24
+};
 
 /* The first radius's fraction of the view at 800 pixels wide, as chapters/ch08_photon_map.c
  * takes it. */
@@ -31,8 +33,14 @@ static int render_photons(const char *text, const Scene *scene, uint64_t seed, R
     PathSettings path = experiment_final_estimator(&defaults, &mirrors);
     path.mirror_light = 1;
     int height = (int)lround(MONTE_CARLO_SIDE / scene_file_aspect(&scene->camera));
-    PpmSettings ppm = {path, 1500, ppm_first_radius(scene, PPM_FIRST_RADIUS_AT_800) * 800.0 / MONTE_CARLO_SIDE,
-                       PPM_ALPHA, 2, PASSES, 0.0};
+    PpmSettings ppm = {
+        path,
+        1500,
+        ppm_first_radius(scene, PPM_FIRST_RADIUS_AT_800) * 800.0 / MONTE_CARLO_SIDE,
+        PPM_ALPHA,
+        2,
+        PASSES,
+        0.0};
     RenderSettings settings = {{MONTE_CARLO_SIDE, height, 2, PIXEL_RANDOM, seed}, 0, 0, "test"};
     PpmResult result;
     int status = ppm_render(scene, &settings, &ppm, &result);

@@ -18,7 +18,9 @@
 #include "metamorphic.h"
 
 /* The reference program's batches (bench/reference.c). */
-enum { BATCHES = 8 };
+enum {
+    BATCHES = 8
+};
 
 static int read_images(const char *folder, Rendering *out)
 {
@@ -33,7 +35,11 @@ static int read_images(const char *folder, Rendering *out)
         return -1;
     }
     long n = 3L * image.width * image.height;
-    *out = (Rendering){image.width, image.height, BATCHES, 1, malloc((size_t)n * sizeof(double)),
+    *out = (Rendering){image.width,
+                       image.height,
+                       BATCHES,
+                       1,
+                       malloc((size_t)n * sizeof(double)),
                        malloc((size_t)n * sizeof(double))};
     int status = out->value && out->error ? 0 : -1;
     for (long i = 0; status == 0 && i < n; i++) {
@@ -56,9 +62,10 @@ static int render_reference(const char *text, const Scene *scene, uint64_t seed,
     if (file && fclose(file) != 0)
         written = 0;
     const char *programs = getenv("CHAPTER_DIR") ? getenv("CHAPTER_DIR") : "build";
-    snprintf(command, sizeof command, "'%s/reference' --quiet --scene '%s' --size 24 "
-             "--reference-spp 64 --depth 64 --seed %llu --out '%s' --key 1", programs, path,
-             (unsigned long long)seed, folder);
+    snprintf(command, sizeof command,
+             "'%s/reference' --quiet --scene '%s' --size 24 "
+             "--reference-spp 64 --depth 64 --seed %llu --out '%s' --key 1",
+             programs, path, (unsigned long long)seed, folder);
     int status = written && system(command) == 0 ? read_images(folder, out) : -1;
     snprintf(command, sizeof command, "rm -rf '%s'", folder);
     if (system(command) != 0)

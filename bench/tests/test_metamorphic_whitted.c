@@ -16,7 +16,9 @@
 #include "metamorphic.h"
 #include "whitted.h"
 
-enum { SIDE = 64 };
+enum {
+    SIDE = 64
+};
 
 static int render_whitted(const char *text, const Scene *scene, uint64_t seed, Rendering *out)
 {

@@ -35,10 +35,7 @@ static int same_colour(Vec3 a, Vec3 b)
 }
 
 /* Text and frame are black, blended with white at their edges: dark means clearly so. */
-static int is_dark(Vec3 p)
-{
-    return p.x < 0.5 && p.y < 0.5 && p.z < 0.5;
-}
+static int is_dark(Vec3 p) { return p.x < 0.5 && p.y < 0.5 && p.z < 0.5; }
 
 static Image draw(const Plot *plot, int width, int height, PlotLayout *layout)
 {
@@ -102,8 +99,12 @@ static void test_log_range_by_hand(void **state)
     /* Error bars count: 0.3 with a bar from 0.04 to 3 needs 0.02..5; a bar end <= 0
      * does not count. */
     const double bar_low[] = {0.04}, bar_high[] = {3.0}, no_low[] = {-1.0};
-    PlotSeries series = {.x = three, .y = point_three, .y_low = bar_low, .y_high = bar_high,
-                         .count = 1, .colour = RED};
+    PlotSeries series = {.x = three,
+                         .y = point_three,
+                         .y_low = bar_low,
+                         .y_high = bar_high,
+                         .count = 1,
+                         .colour = RED};
     Plot plot = {LOG_AXIS, LOG_AXIS, &series, 1, 0};
     Image image = draw(&plot, 300, 200, &layout);
     assert_range(&layout, 2, 5, 0.02, 5);
@@ -177,14 +178,14 @@ static double fraction(PlotScale scale, double low, double high, double v)
 
 static double col_of(const PlotLayout *layout, PlotScale scale, double x)
 {
-    return layout->left + fraction(scale, layout->x_low, layout->x_high, x) *
-                              (layout->right - layout->left);
+    return layout->left +
+           fraction(scale, layout->x_low, layout->x_high, x) * (layout->right - layout->left);
 }
 
 static double row_of(const PlotLayout *layout, PlotScale scale, double y)
 {
-    return layout->bottom - fraction(scale, layout->y_low, layout->y_high, y) *
-                                (layout->bottom - layout->top);
+    return layout->bottom -
+           fraction(scale, layout->y_low, layout->y_high, y) * (layout->bottom - layout->top);
 }
 
 /* The bounding box of the dark pixels in [left, right) x [top, bottom). */
@@ -226,9 +227,9 @@ static double ink_width(const char *text, double size)
 }
 
 /* The x axis' numbered ticks: the expected values; at each a grid line (most of the
- * column inside the frame is grid grey, or the frame's black at its edges), a tick mark under the frame, and under that a
- * number centred on the tick (within 2 pixels) whose ink is as wide (within a
- * pixel) as that of `labels[i]` drawn alone; halfway between ticks no grid line. */
+ * column inside the frame is grid grey, or the frame's black at its edges), a tick mark under
+ * the frame, and under that a number centred on the tick (within 2 pixels) whose ink is as wide
+ * (within a pixel) as that of `labels[i]` drawn alone; halfway between ticks no grid line. */
 static void check_x_ticks(const Image *image, const PlotLayout *layout, PlotScale scale,
                           const double *values, const char *const *labels, int count,
                           double size)
@@ -249,7 +250,8 @@ static void check_x_ticks(const Image *image, const PlotLayout *layout, PlotScal
         /* From 0.45 em under the frame: the lowest y number, centred on the frame's
          * bottom row, reaches no lower. */
         int top = (int)(layout->bottom + 0.45 * size);
-        Ink ink = dark_ink(image, (int)(col - half + 1), top, (int)(col + half), (int)(top + line));
+        Ink ink =
+            dark_ink(image, (int)(col - half + 1), top, (int)(col + half), (int)(top + line));
         assert_true(ink.count > 5);
         assert_close(0.5 * (ink.left + ink.right), col, 2.0);
         double width = ink_width(labels[i], size);
@@ -355,7 +357,8 @@ static void test_linear_ticks(void **state)
 {
     const double x[] = {0, 45, 90}, y[] = {0.04, 0.1, 1.0};
     PlotSeries series = {.x = x, .y = y, .count = 3, .colour = RED};
-    Plot plot = {{"angle", PLOT_LINEAR, 0, 90, 15}, {"R", PLOT_LINEAR, 0, 1, 0.25}, &series, 1, 0};
+    Plot plot = {
+        {"angle", PLOT_LINEAR, 0, 90, 15}, {"R", PLOT_LINEAR, 0, 1, 0.25}, &series, 1, 0};
     PlotLayout layout;
     Image image = draw(&plot, 800, 450, &layout);
     const double degrees[] = {0, 15, 30, 45, 60, 75, 90};
@@ -373,7 +376,8 @@ static void test_linear_ticks(void **state)
     image = draw(&plot, 400, 300, &layout);
     const double *ticks[2] = {layout.x_ticks, layout.y_ticks};
     const int counts[2] = {layout.x_tick_count, layout.y_tick_count};
-    const double lows[2] = {layout.x_low, layout.y_low}, highs[2] = {layout.x_high, layout.y_high};
+    const double lows[2] = {layout.x_low, layout.y_low},
+                 highs[2] = {layout.x_high, layout.y_high};
     const double mins[2] = {0.13, -3.2}, maxs[2] = {0.87, 7.1};
     for (int axis = 0; axis < 2; axis++) {
         assert_true(counts[axis] >= 3);
@@ -402,7 +406,8 @@ static void test_points_where_the_mapping_puts_them(void **state)
         for (int i = 0; i < 3; i++) {
             col[i] = col_of(&layout, kind, x[i]);
             row[i] = row_of(&layout, kind, y[i]);
-            assert_true(same_colour(image_get(&image, (int)lround(col[i]), (int)lround(row[i])), RED));
+            assert_true(
+                same_colour(image_get(&image, (int)lround(col[i]), (int)lround(row[i])), RED));
         }
         for (int i = 0; i < 2; i++) {
             int mid_col = (int)lround(0.5 * (col[i] + col[i + 1]));
@@ -430,8 +435,8 @@ static void test_error_bars_span_the_interval(void **state)
 {
     const double x[] = {0.3, 1.0, 3.0}, y[] = {0.1, 0.1, 0.1};
     const double low[] = {0.03, -1.0, NAN}, high[] = {0.4, 0.2, 0.5};
-    PlotSeries series = {.x = x, .y = y, .y_low = low, .y_high = high, .count = 3,
-                         .colour = BLUE};
+    PlotSeries series = {
+        .x = x, .y = y, .y_low = low, .y_high = high, .count = 3, .colour = BLUE};
     Plot plot = {{NULL, PLOT_LOG, 0.1, 10, 0}, {NULL, PLOT_LOG, 0.01, 1, 0}, &series, 1, 0};
     PlotLayout layout;
     Image image = draw(&plot, 400, 400, &layout);
@@ -467,7 +472,8 @@ static void test_points_left_out_are_counted(void **state)
     PlotSeries all, kept;
     Plot with = log_plot(&all, x, y, 7), without = log_plot(&kept, kept_x, kept_y, 3);
     PlotLayout with_layout, without_layout;
-    Image a = draw(&with, 300, 200, &with_layout), b = draw(&without, 300, 200, &without_layout);
+    Image a = draw(&with, 300, 200, &with_layout),
+          b = draw(&without, 300, 200, &without_layout);
     assert_int_equal(with_layout.left_out, 4);
     assert_int_equal(without_layout.left_out, 0);
     assert_range(&with_layout, 0.1, 1, 0.5, 1);
@@ -529,7 +535,8 @@ static void test_legend_present(void **state)
     series[0].infinite_variance = 1;
     image = draw(&plot, 500, 400, &layout);
     assert_close(box[2] - box[0] - width,
-                 label_width("M=20, rr=0.9 (infinite variance)", 14) - label_width("M=20, rr=0.9", 14),
+                 label_width("M=20, rr=0.9 (infinite variance)", 14) -
+                     label_width("M=20, rr=0.9", 14),
                  1.5);
     image_free(&image);
 
@@ -548,13 +555,15 @@ static void test_infinite_variance_stands_out(void **state)
 {
     const double x[] = {1, 9}, y[] = {5, 5};
     for (int mark = 0; mark < 2; mark++) {
-        PlotSeries series = {.x = x, .y = y, .count = 2, .colour = RED, .markers = 1,
-                             .infinite_variance = mark};
-        Plot plot = {{NULL, PLOT_LINEAR, 0, 10, 0}, {NULL, PLOT_LINEAR, 0, 10, 0}, &series, 1, 0};
+        PlotSeries series = {
+            .x = x, .y = y, .count = 2, .colour = RED, .markers = 1, .infinite_variance = mark};
+        Plot plot = {
+            {NULL, PLOT_LINEAR, 0, 10, 0}, {NULL, PLOT_LINEAR, 0, 10, 0}, &series, 1, 0};
         PlotLayout layout;
         Image image = draw(&plot, 400, 300, &layout);
         int row = (int)lround(row_of(&layout, PLOT_LINEAR, 5));
-        int from = (int)lround(col_of(&layout, PLOT_LINEAR, 2)), to = (int)lround(col_of(&layout, PLOT_LINEAR, 8));
+        int from = (int)lround(col_of(&layout, PLOT_LINEAR, 2)),
+            to = (int)lround(col_of(&layout, PLOT_LINEAR, 8));
         int gaps = 0;
         for (int col = from; col <= to; col++)
             gaps += !same_colour(image_get(&image, col, row), RED);
@@ -579,7 +588,8 @@ static void test_infinite_variance_stands_out(void **state)
  * the numbers for x), and nothing is drawn outside [0, 1]. */
 static void test_background_and_titles(void **state)
 {
-    Plot plot = {{"time (s)", PLOT_LOG, 0.01, 1, 0}, {"RMSE", PLOT_LOG, 0.1, 10, 0}, NULL, 0, 0};
+    Plot plot = {
+        {"time (s)", PLOT_LOG, 0.01, 1, 0}, {"RMSE", PLOT_LOG, 0.1, 10, 0}, NULL, 0, 0};
     PlotLayout layout;
     Image image = draw(&plot, 300, 200, &layout);
     assert_true(same_colour(image_get(&image, 0, 0), WHITE));
@@ -591,7 +601,8 @@ static void test_background_and_titles(void **state)
     double size = 10; /* sqrt(300 * 200) / 32 = 7.7, at least 10 */
     Ink y_title = dark_ink(&image, 0, 0, 300, (int)layout.top - (int)(0.5 * size));
     assert_close(y_title.right - y_title.left + 1, ink_width("RMSE", size), 1.0);
-    Ink x_title = dark_ink(&image, 0, (int)(layout.bottom + 4 + font_line_height(&font, size)), 300, 200);
+    Ink x_title =
+        dark_ink(&image, 0, (int)(layout.bottom + 4 + font_line_height(&font, size)), 300, 200);
     assert_close(x_title.right - x_title.left + 1, ink_width("time (s)", size), 1.0);
     assert_close(0.5 * (x_title.left + x_title.right), 0.5 * (layout.left + layout.right), 2.0);
     image_free(&image);
@@ -602,10 +613,19 @@ static void test_background_and_titles(void **state)
  * axes, up to 1e300 in size on linear ones), ticks far finer than the range. */
 static void test_extremes_are_safe(void **state)
 {
-    const double x[] = {1e-300, 1e300, 1e-320, 1e308, 3.0}, y[] = {1e300, 1e-300, 5.0, 5.0, 4.0};
-    const double low[] = {-1e308, 0.0, NAN, 1.0, 3.0}, high[] = {1e308, INFINITY, 1.0, 2.0, 5.0};
-    PlotSeries series = {.label = "extreme", .x = x, .y = y, .y_low = low, .y_high = high,
-                         .count = 5, .colour = RED, .markers = 1, .infinite_variance = 1};
+    const double x[] = {1e-300, 1e300, 1e-320, 1e308, 3.0},
+                 y[] = {1e300, 1e-300, 5.0, 5.0, 4.0};
+    const double low[] = {-1e308, 0.0, NAN, 1.0, 3.0},
+                 high[] = {1e308, INFINITY, 1.0, 2.0, 5.0};
+    PlotSeries series = {.label = "extreme",
+                         .x = x,
+                         .y = y,
+                         .y_low = low,
+                         .y_high = high,
+                         .count = 5,
+                         .colour = RED,
+                         .markers = 1,
+                         .infinite_variance = 1};
     const int sizes[][2] = {{1, 1}, {5, 3}, {40, 40}, {300, 200}};
     for (int kind = 0; kind < 3; kind++) {
         Plot plot = {LOG_AXIS, LOG_AXIS, &series, 1, 0};
@@ -619,7 +639,8 @@ static void test_extremes_are_safe(void **state)
             assert_true(layout.x_tick_count <= PLOT_MAX_TICKS);
             assert_true(isfinite(layout.x_low) && isfinite(layout.x_high));
             assert_true(isfinite(layout.y_low) && isfinite(layout.y_high));
-            assert_int_equal(layout.left_out, kind == 0 ? 2 : 1); /* 1e-320 is drawable on linear axes */
+            assert_int_equal(layout.left_out,
+                             kind == 0 ? 2 : 1); /* 1e-320 is drawable on linear axes */
             image_free(&image);
         }
     }

@@ -65,18 +65,17 @@ static ReferenceIdentity identity_of(uint64_t key, uint64_t scene_hash, long spp
     return identity;
 }
 
-static ReferenceIdentity wanted(void)
-{
-    return identity_of(KEY, 0xfeedfacecafebeefULL, 4096);
-}
+static ReferenceIdentity wanted(void) { return identity_of(KEY, 0xfeedfacecafebeefULL, 4096); }
 
 /* A reference with distinct values everywhere, as a render would leave it (each
  * standard error below its pixel's value). */
 static Reference sample_reference(int width, int height)
 {
     Reference reference = {.image = image_new(width, height),
-                           .std_error = image_new(width, height), .spp = 4096,
-                           .seconds = 12.345678901234567, .mean_std_error = 1.25e-3};
+                           .std_error = image_new(width, height),
+                           .spp = 4096,
+                           .seconds = 12.345678901234567,
+                           .mean_std_error = 1.25e-3};
     assert_non_null(reference.image.pixels);
     assert_non_null(reference.std_error.pixels);
     for (int i = 0; i < 3 * width * height; i++) {
@@ -285,16 +284,32 @@ static void test_impossible_values_are_refused(void **state)
     ReferenceIdentity identity = wanted();
     for (int k = 0; k < 7; k++) {
         Reference forged = sample_reference(3, 2);
-        const char *what[7] = {"a pixel of -1e30", "an infinite pixel",
-                               "a standard error of 5.6e34", "a standard error of 2 x its pixel",
-                               "NaN seconds", "a stored mean 1% off", "a 2 x 3 image"};
+        const char *what[7] = {"a pixel of -1e30",
+                               "an infinite pixel",
+                               "a standard error of 5.6e34",
+                               "a standard error of 2 x its pixel",
+                               "NaN seconds",
+                               "a stored mean 1% off",
+                               "a 2 x 3 image"};
         switch (k) {
-        case 0: forged.image.pixels[4] = -1e30f; break;
-        case 1: forged.image.pixels[7] = INFINITY; break;
-        case 2: forged.std_error.pixels[2] = 5.6e34f; break;
-        case 3: forged.std_error.pixels[9] = 2.0f * forged.image.pixels[9]; break;
-        case 4: forged.seconds = NAN; break;
-        case 5: forged.mean *= 1.01; break;
+        case 0:
+            forged.image.pixels[4] = -1e30f;
+            break;
+        case 1:
+            forged.image.pixels[7] = INFINITY;
+            break;
+        case 2:
+            forged.std_error.pixels[2] = 5.6e34f;
+            break;
+        case 3:
+            forged.std_error.pixels[9] = 2.0f * forged.image.pixels[9];
+            break;
+        case 4:
+            forged.seconds = NAN;
+            break;
+        case 5:
+            forged.mean *= 1.01;
+            break;
         default:
             forged.image.width = forged.std_error.width = 2;
             forged.image.height = forged.std_error.height = 3;
@@ -416,7 +431,8 @@ static void test_signal_during_save_leaves_all_or_nothing(void **state)
     empty_scratch();
     unsigned seed = (unsigned)time(NULL) ^ (unsigned)getpid();
     srand(seed);
-    print_message("    a save takes %.1f ms; random moments from seed %u\n", 1e3 * duration, seed);
+    print_message("    a save takes %.1f ms; random moments from seed %u\n", 1e3 * duration,
+                  seed);
     int whole = 0, none = 0;
     for (int trial = 0; trial < 16; trial++) {
         int signal_number = trial % 2 ? SIGHUP : SIGTERM;
@@ -426,8 +442,8 @@ static void test_signal_during_save_leaves_all_or_nothing(void **state)
         list_scratch(names, sizeof names);
         Reference loaded;
         char why[320] = "";
-        int status = measure_load_reference(scratch_dir, &identity, 512, 512, &loaded, why,
-                                            sizeof why);
+        int status =
+            measure_load_reference(scratch_dir, &identity, 512, 512, &loaded, why, sizeof why);
         int complete = strcmp(names, STD_ERROR_FILE " " MEAN_FILE " " INFO_FILE " ") == 0;
         if (status == 0)
             measure_reference_free(&loaded);

@@ -40,8 +40,7 @@
  * rays (the room has mirrors and a light), counted in full whichever thread traced them.
  * The one-thread result is left in *first. */
 static void assert_same_for_any_thread_count(const Scene *scene, ImageSettings image,
-                                             Estimator estimate,
-                                             const void *estimator_settings,
+                                             Estimator estimate, const void *estimator_settings,
                                              RenderResult *first)
 {
     const int threads[] = {1, 2, 7};
@@ -50,7 +49,8 @@ static void assert_same_for_any_thread_count(const Scene *scene, ImageSettings i
     RenderResult results[3];
     for (int i = 0; i < 3; i++) {
         RenderSettings settings = {.image = image, .threads = threads[i], .label = "test"};
-        assert_int_equal(render(scene, &settings, estimate, estimator_settings, &results[i]), 0);
+        assert_int_equal(render(scene, &settings, estimate, estimator_settings, &results[i]),
+                         0);
         assert_int_equal(results[i].threads, threads[i]);
         assert_true(results[i].samples == samples && results[i].rays.camera == samples);
     }
@@ -94,8 +94,8 @@ static void test_same_image_for_any_thread_count(void **state)
 static void assert_sampled_same_for_any_thread_count(const Scene *scene, Estimator estimate,
                                                      const void *estimator_settings)
 {
-    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 3, .seed = 2019,
-                           .sampling = PIXEL_RANDOM};
+    ImageSettings image = {
+        .width = SIDE, .height = SIDE, .spp = 3, .seed = 2019, .sampling = PIXEL_RANDOM};
     RenderResult random, subpixels;
     assert_same_for_any_thread_count(scene, image, estimate, estimator_settings, &random);
     image.sampling = PIXEL_SUBPIXELS;
@@ -129,8 +129,8 @@ static void test_same_path_traced_image_for_any_thread_count(void **state)
 {
     Scene scene;
     load("scenes/room.scene", &scene);
-    PathSettings path = {.max_depth = 64, .shadow_rays = 1, .fresnel = FRESNEL_EXACT,
-                         .rr_survival = 0.5};
+    PathSettings path = {
+        .max_depth = 64, .shadow_rays = 1, .fresnel = FRESNEL_EXACT, .rr_survival = 0.5};
     assert_sampled_same_for_any_thread_count(&scene, path_roulette_radiance, &path);
     scene_free(&scene);
 }
@@ -156,7 +156,8 @@ static void test_pixel_is_mean_of_samples(void **state)
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
     /* Through each pixel's centre: the sampling draws no number before the estimator. */
     RenderSettings settings = {.image = {.width = 4, .height = 4, .spp = 5, .seed = 77},
-                               .threads = 2, .label = "test"};
+                               .threads = 2,
+                               .label = "test"};
     RenderResult result;
     assert_int_equal(render(&scene, &settings, sample_number, NULL, &result), 0);
     for (int pixel = 0; pixel < 16; pixel++) {
@@ -205,7 +206,8 @@ static void test_variance_of_a_bright_pixel(void **state)
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
     const int spp = 200;
     RenderSettings settings = {.image = {.width = 4, .height = 4, .spp = spp, .seed = 31},
-                               .threads = 2, .label = "test"};
+                               .threads = 2,
+                               .label = "test"};
     RenderResult result;
     assert_int_equal(render(&scene, &settings, bright_sample, NULL, &result), 0);
     for (int pixel = 0; pixel < 16; pixel++) {
@@ -245,7 +247,8 @@ static void test_nonfinite_samples_dropped_and_counted(void **state)
     scene_init(&scene);
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
     RenderSettings settings = {.image = {.width = 8, .height = 8, .spp = 30, .seed = 5},
-                               .threads = 2, .label = "test"};
+                               .threads = 2,
+                               .label = "test"};
     RenderResult result;
     assert_int_equal(render(&scene, &settings, sometimes_nonfinite, NULL, &result), 0);
     uint64_t expected = 0;
@@ -280,10 +283,12 @@ static void test_interrupt_keeps_a_normalised_image(void **state)
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
     render_install_interrupt();
     RenderSettings settings = {.image = {.width = 64, .height = 64, .spp = 1000, .seed = 5},
-                               .threads = 1, .label = "test"};
+                               .threads = 1,
+                               .label = "test"};
     int pass_to_interrupt = 3;
     RenderResult result;
-    assert_int_equal(render(&scene, &settings, interrupt_midway, &pass_to_interrupt, &result), 0);
+    assert_int_equal(render(&scene, &settings, interrupt_midway, &pass_to_interrupt, &result),
+                     0);
     assert_true(result.interrupted);
     double spp = render_samples_per_pixel(&result);
     print_message("    stopped after %.3f of 1000 samples per pixel\n", spp);

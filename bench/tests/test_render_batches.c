@@ -62,12 +62,17 @@ static void variance_and_claim(int batches, int spp, double variance[4], double 
     assert_non_null(squares);
     assert_non_null(claims);
     for (int k = 1; k <= RENDERS; k++) {
-        RenderSettings settings = {.image = {.width = SIDE, .height = SIDE, .spp = spp,
-                                             .sampling = PIXEL_SUBPIXELS, .seed = (uint64_t)k},
-                                   .threads = 1, .label = "test"};
+        RenderSettings settings = {.image = {.width = SIDE,
+                                             .height = SIDE,
+                                             .spp = spp,
+                                             .sampling = PIXEL_SUBPIXELS,
+                                             .seed = (uint64_t)k},
+                                   .threads = 1,
+                                   .label = "test"};
         RenderResult result;
         if (batches > 0)
-            assert_int_equal(render_batches(&scene, &settings, batches, edge_and_noise, NULL, &result), 0);
+            assert_int_equal(
+                render_batches(&scene, &settings, batches, edge_and_noise, NULL, &result), 0);
         else
             assert_int_equal(render(&scene, &settings, edge_and_noise, NULL, &result), 0);
         for (int p = 0; p < PIXELS; p++) {
@@ -101,8 +106,9 @@ static void test_standard_errors_unbiased(void **state)
     double variance[4], claimed[4];
     variance_and_claim(4, 32, variance, claimed);
     for (int c = 0; c < 4; c++) {
-        print_message("    channel %d: variance across renders %.3e, claimed %.3e, ratio %.3f\n",
-                      c, variance[c], claimed[c], claimed[c] / variance[c]);
+        print_message(
+            "    channel %d: variance across renders %.3e, claimed %.3e, ratio %.3f\n", c,
+            variance[c], claimed[c], claimed[c] / variance[c]);
         assert_true(variance[c] > 0.0);
         assert_true(fabs(claimed[c] / variance[c] - 1.0) < 0.12);
     }
@@ -124,9 +130,13 @@ static void test_one_stratified_render_overstates(void **state)
 static void test_bookkeeping(void **state)
 {
     Scene scene = tiny_scene();
-    RenderSettings settings = {.image = {.width = SIDE, .height = SIDE, .spp = 12,
-                                         .sampling = PIXEL_SUBPIXELS, .seed = 5},
-                               .threads = 2, .label = "test"};
+    RenderSettings settings = {.image = {.width = SIDE,
+                                         .height = SIDE,
+                                         .spp = 12,
+                                         .sampling = PIXEL_SUBPIXELS,
+                                         .seed = 5},
+                               .threads = 2,
+                               .label = "test"};
     RenderResult result;
     assert_int_equal(render_batches(&scene, &settings, 3, constant, NULL, &result), 0);
     assert_true(result.samples == SIDE * SIDE * 12 && result.rays.camera == SIDE * SIDE * 12);

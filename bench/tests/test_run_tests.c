@@ -64,16 +64,20 @@ static void test_runner_stops_a_hang(void **state)
     snprintf(log, sizeof log, "%s/runner.log", folder);
     write_script("passes", "echo fine\n");
     write_script("fails", "echo wrong; exit 3\n");
-    snprintf(body, sizeof body, "trap '' TERM\nsleep 1000 &\necho $! > %s\necho hanging\n"
-             "while :; do wait; done\n", grandchild_file);
+    snprintf(body, sizeof body,
+             "trap '' TERM\nsleep 1000 &\necho $! > %s\necho hanging\n"
+             "while :; do wait; done\n",
+             grandchild_file);
     write_script("hangs", body);
     fflush(NULL);
     pid_t runner = fork();
     assert_true(runner >= 0);
     if (runner == 0) {
         setpgid(0, 0);
-        snprintf(command, sizeof command, "TEST_KILL_AFTER=1 sh bench/run_tests.sh %s/logs 2 "
-                 "%s/passes %s/hangs %s/fails > %s 2>&1", folder, folder, folder, folder, log);
+        snprintf(command, sizeof command,
+                 "TEST_KILL_AFTER=1 sh bench/run_tests.sh %s/logs 2 "
+                 "%s/passes %s/hangs %s/fails > %s 2>&1",
+                 folder, folder, folder, folder, log);
         execl("/bin/sh", "sh", "-c", command, (char *)NULL);
         _exit(127);
     }
@@ -111,7 +115,8 @@ static void test_runner_stops_a_hang(void **state)
         kill((pid_t)grandchild, SIGKILL);
     assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 1);
     char expected[300];
-    snprintf(expected, sizeof expected, "FAILED: %s/hangs: timed out: no end within 2 s", folder);
+    snprintf(expected, sizeof expected, "FAILED: %s/hangs: timed out: no end within 2 s",
+             folder);
     assert_non_null(strstr(output, expected));
     snprintf(expected, sizeof expected, "FAILED: %s/fails: failed (exit status 3)", folder);
     assert_non_null(strstr(output, expected));
@@ -119,10 +124,7 @@ static void test_runner_stops_a_hang(void **state)
     assert_false(left);
 }
 
-static int make_folder(void **state)
-{
-    return mkdtemp(folder) ? 0 : -1;
-}
+static int make_folder(void **state) { return mkdtemp(folder) ? 0 : -1; }
 
 static int remove_folder(void **state)
 {

@@ -21,7 +21,8 @@
 
 static SampleOrder order_of(int samples, PixelSampling sampling, uint64_t seed)
 {
-    ImageSettings image = {.width = 1, .height = 1, .spp = samples, .sampling = sampling, .seed = seed};
+    ImageSettings image = {
+        .width = 1, .height = 1, .spp = samples, .sampling = sampling, .seed = seed};
     return sample_order_make(&image);
 }
 
@@ -115,7 +116,8 @@ static void test_first_sample_uniform(void **state)
 static double prefix_p_value(int n, int k)
 {
     double observed[GRID * GRID] = {0}, expected[GRID * GRID];
-    ImageSettings image = {.width = PIXELS, .height = 1, .spp = n, .sampling = PIXEL_SUBPIXELS, .seed = 2024};
+    ImageSettings image = {
+        .width = PIXELS, .height = 1, .spp = n, .sampling = PIXEL_SUBPIXELS, .seed = 2024};
     SampleOrder order = sample_order_make(&image);
     for (int p = 0; p < PIXELS; p++)
         for (int pass = 0; pass < k; pass++) {

@@ -82,8 +82,8 @@ static void expect_error(const char *text, int line, const char *what)
 {
     Scene scene;
     char error[512] = "", prefix[64];
-    assert_int_equal(scene_parse(text, strlen(text), "t.scene", &scene, NULL, error,
-                                 sizeof error), -1);
+    assert_int_equal(
+        scene_parse(text, strlen(text), "t.scene", &scene, NULL, error, sizeof error), -1);
     snprintf(prefix, sizeof prefix, "t.scene:%d: ", line);
     if (strncmp(error, prefix, strlen(prefix)) != 0 || !strstr(error, what))
         fail_msg("for input \"%s\":\n got      \"%s\"\n expected \"%s...%s...\"", text, error,
@@ -276,7 +276,8 @@ static void assert_closed_outward(const Scene *scene, Vec3 inside, double area)
     double total = 0.0;
     for (int i = 0; i < scene->triangle_count; i++) {
         const Triangle *t = &scene->triangles[i];
-        Vec3 centroid = vec3_add_scaled(vec3_add_scaled(t->v0, t->e1, 1.0 / 3.0), t->e2, 1.0 / 3.0);
+        Vec3 centroid =
+            vec3_add_scaled(vec3_add_scaled(t->v0, t->e1, 1.0 / 3.0), t->e2, 1.0 / 3.0);
         assert_true(vec3_dot(t->normal, vec3_sub(centroid, inside)) > 0.0);
         total += t->area;
     }
@@ -291,8 +292,9 @@ static void test_box_normals_outward(void **state)
     for (int k = 0; k < 3; k++) {
         double s = scales[k];
         char text[512];
-        snprintf(text, sizeof text, CAMERA "material m lambert .5 .5 .5\nbox m %g %g %g %g %g %g\n",
-                 1 * s, 2 * s, 3 * s, 2 * s, 4 * s, 6 * s);
+        snprintf(text, sizeof text,
+                 CAMERA "material m lambert .5 .5 .5\nbox m %g %g %g %g %g %g\n", 1 * s, 2 * s,
+                 3 * s, 2 * s, 4 * s, 6 * s);
         Scene scene;
         parse_ok(text, &scene);
         assert_int_equal(scene.triangle_count, 12);
@@ -402,8 +404,8 @@ static void test_wrong_count(void **state)
 /* Tokens that strtod would take but that are not decimal numbers, or not whole ones. */
 static void test_not_a_number(void **state)
 {
-    const char *bad[] = {"nan", "inf", "-infinity", "0x10", "1.5abc", "1e", "e5", ".", "-",
-                         "+-1", "1,5", "--1", "1e+"};
+    const char *bad[] = {"nan", "inf", "-infinity", "0x10", "1.5abc", "1e", "e5",
+                         ".",   "-",   "+-1",       "1,5",  "--1",    "1e+"};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         char text[128], what[64];
         snprintf(text, sizeof text, "point_light 0 0 %s 1 1 1\n", bad[i]);
@@ -420,8 +422,9 @@ static void test_number_out_of_range(void **state)
 {
     expect_error("point_light 0 0 1e400 1 1 1\n", 1, "'1e400' is out of range");
     expect_error("point_light 0 0 0 -1e309 1 1\n", 1, "'-1e309' is out of range");
-    expect_error("point_light 0 0 0 1e51 1 1\n", 1, "'1e51' is out of range: numbers are "
-                                                    "finite and within +-1e+50");
+    expect_error("point_light 0 0 0 1e51 1 1\n", 1,
+                 "'1e51' is out of range: numbers are "
+                 "finite and within +-1e+50");
     expect_error("camera -1e77 0 0  0 1e77 -1e77  0 -1e77 -1e77  0 1e77 1e77\n", 1,
                  "'-1e77' is out of range");
     Scene scene;
@@ -433,11 +436,10 @@ static void test_number_out_of_range(void **state)
  * underflow), each kind by name; at 1e-49 they are read. */
 static void test_too_small(void **state)
 {
-    const char *shapes[] = {"triangle m 0 0 0  %s 0 0  0 %s 0\n",
-                            "quad m 0 0 0  %s 0 0  %s %s 0  0 %s 0\n",
-                            "box m 0 0 0  %s %s %s\n",
-                            "tetrahedron m 0 0 0  %s 0 0  0 %s 0  0 0 %s\n",
-                            "sphere m 0 0 0 %s\n"};
+    const char *shapes[] = {
+        "triangle m 0 0 0  %s 0 0  0 %s 0\n", "quad m 0 0 0  %s 0 0  %s %s 0  0 %s 0\n",
+        "box m 0 0 0  %s %s %s\n", "tetrahedron m 0 0 0  %s 0 0  0 %s 0  0 0 %s\n",
+        "sphere m 0 0 0 %s\n"};
     const char *names[] = {"triangle", "quad", "box", "tetrahedron", "sphere"};
     for (int i = 0; i < 5; i++) {
         char line[256], text[512];
@@ -461,19 +463,18 @@ static void test_too_small(void **state)
  * Each kind, and the camera, at 1e-60 down to 1e-300. */
 static void test_too_small_at_every_scale(void **state)
 {
-    const char *shapes[] = {"triangle m 0 0 0  1%s 0 0  0 1%s 0\n",
-                            "quad m 0 0 0  1%s 0 0  1%s 1%s 0  0 1%s 0\n",
-                            "box m 0 0 0  1%s 1%s 1%s\n",
-                            "tetrahedron m 0 0 0  1%s 0 0  0 1%s 0  0 0 1%s\n",
-                            "camera 0 0 1%s  -1%s -1%s 0  1%s -1%s 0  -1%s 1%s 0\n"};
+    const char *shapes[] = {
+        "triangle m 0 0 0  1%s 0 0  0 1%s 0\n", "quad m 0 0 0  1%s 0 0  1%s 1%s 0  0 1%s 0\n",
+        "box m 0 0 0  1%s 1%s 1%s\n", "tetrahedron m 0 0 0  1%s 0 0  0 1%s 0  0 0 1%s\n",
+        "camera 0 0 1%s  -1%s -1%s 0  1%s -1%s 0  -1%s 1%s 0\n"};
     const char *exponents[] = {"e-60", "e-155", "e-160", "e-170", "e-200", "e-300", "e-307"};
     for (int i = 0; i < 5; i++)
         for (int k = 0; k < 7; k++) {
             const char *e = exponents[k];
             char line[512], text[1024];
             snprintf(line, sizeof line, shapes[i], e, e, e, e, e, e, e);
-            snprintf(text, sizeof text, "%smaterial m lambert .5 .5 .5\n%s", i < 4 ? CAMERA : "",
-                     line);
+            snprintf(text, sizeof text, "%smaterial m lambert .5 .5 .5\n%s",
+                     i < 4 ? CAMERA : "", line);
             expect_error(text, i < 4 ? 3 : 2,
                          "is too small: the reader takes sizes from 1e-50 to 1e+50");
         }
@@ -486,11 +487,14 @@ static void test_too_small_at_every_scale(void **state)
 static void test_flat_at_extreme_scales(void **state)
 {
     const char *flat[][2] = {
-        {"triangle m 0 0 0  1%s 0 0  0.5%s 0.000000000001%s 0\n", "degenerate triangle (zero area)"},
+        {"triangle m 0 0 0  1%s 0 0  0.5%s 0.000000000001%s 0\n",
+         "degenerate triangle (zero area)"},
         {"quad m 0 0 0  1%s 0 0  1%s 1%s 0  0 1%s 0.000001%s\n", "non-planar quad"},
         {"tetrahedron m 0 0 0  1%s 0 0  0 1%s 0  1%s 1%s 0\n", "flat tetrahedron"},
-        {"camera 0 0 1%s  -1%s 0 0  1%s 0 0  3%s 0 0\n", "the image plane's corners are collinear"},
-        {"camera 0 -1%s 0  -1%s -1%s 0  1%s -1%s 0  -1%s 1%s 0\n", "the eye is on the image plane"},
+        {"camera 0 0 1%s  -1%s 0 0  1%s 0 0  3%s 0 0\n",
+         "the image plane's corners are collinear"},
+        {"camera 0 -1%s 0  -1%s -1%s 0  1%s -1%s 0  -1%s 1%s 0\n",
+         "the eye is on the image plane"},
     };
     const char *whole[] = {"triangle m 0 0 0  1%s 0 0  0.5%s 0.001%s 0\n",
                            "quad m 0 0 0  1%s 0 0  1%s 1%s 0  0 1%s 0%s\n",
@@ -501,8 +505,8 @@ static void test_flat_at_extreme_scales(void **state)
         for (int i = 0; i < 5; i++) {
             char line[512], text[1024];
             snprintf(line, sizeof line, flat[i][0], e, e, e, e, e, e, e);
-            snprintf(text, sizeof text, "%smaterial m lambert .5 .5 .5\n%s", i < 3 ? CAMERA : "",
-                     line);
+            snprintf(text, sizeof text, "%smaterial m lambert .5 .5 .5\n%s",
+                     i < 3 ? CAMERA : "", line);
             expect_error(text, i < 3 ? 3 : 2, flat[i][1]);
         }
         for (int i = 0; i < 3; i++) {
@@ -526,8 +530,8 @@ static void test_number_too_small_to_compute(void **state)
     for (int i = 0; i < 5; i++) {
         char text[256], message[128];
         snprintf(text, sizeof text, "point_light 0 0 %s 1 1 1\n", refused[i]);
-        snprintf(message, sizeof message, "'%s' is too small to compute with: below 2.22507e-308",
-                 refused[i]);
+        snprintf(message, sizeof message,
+                 "'%s' is too small to compute with: below 2.22507e-308", refused[i]);
         expect_error(text, 1, message);
     }
     Scene scene;
@@ -541,8 +545,7 @@ static void test_number_too_small_to_compute(void **state)
 static void test_emission_bound(void **state)
 {
     expect_error("material L light 1e100 1e100 1e100\n", 1, "'1e100' is out of range");
-    expect_error("material L light 1e30 1e30 1e30\n", 1,
-                 "emission 1e30 1e30 1e30 above 1e+20");
+    expect_error("material L light 1e30 1e30 1e30\n", 1, "emission 1e30 1e30 1e30 above 1e+20");
     expect_error("material L light 0 1.1e20 0\n", 1, "above 1e+20");
     expect_error("point_light 0 0 0  1 1e21 1\n", 1, "point_light intensity above 1e+20");
     Scene scene;
@@ -582,10 +585,12 @@ static void test_second_camera(void **state)
 /* Reflectance above 1 or below 0, for each kind that has one. */
 static void test_reflectance_out_of_range(void **state)
 {
-    expect_error("material m lambert 0.5 1.01 0.5\n", 1, "reflectance 0.5 1.01 0.5 outside [0, 1]");
+    expect_error("material m lambert 0.5 1.01 0.5\n", 1,
+                 "reflectance 0.5 1.01 0.5 outside [0, 1]");
     expect_error("material m oren_nayar -0.1 0.5 0.5 0.2\n", 1, "outside [0, 1]");
     expect_error("material m mirror 1 1 2\n", 1, "outside [0, 1]");
-    expect_error("material m mirror 1.0000001 1 1\n", 1, "reflectance 1.0000001 1 1 outside [0, 1]");
+    expect_error("material m mirror 1.0000001 1 1\n", 1,
+                 "reflectance 1.0000001 1 1 outside [0, 1]");
 }
 
 static void test_negative_emission(void **state)
@@ -606,7 +611,8 @@ static void test_ior_not_positive(void **state)
 
 static void test_sphere_radius_not_positive(void **state)
 {
-    expect_error("material m glass 1.5\nsphere m 0 0 0 -1\n", 2, "sphere radius -1 must be > 0");
+    expect_error("material m glass 1.5\nsphere m 0 0 0 -1\n", 2,
+                 "sphere radius -1 must be > 0");
     expect_error("material m glass 1.5\nsphere m 0 0 0 0\n", 2, "sphere radius 0 must be > 0");
 }
 
@@ -662,7 +668,8 @@ static void test_non_convex_quad(void **state)
 
 static void test_box_min_not_below_max(void **state)
 {
-    expect_error("material m lambert .5 .5 .5\nbox m 0 0 0  1 0 1\n", 2, "box needs XMIN < XMAX");
+    expect_error("material m lambert .5 .5 .5\nbox m 0 0 0  1 0 1\n", 2,
+                 "box needs XMIN < XMAX");
     expect_error("material m lambert .5 .5 .5\nbox m 0 0 0  -1 1 1\n", 2, "box needs");
 }
 
@@ -712,8 +719,8 @@ static void test_nul_byte(void **state)
     const char text[] = CAMERA "# a comment \0 with a NUL\n";
     Scene scene;
     char error[512] = "";
-    assert_int_equal(scene_parse(text, sizeof text - 1, "t.scene", &scene, NULL, error,
-                                 sizeof error), -1);
+    assert_int_equal(
+        scene_parse(text, sizeof text - 1, "t.scene", &scene, NULL, error, sizeof error), -1);
     assert_string_equal(error, "t.scene:2: a NUL byte in the text");
     assert_scene_empty(&scene);
 }
@@ -723,11 +730,12 @@ static void test_nul_byte(void **state)
  * mixed too; the line count and errors still name the right line. */
 static void test_line_ends_and_bom(void **state)
 {
-    const char *bodies[] = {"\xEF\xBB\xBF" CAMERA "material m lambert .5 .5 .5\nsphere m 0 0 0 1\n",
-                            "camera -1 0 0  0 1 -1  0 -1 -1  0 1 1\rmaterial m lambert .5 .5 .5\r"
-                            "sphere m 0 0 0 1\r",
-                            "\xEF\xBB\xBF# mixed\r\ncamera -1 0 0  0 1 -1  0 -1 -1  0 1 1\r"
-                            "material m lambert .5 .5 .5\n\r\nsphere m 0 0 0 1"};
+    const char *bodies[] = {
+        "\xEF\xBB\xBF" CAMERA "material m lambert .5 .5 .5\nsphere m 0 0 0 1\n",
+        "camera -1 0 0  0 1 -1  0 -1 -1  0 1 1\rmaterial m lambert .5 .5 .5\r"
+        "sphere m 0 0 0 1\r",
+        "\xEF\xBB\xBF# mixed\r\ncamera -1 0 0  0 1 -1  0 -1 -1  0 1 1\r"
+        "material m lambert .5 .5 .5\n\r\nsphere m 0 0 0 1"};
     const int lines[] = {3, 3, 5};
     for (int i = 0; i < 3; i++) {
         Scene scene;
@@ -768,8 +776,9 @@ static void test_non_ascii(void **state)
 {
     expect_ascii_error(CAMERA "material\xC2\xA0white lambert 1 1 1\n", 2,
                        "non-ASCII character U+00A0 (a no-break space?) in column 9");
-    expect_ascii_error(CAMERA "point_light 0 0 \xE2\x88\x92" "1 1 1 1\n", 2,
-                       "U+2212 (a minus sign? write '-') in column 17");
+    expect_ascii_error(CAMERA "point_light 0 0 \xE2\x88\x92"
+                              "1 1 1 1\n",
+                       2, "U+2212 (a minus sign? write '-') in column 17");
     expect_ascii_error(CAMERA "\xEF\xBB\xBFsphere m 0 0 0 1\n", 2,
                        "U+FEFF (a byte order mark?) in column 1");
     expect_ascii_error(CAMERA "point_light 0 0 \xC3\xA9 1 1 1\n", 2, "U+00E9 in column 17");
@@ -800,8 +809,8 @@ static void test_long_name(void **state)
         Scene scene;
         char error[512];
         const char *text = CAMERA "spher m 0 0 0 1\n";
-        assert_int_equal(scene_parse(text, strlen(text), name, &scene, NULL, error,
-                                     sizeof error), -1);
+        assert_int_equal(
+            scene_parse(text, strlen(text), name, &scene, NULL, error, sizeof error), -1);
         const char *end = "dd/room.scene:2: unknown keyword 'spher'";
         size_t length = strlen(error);
         assert_true(length < sizeof error);
@@ -810,8 +819,8 @@ static void test_long_name(void **state)
         assert_memory_equal(error, "/very/", 6);
         assert_non_null(strstr(error, "..."));
         text = CAMERA;
-        assert_int_equal(scene_parse(text, strlen(text), name, &scene, NULL, error,
-                                     sizeof error), 0);
+        assert_int_equal(
+            scene_parse(text, strlen(text), name, &scene, NULL, error, sizeof error), 0);
         scene_free(&scene);
     }
 }
@@ -836,8 +845,8 @@ static void write_text(int fd, const char *text, size_t length)
 
 /* A pipe that a child process fills by calling feed(fd, text, length): its path
  * ("/dev/fd/N") in pipe_path[64], its reading end in *read_end; returns the child. */
-static pid_t start_pipe(void (*feed)(int fd, const char *text, size_t length),
-                        const char *text, size_t length, char *pipe_path, int *read_end)
+static pid_t start_pipe(void (*feed)(int fd, const char *text, size_t length), const char *text,
+                        size_t length, char *pipe_path, int *read_end)
 {
     int ends[2];
     assert_int_equal(pipe(ends), 0);
@@ -908,8 +917,9 @@ static void test_size_limit(void **state)
     assert_scene_empty(&scene);
 
     int status;
-    assert_int_equal(load_from_pipe(write_zeros_until_closed, NULL, 0, &scene, error,
-                                    sizeof error, &status), -1);
+    assert_int_equal(
+        load_from_pipe(write_zeros_until_closed, NULL, 0, &scene, error, sizeof error, &status),
+        -1);
     assert_non_null(strstr(error, ":0: larger than 64 MiB, the limit for a scene file"));
     assert_true(WIFEXITED(status));
     if (WEXITSTATUS(status) > 65)
@@ -948,8 +958,8 @@ static void test_source_hash(void **state)
     scene_free(&scene);
 
     int fed;
-    if (parse_from_pipe(write_text, text, length, &scene, &info, error, sizeof error,
-                        &fed) != 0)
+    if (parse_from_pipe(write_text, text, length, &scene, &info, error, sizeof error, &fed) !=
+        0)
         fail_msg("%s", error);
     assert_true(WIFEXITED(fed) && WEXITSTATUS(fed) == 0);
     assert_int_equal(scene.triangle_count, 38);
@@ -968,13 +978,16 @@ static void test_source_hash(void **state)
  * lookup's cost). */
 static void test_many_materials(void **state)
 {
-    enum { COUNT = 100000 };
+    enum {
+        COUNT = 100000
+    };
     size_t size = (size_t)COUNT * 80 + sizeof CAMERA, used = 0;
     char *text = malloc(size);
     assert_non_null(text);
     used += (size_t)snprintf(text, size, CAMERA);
     for (int i = 0; i < COUNT; i++)
-        used += (size_t)snprintf(text + used, size - used, "material m%d lambert .5 .5 .5\n", i);
+        used +=
+            (size_t)snprintf(text + used, size - used, "material m%d lambert .5 .5 .5\n", i);
     for (int i = 0; i < COUNT; i++)
         used += (size_t)snprintf(text + used, size - used, "sphere m%d %d %d 5 0.25\n",
                                  COUNT - 1 - i, i % 400, i / 400);
@@ -1006,7 +1019,8 @@ static void test_unreadable_file(void **state)
     Scene scene;
     char error[512] = "";
     assert_int_equal(scene_load("scenes/no-such.scene", &scene, error, sizeof error), -1);
-    assert_string_equal(error, "scenes/no-such.scene:0: cannot open: No such file or directory");
+    assert_string_equal(error,
+                        "scenes/no-such.scene:0: cannot open: No such file or directory");
     assert_scene_empty(&scene);
     assert_int_equal(scene_load("scenes", &scene, error, sizeof error), -1);
     assert_string_equal(error, "scenes:0: cannot read: Is a directory");
@@ -1018,8 +1032,8 @@ static void test_small_error_buffer(void **state)
 {
     Scene scene;
     char error[12];
-    assert_int_equal(scene_parse("x\n", 2, "a-long-file-name.scene", &scene, NULL, error,
-                                 sizeof error), -1);
+    assert_int_equal(
+        scene_parse("x\n", 2, "a-long-file-name.scene", &scene, NULL, error, sizeof error), -1);
     assert_string_equal(error, "a-long-file");
 }
 

@@ -28,15 +28,33 @@
 /* Two rows as a chapter would make them: one measured against a reference, one not. */
 static void sample_rows(TableRow rows[2])
 {
-    rows[0] = (TableRow){.panel = "Figure 11a", .settings = "64 spp, M=1 depth=5", .spp = 64,
-                         .seconds = 1.5, .threads = 8, .rays = {1000000, 1500000, 500000},
-                         .rmse = 0.0123, .rel_mse = 4.56e-3, .efficiency = 146.198830409,
-                         .nonfinite = 3, .runs = 5, .rmse_spread = 0.0021, .rel_mse_spread = 3e-4,
-                         .reference_share = 0.125, .infinite_variance = 1};
-    rows[1] = (TableRow){.panel = "Figure 1", .settings = "1 ray/pixel, depth 5", .spp = 1,
-                         .seconds = 0.25, .threads = 1, .rays = {40000, 10000, 30000},
-                         .rmse = NAN, .rel_mse = NAN, .efficiency = NAN,
-                         .rmse_spread = NAN, .rel_mse_spread = NAN, .reference_share = NAN};
+    rows[0] = (TableRow){.panel = "Figure 11a",
+                         .settings = "64 spp, M=1 depth=5",
+                         .spp = 64,
+                         .seconds = 1.5,
+                         .threads = 8,
+                         .rays = {1000000, 1500000, 500000},
+                         .rmse = 0.0123,
+                         .rel_mse = 4.56e-3,
+                         .efficiency = 146.198830409,
+                         .nonfinite = 3,
+                         .runs = 5,
+                         .rmse_spread = 0.0021,
+                         .rel_mse_spread = 3e-4,
+                         .reference_share = 0.125,
+                         .infinite_variance = 1};
+    rows[1] = (TableRow){.panel = "Figure 1",
+                         .settings = "1 ray/pixel, depth 5",
+                         .spp = 1,
+                         .seconds = 0.25,
+                         .threads = 1,
+                         .rays = {40000, 10000, 30000},
+                         .rmse = NAN,
+                         .rel_mse = NAN,
+                         .efficiency = NAN,
+                         .rmse_spread = NAN,
+                         .rel_mse_spread = NAN,
+                         .reference_share = NAN};
 }
 
 /* Mrays/s is all rays (camera + bounce + shadow) per second, in millions: 3e6 rays in
@@ -142,15 +160,28 @@ static void test_csv_values(void **state)
     sample_rows(rows);
     char lines[4][FIELDS][FIELD_SIZE];
     assert_int_equal(csv_round_trip(rows, 2, lines), 3);
-    const char *header[FIELDS] = {"panel", "settings", "spp", "seconds", "threads",
-                                  "camera_rays", "bounce_rays", "shadow_rays",
-                                  "mrays_per_second", "rmse", "rel_mse", "efficiency",
-                                  "nonfinite", "runs", "rmse_sd", "rel_mse_sd",
-                                  "reference_share", "variance"};
+    const char *header[FIELDS] = {"panel",
+                                  "settings",
+                                  "spp",
+                                  "seconds",
+                                  "threads",
+                                  "camera_rays",
+                                  "bounce_rays",
+                                  "shadow_rays",
+                                  "mrays_per_second",
+                                  "rmse",
+                                  "rel_mse",
+                                  "efficiency",
+                                  "nonfinite",
+                                  "runs",
+                                  "rmse_sd",
+                                  "rel_mse_sd",
+                                  "reference_share",
+                                  "variance"};
     for (int f = 0; f < FIELDS; f++)
         assert_string_equal(lines[0][f], header[f]);
     for (int i = 0; i < 2; i++) {
-        char (*fields)[FIELD_SIZE] = lines[i + 1];
+        char(*fields)[FIELD_SIZE] = lines[i + 1];
         const TableRow *r = &rows[i];
         assert_string_equal(fields[0], r->panel);
         assert_string_equal(fields[1], r->settings);
@@ -279,11 +310,11 @@ static void test_print_rows(void **state)
         assert_true(strncmp(printed.lines[i + 1], rows[i].panel, strlen(rows[i].panel)) == 0);
         assert_non_null(strstr(printed.lines[i + 1], rows[i].settings));
     }
-    const char *measured[] = {"3", "inf-var", "5", "12%", "146", "4.560e-03", "+-0.00210",
-                              "0.01230", "2.00", "500000", "1500000", "1000000", "8", "1.50",
-                              "64.0"};
-    const char *unmeasured[] = {"0", "finite", "1", "-", "-", "-", "-", "-", "0.32", "30000",
-                                "10000", "40000", "1", "0.25", "1.0"};
+    const char *measured[] = {"3",         "inf-var",   "5",       "12%",  "146",
+                              "4.560e-03", "+-0.00210", "0.01230", "2.00", "500000",
+                              "1500000",   "1000000",   "8",       "1.50", "64.0"};
+    const char *unmeasured[] = {"0",    "finite", "1",     "-",     "-", "-",    "-",  "-",
+                                "0.32", "30000",  "10000", "40000", "1", "0.25", "1.0"};
     char word[32];
     for (int n = 0; n < 15; n++) {
         assert_string_equal(word_from_end(printed.lines[1], n, word), measured[n]);
@@ -356,8 +387,9 @@ static void test_numbers_csv_by_hand(void **state)
     fclose(file);
     text[length] = '\0';
     assert_string_equal(text, "a,b,c\n5,0.1235,-2.50\n42,0.3333,0.00\n");
-    assert_int_equal(table_write_numbers_csv("/nonexistent-folder/table.csv", "a", values, 1, 1,
-                                             decimals), -1);
+    assert_int_equal(
+        table_write_numbers_csv("/nonexistent-folder/table.csv", "a", values, 1, 1, decimals),
+        -1);
 }
 
 int main(void)

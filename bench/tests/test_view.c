@@ -68,7 +68,9 @@ static void test_pixel_inside_the_image(void **state)
 }
 
 #if CHAPTER >= 8
-enum { SIDE = 64 };
+enum {
+    SIDE = 64
+};
 
 static Hit trace(const Scene *scene, Ray ray)
 {
@@ -93,7 +95,8 @@ static void test_mirror_image_seen_there(void **state)
     assert_int_equal(scene.materials[wall.material].kind, MATERIAL_MIRROR);
     Vec3 n = vec3_dot(wall.normal, ray.dir) < 0.0 ? wall.normal : vec3_neg(wall.normal);
     Vec3 reflected = mirror_reflect(ray.dir, n);
-    Hit lamp = trace(&scene, (Ray){ray_offset_origin(wall.point, n, reflected, wall.scale), reflected});
+    Hit lamp = trace(&scene,
+                     (Ray){ray_offset_origin(wall.point, n, reflected, wall.scale), reflected});
     assert_int_equal(scene.materials[lamp.material].kind, MATERIAL_LIGHT);
     mirror_planes_free(&mirrors);
     scene_free(&scene);
@@ -114,11 +117,12 @@ static void test_caustic_seen_there(void **state)
     const Sphere *glass = &scene.spheres[0];
     assert_int_equal(scene.materials[glass->material].kind, MATERIAL_GLASS);
     Vec3 lamp = vec3(5, 0, 4.99); /* the room's lamp, 4 < x < 6, -1 < y < 1 */
-    Vec3 axis = vec3_normalize(vec3_sub(glass->center, lamp)), to_seen = vec3_sub(seen.point, lamp);
+    Vec3 axis = vec3_normalize(vec3_sub(glass->center, lamp)),
+         to_seen = vec3_sub(seen.point, lamp);
     double along = vec3_dot(to_seen, axis);
     double off_line = vec3_length(vec3_sub(to_seen, vec3_scale(axis, along)));
-    print_message("    pixel (%d, %d): %.3f beyond the sphere's centre, %.3f off the line\n", col,
-                  row, along - vec3_length(vec3_sub(glass->center, lamp)), off_line);
+    print_message("    pixel (%d, %d): %.3f beyond the sphere's centre, %.3f off the line\n",
+                  col, row, along - vec3_length(vec3_sub(glass->center, lamp)), off_line);
     assert_true(along > vec3_length(vec3_sub(glass->center, lamp)) + glass->radius);
     assert_true(off_line < 0.3);
     scene.materials[glass->material].kind = MATERIAL_MIRROR;
