@@ -53,7 +53,7 @@ const scenes = Object.create(null);     /* name: its text as the page has it (ed
 const references = Object.create(null); /* file name: {image, mse, relMse, spp} once loaded */
 const referenceWaiters = Object.create(null);
 const page = {layout: "one", fairness: "samples", reference: "", workers: 0, workersGiven: false,
-              paths: 8, pixel: null, note: "", error: ""};
+              paths: 8, pixel: null, note: "", error: "", checked: 0 /* addresses answered */};
 /* Characters the editor's text box shows at most: a longer text (a file opened) is kept
  * but not laid out, which would hold the page for many seconds. */
 const EDITOR_SHOWN_MAX = 1 << 20;
@@ -200,6 +200,7 @@ function loadReference(name) {
 
 function restart() {
     clearTimeout(restart.timer);
+    restart.pending = true;
     restart.timer = setTimeout(startRenders, 30);
 }
 
@@ -208,6 +209,7 @@ let rendered = null; /* renderSignature() of the renders started */
 
 function startRenders() {
     const mine = ++generation;
+    restart.pending = false;
     rendered = renderSignature();
     pool.mode = page.fairness;
     pool.run([]);
@@ -441,6 +443,7 @@ function applyFragment(fragment) {
     const question = {fragment: fragment.replace(/^#/, ""), scenes: Object.keys(scenes).join("\n"), cores: cores()};
     return helper.ask("fragment", null, question).then(function (answer) {
         if (mine !== addressGeneration) return;
+        page.checked++;
         const given = answer.state.page;
         page.error = "";
         page.note = given.note;
@@ -466,6 +469,7 @@ function applyFragment(fragment) {
         }
     }, function (error) {
         if (mine !== addressGeneration) return;
+        page.checked++;
         page.error = error.message;
         page.note = "";
         stopRenders("not rendered: the address is refused (above)");
@@ -487,6 +491,7 @@ function showAddress() {
 
 function stopRenders(why) {
     clearTimeout(restart.timer);
+    restart.pending = false;
     generation++;
     rendered = null;
     pool.run([]);
@@ -566,6 +571,11 @@ window.labTest = {
             });
         });
     },
+    /* What lab_record says to these numbers: "" when it records, else its message. */
+    recordError: function (sceneName, settings, col, row, first, count) {
+        return labTest.record(sceneName, settings, col, row, first, count)
+            .then(function () { return ""; }, function (error) { return error.message; });
+    },
     record: function (sceneName, settings, col, row, first, count) {
         const setup = {key: "test" + (++jobs), sceneName: sceneName, sceneText: scenes[sceneName],
                        settings: settings};
@@ -612,7 +622,7 @@ window.labTest = {
                         hint: $("inspector-hint").textContent},
             longTasks: longTasks.slice(), longestFrame: frame.longest || 0,
             workers: pool.workers.length, address: $("address-message").textContent,
-            addressRefused: !!page.error, book: $("book").getAttribute("href"),
+            addressRefused: !!page.error, checked: page.checked, restarting: !!restart.pending, book: $("book").getAttribute("href"),
         };
     },
 };

@@ -49,15 +49,16 @@ function configure(setup) {
     configured = "";
     if (!loaded || loaded.name !== setup.sceneName || loaded.text !== setup.sceneText) {
         loaded = null;
-        const name = copyIn(setup.sceneName);
-        let text;
+        const text = copyIn(setup.sceneText);
+        let name;
         try {
-            text = copyIn(setup.sceneText);
+            name = copyIn(setup.sceneName);
         } finally {
-            M._free(name.pointer);
+            if (!name) M._free(text.pointer);
         }
         const status = M._lab_load_scene(lab, text.pointer, text.length, name.pointer);
         M._free(text.pointer);
+        M._free(name.pointer);
         if (status !== 0)
             throw failure();
         loaded = {name: setup.sceneName, text: setup.sceneText};
