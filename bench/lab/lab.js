@@ -598,6 +598,22 @@ window.labTest = {
         return helper.ask("fragment", null, {fragment: fragment, scenes: Object.keys(scenes).join("\n"), cores: cores()})
             .then(function (answer) { return {state: answer.state}; }, function (error) { return {error: error.message}; });
     },
+    /* The pool's choice at equal time between two renders: A with 1 s of finished tasks
+     * and one task in flight for 2 s, B with 2.5 s and none: {chose, used: [A's, B's]}. */
+    equalTimeChoice: function () {
+        const info = {width: 16, height: 16, steps: 100, settings: {chapter: 3, M: 1}};
+        const a = new Render({key: "probe-a"}, info), b = new Render({key: "probe-b"}, info);
+        const probe = new Pool(0, function () {}, function () {});
+        probe.mode = "time";
+        probe.renders = [a, b];
+        a.seconds = 1;
+        a.issued = 3;
+        a.inFlight = 1;
+        b.seconds = 2.5;
+        b.issued = 2;
+        probe.workers = [{render: a, sent: performance.now() - 2000}];
+        return {chose: probe.choose() === a ? "A" : "B", used: [probe.secondsUsed(a), probe.secondsUsed(b)]};
+    },
     release: function () {
         if (labTest.kept) labTest.kept.setWorkers(0);
         labTest.kept = null;

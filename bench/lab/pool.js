@@ -25,7 +25,10 @@ function newLabWorker() {
     return new Worker(workerUrl);
 }
 
-/* Pixels per task, about: a band of rows takes a few tens of milliseconds. */
+/* Pixels per task, about, at one shadow ray per vertex: a band of rows takes a few tens
+ * of milliseconds. M shadow rays make a sample about (1 + M) / 2 times as costly, and the
+ * band that much smaller, so that a task stays short: a render at equal time then stops
+ * within a short task of its budget. */
 const TASK_SAMPLES = 8192;
 
 class Render {
@@ -39,8 +42,9 @@ class Render {
         this.steps = info.steps;
         const pixels = this.width * this.height;
         const perStep = info.settings.chapter === 8 ? info.settings.spp : 1;
+        const cost = info.settings.M === undefined ? 1 : (1 + info.settings.M) / 2;
         this.bandRows = Math.max(1, Math.min(this.height,
-                                             bandRows || Math.round(TASK_SAMPLES / (this.width * perStep))));
+                                             bandRows || Math.round(TASK_SAMPLES / (this.width * perStep * cost))));
         this.bands = Math.ceil(this.height / this.bandRows);
         this.mean = new Float64Array(3 * pixels);
         this.m2 = new Float64Array(3 * pixels);
