@@ -692,10 +692,14 @@ static int check_scene_name(Lab *lab, const char *key, const char *name, const c
     for (const char *p = scenes; *p; p += strcspn(p, "\n"), p += *p == '\n')
         if (strcspn(p, "\n") == length && strncmp(p, name, length) == 0 && length > 0)
             return 0;
-    char list[1024];
-    snprintf(list, sizeof list, "%s", scenes);
-    for (char *p = list; (p = strchr(p, '\n'));)
-        *p = ',';
+    char list[1024] = "";
+    size_t n = 0;
+    for (const char *p = scenes; *p && n < sizeof list; p += *p == '\n') {
+        int k = (int)strcspn(p, "\n"), written;
+        written = snprintf(list + n, sizeof list - n, "%s%.*s", n ? ", " : "", k, p);
+        n += written > 0 ? (size_t)written : 0;
+        p += k;
+    }
     return fail_key(lab, key, "expected one of the page's scenes (%s), got '%s'", list, name);
 }
 
