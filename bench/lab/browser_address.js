@@ -181,7 +181,7 @@ const TAKEN = [
 
 async function settled(browser) {
     await browser.until("(function (s) { return s.addressRefused || !s.restarting && s.panels.every(function (p) { " +
-                        "return p.complete || (p.error && p.error.indexOf('not rendered') < 0); }); })(labTest.state())",
+                        "return p.complete || (p.error && p.error.indexOf('the address is refused') < 0); }); })(labTest.state())",
                         120, "the page to render or refuse its address");
     return browser.evaluate("labTest.state()");
 }
@@ -300,6 +300,22 @@ async function checkSceneSize(browser, report, url, last, editorDir) {
            (shown === message ? " is " + last.program + "'s message" : " but " + last.program + " says '" + message + "'"));
 }
 
+/* A scene file opened in the editor (the file input): its text is what apply reads. */
+async function checkSceneFile(browser, report, url, editorDir) {
+    const file = path.resolve(editorDir, "opened.scene");
+    fs.writeFileSync(file, fs.readFileSync("scenes/room.scene", "utf8") + "cube white 0 0 0 1\n");
+    await browser.navigate(url + "#chapter=2&size=16&spp=1", 30);
+    await settled(browser);
+    const input = await browser.command("Runtime.evaluate", {expression: "document.getElementById('scene-file')"});
+    await browser.command("DOM.enable");
+    await browser.command("DOM.setFileInputFiles", {files: [file], objectId: input.result.objectId});
+    await browser.until("editorText.indexOf('cube white') >= 0", 30, "the opened file in the editor");
+    const shown = await browser.evaluate("applyScene()", 60);
+    fs.rmSync(file);
+    report(shown === "room.scene:31: unknown keyword 'cube'",
+           "a scene file opened in the editor is what apply reads: '" + shown + "'");
+}
+
 async function checkBook(browser, report, url) {
     await browser.navigate(url + "#chapter=3&size=16&spp=1", 30);
     const state = await settled(browser);
@@ -311,4 +327,4 @@ async function checkBook(browser, report, url) {
 }
 
 module.exports = {commandLine, checkShared, checkRanges, checkHostile, checkHistory, checkLimits, checkEqualTime,
-                  checkSceneSize, checkBook};
+                  checkSceneSize, checkSceneFile, checkBook};

@@ -396,6 +396,7 @@ async function screenshots(browser, url) {
         await address.checkLimits(browser, report, path.resolve(labDir, "lab-native"));
         await address.checkEqualTime(browser, report, url);
         await address.checkSceneSize(browser, report, url, last, last.editor);
+        await address.checkSceneFile(browser, report, url, last.editor);
         await address.checkBook(browser, report, url);
         await browser.navigate(url + "#chapter=7&size=16%20chapter%3D2&workers=1000", 30);
         await browser.until("labTest.state().addressRefused", 30, "the refused address");

@@ -472,7 +472,7 @@ function applyFragment(fragment) {
         page.checked++;
         page.error = error.message;
         page.note = "";
-        stopRenders("not rendered: the address is refused (above)");
+        stopRenders("the address is refused (above)");
         showAddress();
     });
 }
