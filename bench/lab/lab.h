@@ -73,8 +73,9 @@ int lab_render_band(Lab *lab, int step, int row0, int rows, double *out);
 double lab_rays(const Lab *lab, int kind);
 
 /* Samples first .. first + count - 1 (count at most 64, all among the render's samples
- * of a pixel) of pixel (col, row), each path recorded (record.h), as JSON: {"col":C,"row":R,"paths":[{"sample":S,...}, ...]}. NULL on
- * failure (lab_error). The text stays valid until the next call. */
+ * of a pixel) of pixel (col, row), each path recorded (record.h), as JSON:
+ * {"col":C,"row":R,"paths":[{"sample":S,...}, ...]}. NULL on failure (lab_error). The text
+ * stays valid until the next call. */
 const char *lab_record(Lab *lab, int col, int row, int first, int count);
 
 /* The scene for drawing its plan: camera, materials, triangles, spheres, point lights,
