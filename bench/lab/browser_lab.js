@@ -21,7 +21,10 @@
  *      what the chapter programs measure (lab-reference --error) for the same image;
  *   6. screenshots of the page's states (one panel with the inspector open on a clicked
  *      pixel, its plan, two panels side by side with their plot, the editor with an
- *      error) in OUT_DIR, for a person to look at.
+ *      error, a refused address) in OUT_DIR, for a person to look at;
+ *   7. the address, the controls and the limits (browser_address.js): the command line's
+ *      words for the same values, every range's ends, hostile addresses, later changes
+ *      and history, the inspector's and the editor's limits, equal time, the book's link.
  * The agreement test (after Mitsuba's render tests): where two values differ, z = |a - b|
  * / (sqrt(2) se), se the page's per-pixel standard error (the same estimator and samples
  * on both sides), must not reject at the Sidak-corrected level 0.01 over all values.
@@ -32,6 +35,7 @@
 const fs = require("fs");
 const path = require("path");
 const {Chromium, fileUrl} = require("./chromium.js");
+const address = require("./browser_address.js");
 
 const childProcess = require("child_process");
 
@@ -232,6 +236,9 @@ function prepareNative() {
             throw new Error("the command line did not refuse " + edit[0] + " (status " + result.status + "): " + result.stderr);
         edit.message = line.slice(prefix.length);
     });
+    last.path = program(last.number);
+    last.editor = editor;
+    last.verdicts = address.commandLine(program(7));
     return last;
 }
 
@@ -382,6 +389,18 @@ async function screenshots(browser, url) {
         await checkReference(browser, url);
         await checkEditor(browser, url, last);
         await screenshots(browser, url);
+        await address.checkShared(browser, report, last.verdicts);
+        await address.checkRanges(browser, report);
+        await address.checkHostile(browser, report, url);
+        await address.checkHistory(browser, report, url);
+        await address.checkLimits(browser, report, path.resolve(labDir, "lab-native"));
+        await address.checkEqualTime(browser, report, url);
+        await address.checkSceneSize(browser, report, url, last, last.editor);
+        await address.checkSceneFile(browser, report, url, last.editor);
+        await address.checkBook(browser, report, url);
+        await browser.navigate(url + "#chapter=7&size=16%20chapter%3D2&workers=1000", 30);
+        await browser.until("labTest.state().addressRefused", 30, "the refused address");
+        await browser.screenshot(path.join(outDir, "lab_address_refused.png"));
         report(browser.problems.length === 0, "no console message on the page through all of it" +
                (browser.problems.length ? ": " + browser.problems.join("; ") : ""));
     } catch (error) {

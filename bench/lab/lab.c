@@ -6,6 +6,10 @@
  */
 #include "lab.h"
 
+#include <errno.h>
+#include <float.h>
+#include <limits.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -26,6 +30,18 @@
 
 #define LAB_CHAPTERS 8
 #define LAB_SIZE_MAX 4096
+
+/* Settings text and addresses: characters and key=value words at most. The inspector's
+ * paths at most; workers at most (the chapter programs' --threads). */
+#define LAB_TEXT_MAX 4096
+#define LAB_WORDS_MAX 64
+#define LAB_PATHS_MAX 64
+#define LAB_WORKERS_MAX 1024
+
+/* A scene's text at most: the command line's limit for a scene file (scene_file.h), with
+ * its message. */
+#define LAB_SCENE_BYTES_MAX ((size_t)64 << 20)
+#define LAB_SCENE_BYTES_MAX_TEXT "64 MiB"
 
 /* Chapter 8's photons per pass and first radius for an image 800 pixels wide, as
  * chapters/ch08_photon_map.c sets them: they scale with the image (docs/chapter8.md). */
@@ -67,6 +83,8 @@ struct Lab {
     double rays[4];
     Json json;
     char hash[17];
+    const char *prefix; /* of the keys in messages: "" or "b." */
+    char words[LAB_TEXT_MAX + 1], raw_words[LAB_TEXT_MAX + 1]; /* split_words' */
     char error[4400];
 };
 
@@ -85,6 +103,7 @@ Lab *lab_new(void)
     if (lab) {
         scene_init(&lab->scene);
         json_init(&lab->json);
+        lab->prefix = "";
     }
     return lab;
 }
@@ -126,6 +145,11 @@ int lab_load_scene(Lab *lab, const char *text, int length, const char *name)
 {
     free_scene(lab);
     snprintf(lab->scene_name, sizeof lab->scene_name, "%s", name);
+    if (length < 0 || (size_t)length > LAB_SCENE_BYTES_MAX)
+        return fail(lab,
+                    "%s:0: larger than " LAB_SCENE_BYTES_MAX_TEXT
+                    " (%d bytes), the limit for a scene file",
+                    lab->scene_name, length);
     if (scene_parse(text, (size_t)length, lab->scene_name, &lab->scene, &lab->file, lab->error,
                     sizeof lab->error) != 0)
         return -1;
@@ -181,37 +205,111 @@ static LabSettings chapter_defaults(int chapter)
     return s;
 }
 
-static int whole(Lab *lab, const char *key, const char *value, long min, long max, long *out)
+/* A message about setting `key`, named with the prefix of the panel it belongs to
+ * ("b." in an address: docs/lab.md). */
+static int fail_key(Lab *lab, const char *key, const char *format, ...)
 {
+    int n = snprintf(lab->error, sizeof lab->error, "%s%s: ", lab->prefix, key);
+    if (n < 0 || n >= (int)sizeof lab->error)
+        return -1;
+    va_list args;
+    va_start(args, format);
+    vsnprintf(lab->error + n, sizeof lab->error - (size_t)n, format, args);
+    va_end(args);
+    return -1;
+}
+
+/* What a number setting takes: [min, max] (open: (min, max]), whole numbers only or
+ * any, and a word it takes instead ("bounded"), or NULL. */
+typedef struct {
+    double min, max;
+    int whole, open;
+    const char *word;
+} Range;
+
+/* The range in words, as the command line says it (bench/cli.c): "a whole number from
+ * 1 to 4096", "a number in (0, 1]", and "or 'WORD'". */
+static void describe_range(const Range *range, char *text, size_t size)
+{
+    int n = range->whole ? snprintf(text, size, "a whole number from %.0f to %.0f", range->min,
+                                    range->max)
+                         : snprintf(text, size, "a number in %s%g, %g]",
+                                    range->open ? "(" : "[", range->min, range->max);
+    if (range->word && n >= 0 && (size_t)n < size)
+        snprintf(text + n, size - (size_t)n, " or '%s'", range->word);
+}
+
+/* A number in its range, the whole text and nothing else, in decimal, judged as the
+ * chapter programs judge a flag's value (bench/cli.c), in the same order and words:
+ * empty, white space, not a decimal number (hexadecimal, nan, inf, a lone sign), beyond
+ * a double's range either way, not whole, out of the range. The browser test compares
+ * these messages with the command line's. */
+static int number(Lab *lab, const char *key, const char *text, const Range *range, double *out)
+{
+    char expected[96];
+    describe_range(range, expected, sizeof expected);
     char *end;
-    long n = strtol(value, &end, 10);
-    if (*value == '\0' || *end != '\0' || n < min || n > max)
-        return fail(lab, "%s: expected a whole number from %ld to %ld, got '%s'", key, min, max,
-                    value);
-    *out = n;
+    errno = 0;
+    double value = strtod(text, &end);
+    int underflow =
+        (errno == ERANGE && fabs(value) <= 1.0) || (value != 0.0 && fabs(value) < DBL_MIN);
+    if (*text == '\0')
+        return fail_key(lab, key, "expected %s, got an empty word", expected);
+    if (strpbrk(text, " \t\n\v\f\r"))
+        return fail_key(lab, key, "'%s' has white space in it; expected %s alone", text,
+                        expected);
+    if (*end != '\0' || strspn(text, "+-0123456789.eE") != strlen(text))
+        return fail_key(lab, key,
+                        "'%s' is not a decimal number (such as 16, 0.25 or 1e-3); expected %s",
+                        text, expected);
+    if (underflow)
+        return fail_key(lab, key,
+                        "'%s' is too small to compute with (below %g, the smallest double "
+                        "with all its digits); expected %s",
+                        text, DBL_MIN, expected);
+    if (errno == ERANGE)
+        return fail_key(lab, key, "'%s' is too large for a double (above %g); expected %s",
+                        text, DBL_MAX, expected);
+    if (range->whole && value != floor(value))
+        return fail_key(lab, key, "'%s' is not a whole number; expected %s", text, expected);
+    if (!(value >= range->min && value <= range->max) || (range->open && !(value > range->min)))
+        return fail_key(lab, key, "expected %s, got '%s'", expected, text);
+    *out = value;
     return 0;
 }
 
-/* A real number in [min, max], or in (min, max] where `open`. */
-static int real(Lab *lab, const char *key, const char *value, double min, double max, int open,
-                double *out)
+/* A whole number in [min, max] (a setting's, or the page's: pixel, paths). */
+static int whole(Lab *lab, const char *key, const char *text, int min, int max, int *out)
 {
-    char *end;
-    double x = strtod(value, &end);
-    if (*value == '\0' || *end != '\0' || !(x >= min && x <= max) || (open && x == min))
-        return fail(lab,
-                    open ? "%s: expected a number above %g, at most %g, got '%s'"
-                         : "%s: expected a number from %g to %g, got '%s'",
-                    key, min, max, value);
-    *out = x;
+    Range range = {min, max, 1, 0, NULL};
+    double value;
+    if (number(lab, key, text, &range, &value) != 0)
+        return -1;
+    *out = (int)value;
     return 0;
+}
+
+/* One of `count` words, or the command line's message: "expected 'a', 'b' or 'c'". */
+static int choice(Lab *lab, const char *key, const char *text, const char *const *words,
+                  int count, int *out)
+{
+    for (int i = 0; i < count; i++)
+        if (strcmp(text, words[i]) == 0)
+            return *out = i, 0;
+    char list[256] = "";
+    for (int i = 0, n = 0; i < count && n >= 0 && (size_t)n < sizeof list; i++)
+        n += snprintf(list + n, sizeof list - (size_t)n, "%s'%s'",
+                      i == 0           ? ""
+                      : i == count - 1 ? " or "
+                                       : ", ",
+                      words[i]);
+    return fail_key(lab, key, "expected %s, got '%s'", list, text);
 }
 
 /* The settings: each key, the chapter that introduces it, and for a number where it goes
- * in LabSettings (an int or a double) and its range (`open`: the lower end excluded). */
+ * in LabSettings (an int or a double) and its range. */
 typedef enum {
-    WHOLE,
-    REAL,
+    NUMBER,
     WORD
 } Kind;
 static const struct {
@@ -219,76 +317,63 @@ static const struct {
     int chapter;
     Kind kind;
     size_t offset;
-    double min, max;
-    int open;
+    Range range;
 } KEYS[] = {
-    {"size", 1, WHOLE, offsetof(LabSettings, size), 1, LAB_SIZE_MAX, 0},
-    {"depth", 1, WHOLE, offsetof(LabSettings, path.max_depth), 1, 1000, 0},
-    {"seed", 1, WORD, 0, 0, 0, 0},
-    {"program", 1, WORD, 0, 0, 0, 0},
-    {"spp", 2, WHOLE, offsetof(LabSettings, spp), 1, 1 << 20, 0},
-    {"sampling", 2, WORD, 0, 0, 0, 0},
-    {"M", 3, WHOLE, offsetof(LabSettings, path.shadow_rays), 0, 1000, 0},
-    {"fresnel", 4, WORD, 0, 0, 0, 0},
-    {"sigma", 5, WORD, 0, 0, 0, 0},
-    {"rr", 6, WORD, 0, 0, 0, 0},
-    {"mis", 7, WHOLE, offsetof(LabSettings, path.mis), 0, 1, 0},
-    {"mirror", 7, WHOLE, offsetof(LabSettings, path.mirror_light), 0, 1000, 0},
-    {"guide", 7, REAL, offsetof(LabSettings, path.sphere_guide), 0, 1000, 0},
-    {"passes", 8, WHOLE, offsetof(LabSettings, passes), 1, 1 << 20, 0},
-    {"photons", 8, WHOLE, offsetof(LabSettings, photons), 1, 1 << 26, 0},
-    {"radius", 8, REAL, offsetof(LabSettings, radius), 0, 1e50, 1},
-    {"alpha", 8, REAL, offsetof(LabSettings, alpha), 0, 1, 1},
+    {"size", 1, NUMBER, offsetof(LabSettings, size), {1, LAB_SIZE_MAX, 1, 0, NULL}},
+    {"depth", 1, NUMBER, offsetof(LabSettings, path.max_depth), {1, 1000, 1, 0, NULL}},
+    {"seed", 1, WORD, 0, {0, 0, 0, 0, NULL}},
+    {"program", 1, WORD, 0, {0, 0, 0, 0, NULL}},
+    {"spp", 2, NUMBER, offsetof(LabSettings, spp), {1, 1 << 20, 1, 0, NULL}},
+    {"sampling", 2, WORD, 0, {0, 0, 0, 0, NULL}},
+    {"M", 3, NUMBER, offsetof(LabSettings, path.shadow_rays), {0, 1000, 1, 0, NULL}},
+    {"fresnel", 4, WORD, 0, {0, 0, 0, 0, NULL}},
+    {"sigma", 5, NUMBER, offsetof(LabSettings, sigma), {0, 10, 0, 0, "scene"}},
+    {"rr", 6, NUMBER, offsetof(LabSettings, path.rr_survival), {0, 1, 0, 1, "bounded"}},
+    {"mis", 7, NUMBER, offsetof(LabSettings, path.mis), {0, 1, 1, 0, NULL}},
+    {"mirror", 7, NUMBER, offsetof(LabSettings, path.mirror_light), {0, 1000, 1, 0, NULL}},
+    {"guide", 7, NUMBER, offsetof(LabSettings, path.sphere_guide), {0, 1000, 0, 0, NULL}},
+    {"passes", 8, NUMBER, offsetof(LabSettings, passes), {1, 1 << 20, 1, 0, NULL}},
+    {"photons", 8, NUMBER, offsetof(LabSettings, photons), {1, 1 << 26, 1, 0, NULL}},
+    {"radius", 8, NUMBER, offsetof(LabSettings, radius), {0, 1e50, 0, 1, NULL}},
+    {"alpha", 8, NUMBER, offsetof(LabSettings, alpha), {0, 1, 0, 1, NULL}},
 };
 
 static int set_sampling(Lab *lab, LabSettings *s, const char *value)
 {
-    static const struct {
-        const char *name;
-        PixelSampling sampling;
-        int chapter;
-    } modes[] = {{"centre", PIXEL_CENTRE, 1},
-                 {"subpixels", PIXEL_SUBPIXELS, 2},
-                 {"random", PIXEL_RANDOM, 2},
-                 {"stratified", PIXEL_STRATIFIED, 7},
-                 {"progressive", PIXEL_PROGRESSIVE, 8}};
-    for (size_t i = 0; i < sizeof modes / sizeof modes[0]; i++)
-        if (strcmp(value, modes[i].name) == 0) {
-            if (modes[i].chapter > s->chapter)
-                return fail(lab, "sampling: %s is chapter %d's", value, modes[i].chapter);
-            s->sampling = modes[i].sampling;
-            return 0;
-        }
-    return fail(lab,
-                "sampling: expected centre, subpixels, random, stratified or progressive, "
-                "got '%s'",
-                value);
+    static const char *const names[] = {"centre", "subpixels", "random", "stratified",
+                                        "progressive"};
+    static const PixelSampling modes[] = {PIXEL_CENTRE, PIXEL_SUBPIXELS, PIXEL_RANDOM,
+                                          PIXEL_STRATIFIED, PIXEL_PROGRESSIVE};
+    static const int chapters[] = {1, 2, 2, 7, 8};
+    int i;
+    if (choice(lab, "sampling", value, names, 5, &i) != 0)
+        return -1;
+    if (chapters[i] > s->chapter)
+        return fail_key(lab, "sampling", "%s is chapter %d's", value, chapters[i]);
+    s->sampling = modes[i];
+    return 0;
 }
 
-/* A setting whose value is a word (or a number or a word). */
+/* A setting whose value is a word. */
 static int set_word(Lab *lab, LabSettings *s, const char *key, const char *value)
 {
     if (strcmp(key, "seed") == 0) {
         char *end;
+        errno = 0;
         s->seed = strtoull(value, &end, 10);
-        if (*value < '0' || *value > '9' || *end != '\0')
-            return fail(lab, "seed: expected digits, got '%s'", value);
+        if (*value < '0' || *value > '9' || *end != '\0' || errno != 0)
+            return fail_key(lab, key, "expected a whole number from 0 to 2^64-1, got '%s'",
+                            value);
     } else if (strcmp(key, "program") == 0) {
         snprintf(s->program, sizeof s->program, "%s", value);
     } else if (strcmp(key, "sampling") == 0) {
         return set_sampling(lab, s, value);
-    } else if (strcmp(key, "fresnel") == 0) {
-        if (strcmp(value, "schlick") != 0 && strcmp(value, "exact") != 0)
-            return fail(lab, "fresnel: expected schlick or exact, got '%s'", value);
-        s->path.fresnel = strcmp(value, "exact") == 0 ? FRESNEL_EXACT : FRESNEL_SCHLICK;
-    } else if (strcmp(key, "sigma") == 0) {
-        s->sigma = -1.0;
-        if (strcmp(value, "scene") != 0)
-            return real(lab, key, value, 0.0, 10.0, 0, &s->sigma);
-    } else { /* rr */
-        s->path.rr_throughput = strcmp(value, "bounded") == 0;
-        if (!s->path.rr_throughput)
-            return real(lab, key, value, 0.0, 1.0, 1, &s->path.rr_survival);
+    } else { /* fresnel */
+        static const char *const modes[] = {"schlick", "exact"};
+        int exact;
+        if (choice(lab, key, value, modes, 2, &exact) != 0)
+            return -1;
+        s->path.fresnel = exact ? FRESNEL_EXACT : FRESNEL_SCHLICK;
     }
     return 0;
 }
@@ -300,52 +385,125 @@ static int set_key(Lab *lab, LabSettings *s, const char *key, const char *value)
     while (i < count && strcmp(KEYS[i].key, key) != 0)
         i++;
     if (i == count)
-        return fail(lab, "unknown setting '%s'", key);
+        return fail(lab, "unknown setting '%s%s'", lab->prefix, key);
     if (KEYS[i].chapter > s->chapter)
-        return fail(lab, "%s: chapter %d introduces it", key, KEYS[i].chapter);
+        return fail_key(lab, key, "chapter %d introduces it", KEYS[i].chapter);
     if (strcmp(key, "mirror") == 0)
         s->mirror_given = 1;
-    char *field = (char *)s + KEYS[i].offset;
-    if (KEYS[i].kind == REAL)
-        return real(lab, key, value, KEYS[i].min, KEYS[i].max, KEYS[i].open, (double *)field);
     if (KEYS[i].kind == WORD)
         return set_word(lab, s, key, value);
-    long n;
-    if (whole(lab, key, value, (long)KEYS[i].min, (long)KEYS[i].max, &n) != 0)
+    const Range *range = &KEYS[i].range;
+    int word = range->word && strcmp(value, range->word) == 0;
+    if (strcmp(key, "rr") == 0)
+        s->path.rr_throughput = word;
+    if (strcmp(key, "sigma") == 0 && word)
+        s->sigma = -1.0;
+    double x;
+    if (word)
+        return 0;
+    if (number(lab, key, value, range, &x) != 0)
         return -1;
-    *(int *)field = (int)n;
+    char *field = (char *)s + KEYS[i].offset;
+    if (range->whole)
+        *(int *)field = (int)x;
+    else
+        *(double *)field = x;
     return 0;
 }
 
-/* Parse "key=value" words into *s: chapter=N first, then the others over its defaults. */
-static int parse_settings(Lab *lab, const char *text, LabSettings *s)
+/* ---- words: settings text and the page's address ------------------------------------ */
+
+/* key=value words, each value decoded from its %XX escapes: one value per key, which
+ * cannot carry a separator into the next. */
+typedef struct {
+    const char *key[LAB_WORDS_MAX], *value[LAB_WORDS_MAX];
+    int count;
+} Words;
+
+static int hex_digit(char c)
 {
-    char words[4096];
-    if (snprintf(words, sizeof words, "%s", text) >= (int)sizeof words)
-        return fail(lab, "settings: longer than %d characters", (int)sizeof words - 1);
-    char *word[64], *value[64];
-    int count = 0, chapter = 0;
-    for (char *w = strtok(words, " &"); w; w = strtok(NULL, " &")) {
-        char *equals = strchr(w, '=');
-        if (!equals)
-            return fail(lab, "settings: expected key=value, got '%s'", w);
-        if (count == 64)
-            return fail(lab, "settings: more than 64 of them");
-        *equals = '\0';
-        word[count] = w;
-        value[count++] = equals + 1;
-        if (strcmp(w, "chapter") == 0) {
-            long n;
-            if (whole(lab, "chapter", equals + 1, 1, LAB_CHAPTERS, &n) != 0)
-                return -1;
-            chapter = (int)n;
+    return c >= '0' && c <= '9'   ? c - '0'
+           : c >= 'a' && c <= 'f' ? c - 'a' + 10
+           : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                  : -1;
+}
+
+/* Decode text's %XX escapes in place; -1 where a '%' is not followed by two hexadecimal
+ * digits, or decodes to a NUL byte (the message quotes `word`, as given). */
+static int decode(Lab *lab, char *text, const char *word)
+{
+    for (const char *p = text; (p = strchr(p, '%')); p += 3)
+        if (hex_digit(p[1]) < 0 || hex_digit(p[2]) < 0 || (p[1] == '0' && p[2] == '0'))
+            return fail(lab,
+                        "settings: '%s' has a malformed escape: '%%' must be followed by two "
+                        "hexadecimal digits, not 00",
+                        word);
+    char *out = text;
+    for (const char *p = text; *p; out++)
+        if (*p == '%') {
+            *out = (char)(16 * hex_digit(p[1]) + hex_digit(p[2]));
+            p += 3;
+        } else {
+            *out = *p++;
         }
+    *out = '\0';
+    return 0;
+}
+
+/* Split text at any of `separators` into key=value words (empty words skipped), each
+ * key and value decoded; a key given twice is an error. The words point into
+ * lab->words. */
+static int split_words(Lab *lab, const char *text, const char *separators, Words *w)
+{
+    w->count = 0;
+    if (strlen(text) > LAB_TEXT_MAX)
+        return fail(lab, "settings: longer than %d characters", LAB_TEXT_MAX);
+    char *raw = lab->raw_words, *words = lab->words;
+    memcpy(raw, text, strlen(text) + 1);
+    memcpy(words, text, strlen(text) + 1);
+    for (size_t at = 0, length, end = strlen(raw); at < end; at += length + 1) {
+        length = strcspn(raw + at, separators);
+        if (length == 0)
+            continue;
+        raw[at + length] = words[at + length] = '\0';
+        char *equals = strchr(words + at, '=');
+        if (!equals)
+            return fail(lab, "settings: expected key=value, got '%s'", raw + at);
+        if (w->count == LAB_WORDS_MAX)
+            return fail(lab, "settings: more than %d of them", LAB_WORDS_MAX);
+        *equals = '\0';
+        if (decode(lab, words + at, raw + at) != 0 || decode(lab, equals + 1, raw + at) != 0)
+            return -1;
+        for (int k = 0; k < w->count; k++)
+            if (strcmp(w->key[k], words + at) == 0)
+                return fail(lab, "settings: '%s' is given twice", words + at);
+        w->key[w->count] = words + at;
+        w->value[w->count++] = equals + 1;
     }
+    return 0;
+}
+
+/* The value of `key` among the words, or NULL. */
+static const char *word_value(const Words *w, const char *key)
+{
+    for (int i = 0; i < w->count; i++)
+        if (strcmp(w->key[i], key) == 0)
+            return w->value[i];
+    return NULL;
+}
+
+/* The words into *s: chapter first (`chapter`, when the words have none; 0: required),
+ * then the others over its defaults. */
+static int parse_settings(Lab *lab, const Words *w, int chapter, LabSettings *s)
+{
+    const char *given = word_value(w, "chapter");
+    if (given && whole(lab, "chapter", given, 1, LAB_CHAPTERS, &chapter) != 0)
+        return -1;
     if (chapter == 0)
         return fail(lab, "settings: chapter=N is missing");
     *s = chapter_defaults(chapter);
-    for (int i = 0; i < count; i++)
-        if (strcmp(word[i], "chapter") != 0 && set_key(lab, s, word[i], value[i]) != 0)
+    for (int i = 0; i < w->count; i++)
+        if (strcmp(w->key[i], "chapter") != 0 && set_key(lab, s, w->key[i], w->value[i]) != 0)
             return -1;
     if (chapter == 7 && !s->mirror_given)
         s->path.mirror_light = s->path.max_depth;
@@ -424,7 +582,10 @@ int lab_configure(Lab *lab, const char *text)
     if (!lab->has_scene)
         return fail(lab, "no scene");
     LabSettings s;
-    if (parse_settings(lab, text, &s) != 0 || check_scene(lab, &s) != 0)
+    Words words;
+    lab->prefix = "";
+    if (split_words(lab, text, " &", &words) != 0 || parse_settings(lab, &words, 0, &s) != 0 ||
+        check_scene(lab, &s) != 0)
         return -1;
     free_maps(lab);
     lab->settings = s;
@@ -502,6 +663,164 @@ int lab_steps(const Lab *lab)
 {
     const LabSettings *s = &lab->settings;
     return s->chapter == 1 ? 1 : s->chapter == 8 ? s->passes : s->spp;
+}
+
+/* ---- the page's address -------------------------------------------------------------- */
+
+/* A panel's settings as JSON: {"chapter":N,"scene":"NAME" or "","settings":[[key,
+ * value],...]}, the values as given (each checked: none has a separator in it). */
+static void panel_json(Json *json, int chapter, const char *scene, const Words *w)
+{
+    json_text(json, "{\"chapter\":%d,\"scene\":", chapter);
+    json_string(json, scene ? scene : "");
+    json_text(json, ",\"settings\":[");
+    for (int i = 0, n = 0; i < w->count; i++)
+        if (strcmp(w->key[i], "chapter") != 0) {
+            json_text(json, "%s[", n++ ? "," : "");
+            json_string(json, w->key[i]);
+            json_text(json, ",");
+            json_string(json, w->value[i]);
+            json_text(json, "]");
+        }
+    json_text(json, "]}");
+}
+
+/* A scene name of the page's, or the message listing them. */
+static int check_scene_name(Lab *lab, const char *key, const char *name, const char *scenes)
+{
+    size_t length = strlen(name);
+    for (const char *p = scenes; *p; p += strcspn(p, "\n"), p += *p == '\n')
+        if (strcspn(p, "\n") == length && strncmp(p, name, length) == 0 && length > 0)
+            return 0;
+    char list[1024] = "";
+    size_t n = 0;
+    for (const char *p = scenes; *p && n < sizeof list; p += *p == '\n') {
+        int k = (int)strcspn(p, "\n"), written;
+        written = snprintf(list + n, sizeof list - n, "%s%.*s", n ? ", " : "", k, p);
+        n += written > 0 ? (size_t)written : 0;
+        p += k;
+    }
+    return fail_key(lab, key, "expected one of the page's scenes (%s), got '%s'", list, name);
+}
+
+/* Panel B's words: A's (only size and seed where B is another chapter), then its own. */
+static void panel_b_words(const Words *a, int a_chapter, const Words *own, int b_chapter,
+                          Words *b)
+{
+    b->count = 0;
+    for (int i = 0; i < a->count; i++)
+        if ((b_chapter == a_chapter || strcmp(a->key[i], "size") == 0 ||
+             strcmp(a->key[i], "seed") == 0) &&
+            !word_value(own, a->key[i])) {
+            b->key[b->count] = a->key[i];
+            b->value[b->count++] = a->value[i];
+        }
+    for (int i = 0; i < own->count; i++) {
+        b->key[b->count] = own->key[i];
+        b->value[b->count++] = own->value[i];
+    }
+}
+
+/* The page's own keys: layout, fairness, reference, workers, paths, pixel. */
+static int page_key(Lab *lab, const char *key, const char *value, int cores, Json *json,
+                    char *note, size_t note_size)
+{
+    static const char *const layouts[] = {"one", "two"},
+                             *const fairness[] = {"samples", "time"},
+                             *const references[] = {"schlick", "exact"};
+    int i, col, row;
+    if (strcmp(key, "layout") == 0 || strcmp(key, "fairness") == 0 ||
+        strcmp(key, "reference") == 0) {
+        const char *const *words = key[0] == 'l'   ? layouts
+                                   : key[0] == 'f' ? fairness
+                                                   : references;
+        if (choice(lab, key, value, words, 2, &i) != 0)
+            return -1;
+        json_text(json, ",\"%s\":\"%s\"", key, words[i]);
+    } else if (strcmp(key, "workers") == 0) {
+        if (whole(lab, key, value, 0, LAB_WORKERS_MAX, &i) != 0)
+            return -1;
+        int used = i < 1 ? 1 : i > cores ? cores : i;
+        if (used != i)
+            snprintf(note, note_size, "workers: %d %s; using %d", i,
+                     i < 1 ? "is fewer than one" : "is more than this browser's cores", used);
+        json_text(json, ",\"workers\":%d", used);
+    } else if (strcmp(key, "paths") == 0) {
+        if (whole(lab, key, value, 1, LAB_PATHS_MAX, &i) != 0)
+            return -1;
+        json_text(json, ",\"paths\":%d", i);
+    } else if (strcmp(key, "pixel") == 0) {
+        char text[LAB_TEXT_MAX + 1];
+        snprintf(text, sizeof text, "%s", value);
+        char *comma = strchr(text, ',');
+        if (!comma)
+            return fail_key(lab, key, "expected COL,ROW (two whole numbers), got '%s'", value);
+        *comma = '\0';
+        if (whole(lab, key, text, 0, LAB_SIZE_MAX - 1, &col) != 0 ||
+            whole(lab, key, comma + 1, 0, LAB_SIZE_MAX - 1, &row) != 0)
+            return -1;
+        json_text(json, ",\"pixel\":[%d,%d]", col, row);
+    } else {
+        return 1;
+    }
+    return 0;
+}
+
+const char *lab_fragment(Lab *lab, const char *fragment, const char *scenes, int cores)
+{
+    Words all, a = {.count = 0}, own = {.count = 0}, b;
+    Json *json = &lab->json;
+    json_clear(json);
+    json_text(json, "{\"page\":{");
+    lab->prefix = "";
+    cores = cores < 1 ? 1 : cores > LAB_WORKERS_MAX ? LAB_WORKERS_MAX : cores;
+    char note[256] = "";
+    const char *scene_a = NULL, *scene_b = NULL;
+    int status = split_words(lab, fragment, "&", &all);
+    json_text(json, "\"cores\":%d", cores);
+    for (int i = 0; status == 0 && i < all.count; i++) {
+        const char *key = all.key[i], *value = all.value[i];
+        int b_key = strncmp(key, "b.", 2) == 0;
+        Words *panel = b_key ? &own : &a;
+        if (b_key)
+            key += 2;
+        if (strcmp(key, "scene") == 0) {
+            lab->prefix = b_key ? "b." : "";
+            status = check_scene_name(lab, key, value, scenes);
+            *(b_key ? &scene_b : &scene_a) = value;
+        } else if (strcmp(key, "program") == 0) {
+            status = fail(lab, "unknown setting '%s'", all.key[i]);
+        } else if (b_key ||
+                   (status = page_key(lab, key, value, cores, json, note, sizeof note)) == 1) {
+            panel->key[panel->count] = key;
+            panel->value[panel->count++] = value;
+            status = 0;
+        }
+        lab->prefix = "";
+    }
+    LabSettings sa, sb;
+    if (status != 0 || parse_settings(lab, &a, LAB_CHAPTERS, &sa) != 0)
+        return NULL;
+    int b_chapter = sa.chapter;
+    const char *given = word_value(&own, "chapter");
+    lab->prefix = "b.";
+    if (given && whole(lab, "chapter", given, 1, LAB_CHAPTERS, &b_chapter) != 0)
+        return lab->prefix = "", NULL;
+    panel_b_words(&a, sa.chapter, &own, b_chapter, &b);
+    status = parse_settings(lab, &b, b_chapter, &sb);
+    lab->prefix = "";
+    if (status != 0)
+        return NULL;
+    json_text(json, ",\"b\":%d,\"note\":", own.count > 0 || scene_b != NULL);
+    json_string(json, note);
+    json_text(json, "},\"a\":");
+    panel_json(json, sa.chapter, scene_a, &a);
+    json_text(json, ",\"b\":");
+    panel_json(json, sb.chapter, scene_b ? scene_b : scene_a, &b);
+    json_text(json, "}");
+    if (json->failed)
+        return fail(lab, "out of memory"), NULL;
+    return json->text;
 }
 
 /* ---- rendering ----------------------------------------------------------------------- */
@@ -610,12 +929,23 @@ const char *lab_record(Lab *lab, int col, int row, int first, int count)
 {
     if (!lab->configured)
         return fail(lab, "not configured"), NULL;
-    if (col < 0 || col >= lab->width || row < 0 || row >= lab->height || first < 0 ||
-        count < 1 || count > 1024)
-        return fail(lab, "no pixel (%d, %d) or samples %d to %d", col, row, first,
-                    first + count - 1),
-               NULL;
     const LabSettings *s = &lab->settings;
+    /* The render's samples of a pixel, as many as an int counts. */
+    long long samples = (long long)lab_steps(lab) * (s->chapter == 8 ? s->spp : 1);
+    if (samples > INT_MAX)
+        samples = INT_MAX;
+    if (col < 0 || col >= lab->width || row < 0 || row >= lab->height)
+        return fail(lab, "pixel: (%d, %d) is not in the %d x %d image", col, row, lab->width,
+                    lab->height),
+               NULL;
+    if (count < 1 || count > LAB_PATHS_MAX)
+        return fail(lab, "paths: expected a whole number from 1 to %d, got %d", LAB_PATHS_MAX,
+                    count),
+               NULL;
+    if (first < 0 || first > samples - count)
+        return fail(lab, "samples %d to %lld: the render takes samples 0 to %lld of a pixel",
+                    first, (long long)first + count - 1, samples - 1),
+               NULL;
     Json *json = &lab->json;
     json_clear(json);
     json_text(json, "{\"col\":%d,\"row\":%d,\"paths\":[", col, row);
@@ -657,8 +987,10 @@ static const char *kind_name(MaterialKind kind)
     }
 }
 
-/* Triangles listed for the plan at most (a bigger scene's plan shows its first ones). */
+/* Triangles and spheres listed for the plan at most (a bigger scene's plan shows its
+ * first ones, and says how many there are). */
 #define PLAN_TRIANGLES 20000
+#define PLAN_SPHERES 20000
 
 const char *lab_scene(Lab *lab)
 {
@@ -670,6 +1002,8 @@ const char *lab_scene(Lab *lab)
     json_clear(json);
     json_text(json, "{\"name\":");
     json_string(json, lab->scene_name);
+    json_text(json, ",\"triangle_count\":%d,\"sphere_count\":%d", scene->triangle_count,
+              scene->sphere_count);
     json_text(json, ",\"camera\":{\"eye\":");
     json_vec3(json, c->eye);
     json_text(json, ",\"bottom_left\":");
@@ -701,7 +1035,7 @@ const char *lab_scene(Lab *lab)
         json_text(json, ",%d]", t->material);
     }
     json_text(json, "],\"spheres\":[");
-    for (int i = 0; i < scene->sphere_count; i++) {
+    for (int i = 0; i < scene->sphere_count && i < PLAN_SPHERES; i++) {
         const Sphere *sphere = &scene->spheres[i];
         json_text(json, "%s[", i ? "," : "");
         json_vec3(json, sphere->center);

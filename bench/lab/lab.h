@@ -28,11 +28,28 @@ const char *lab_error(const Lab *lab);
  * The lab's settings are kept; configure again before rendering. */
 int lab_load_scene(Lab *lab, const char *text, int length, const char *name);
 
-/* Settings as "key=value" words, separated by spaces or '&' (docs/lab.md lists them):
- * chapter=N first sets that chapter's defaults, the rest override them; a key the
- * chapter does not have yet is an error. Also checks that the scene has the light the
- * chapter needs, with the chapter program's message. Returns 0, or -1. */
+/* Settings as "key=value" words, separated by spaces or '&' (docs/lab.md lists them),
+ * each key and value decoded from its %XX escapes after the split, so that a value is
+ * one value (a space or '&' in it is refused with the value): chapter=N first sets that
+ * chapter's defaults, the rest override them; a key the chapter does not have yet, or
+ * given twice, is an error. Each value is judged as the chapter programs judge a flag's
+ * (bench/cli.c: the same words). Also checks that the scene has the light the chapter
+ * needs, with the chapter program's message. Returns 0, or -1. */
 int lab_configure(Lab *lab, const char *settings);
+
+/* The page's address fragment (without '#', as the address has it: escapes not decoded)
+ * checked, every key as lab_configure checks it, with its messages, and the page's own:
+ * keys without a prefix are panel A's settings, "b." ones panel B's (B starts as A, or
+ * from A's size, seed and scene when b.chapter differs), scene and b.scene one of
+ * `scenes` (names separated by newlines), layout=one|two, fairness=samples|time,
+ * reference=schlick|exact, workers=N (0 to 1024, used between 1 and `cores`, with a
+ * note when it is moved), paths=K (1 to 64), pixel=COL,ROW. No scene is needed (the
+ * scene's own checks come with lab_configure). Returns, as JSON,
+ *   {"page":{"cores":C,"layout":...,"workers":N,...,"b":0|1,"note":"..."},
+ *    "a":{"chapter":N,"scene":"NAME" or "","settings":[["key","value"],...]},"b":{...}}
+ * with the page's keys that were given and each panel's settings as given (chapter
+ * apart); NULL (lab_error) on the first key refused. Valid until the next call. */
+const char *lab_fragment(Lab *lab, const char *fragment, const char *scenes, int cores);
 
 /* The settings configured, every one the chapter has, as JSON: {"chapter":7,"size":256,
  * "spp":64,...} with the names and values lab_configure takes. NULL on failure. */
@@ -55,9 +72,10 @@ int lab_render_band(Lab *lab, int step, int row0, int rows, double *out);
  * rays (of the pass's photon maps, chapter 8, counted by the band that built them). */
 double lab_rays(const Lab *lab, int kind);
 
-/* Samples first .. first + count - 1 of pixel (col, row), each path recorded
- * (record.h), as JSON: {"col":C,"row":R,"paths":[{"sample":S,...}, ...]}. NULL on
- * failure (lab_error). The text stays valid until the next call. */
+/* Samples first .. first + count - 1 (count at most 64, all among the render's samples
+ * of a pixel) of pixel (col, row), each path recorded (record.h), as JSON:
+ * {"col":C,"row":R,"paths":[{"sample":S,...}, ...]}. NULL on failure (lab_error). The text
+ * stays valid until the next call. */
 const char *lab_record(Lab *lab, int col, int row, int first, int count);
 
 /* The scene for drawing its plan: camera, materials, triangles, spheres, point lights,

@@ -6,7 +6,8 @@
  * panel B's (B starts as A, or from A's size, seed and scene where b.chapter differs),
  * and layout, fairness, workers, reference (exact|schlick: the reference both panels are
  * measured against), pixel=COL,ROW and paths=K for the inspector. The gallery links its
- * figures here that way.
+ * figures here that way. Every key is checked by the C code (lab_fragment, in the helper
+ * worker): an address it refuses is shown as its message, and nothing renders.
  */
 "use strict";
 
@@ -47,10 +48,16 @@ const PRESETS = [
 
 const PANEL_COLOURS = {a: "#d23030", b: "#2f6fd0"};
 
-const scenes = {};      /* name: its text as the page has it (edited, or as in scenes/) */
-const references = {};  /* file name: {image, mse, relMse, spp} once loaded */
-const referenceWaiters = {};
-const page = {layout: "one", fairness: "samples", reference: "", workers: 0, paths: 8};
+/* Maps with no inherited names ("toString" is no scene). */
+const scenes = Object.create(null);     /* name: its text as the page has it (edited, or as in scenes/) */
+const references = Object.create(null); /* file name: {image, mse, relMse, spp} once loaded */
+const referenceWaiters = Object.create(null);
+const page = {layout: "one", fairness: "samples", reference: "", workers: 0, workersGiven: false,
+              paths: 8, pixel: null, note: "", error: "", checked: 0 /* addresses answered */};
+/* Characters the editor's text box shows at most: a longer text (a file opened) is kept
+ * but not laid out, which would hold the page for many seconds. */
+const EDITOR_SHOWN_MAX = 1 << 20;
+let editorText = "";
 const longTasks = [];   /* main-thread tasks over 50 ms (PerformanceObserver): {start, duration} */
 let jobs = 0;
 let pool = null, helper = null, inspector = null, inspected = null;
@@ -86,11 +93,19 @@ function setChapter(panel, number) {
     panel.overrides = kept;
 }
 
-/* The settings text for lab_configure. */
+/* A panel as lab_fragment checked it: {chapter, scene ("": the chapter's), settings}. */
+function setPanel(panel, checked) {
+    setChapter(panel, checked.chapter);
+    panel.overrides = {};
+    if (checked.scene) panel.scene = checked.scene;
+    for (const [key, value] of checked.settings) panel.overrides[key] = value;
+}
+
+/* The settings text for lab_configure: each value escaped, so that it stays one value. */
 function settingsText(panel) {
     const words = ["chapter=" + panel.chapter, "program=" + chapterInfo(panel.chapter).program];
     for (const key in panel.overrides)
-        words.push(key + "=" + panel.overrides[key]);
+        words.push(key + "=" + encodeURIComponent(panel.overrides[key]));
     return words.join(" ");
 }
 
@@ -145,7 +160,7 @@ function formChanged(panel, key, value) {
         panel.overrides[key] = value;
     $("preset").value = "";
     writeFragment();
-    restart();
+    applyFragment(location.hash);
 }
 
 /* ---- references (make lab-references; docs/lab.md) ------------------------------------ */
@@ -185,13 +200,17 @@ function loadReference(name) {
 
 function restart() {
     clearTimeout(restart.timer);
+    restart.pending = true;
     restart.timer = setTimeout(startRenders, 30);
 }
 
 let generation = 0; /* of startRenders: an older start that answers late is dropped */
+let rendered = null; /* renderSignature() of the renders started */
 
 function startRenders() {
     const mine = ++generation;
+    restart.pending = false;
+    rendered = renderSignature();
     pool.mode = page.fairness;
     pool.run([]);
     inspector.clear();
@@ -202,7 +221,7 @@ function startRenders() {
                        settings: settingsText(panel)};
         return helper.ask("scene", setup).then(function (answer) {
             panel.info = answer.info;
-            panel.plan = JSON.parse(answer.json);
+            panel.plan = answer.plan;
             panel.render = new Render(setup, answer.info);
             panel.image.width = answer.info.width;
             panel.image.height = answer.info.height;
@@ -353,7 +372,8 @@ function inspect(panel, col, row) {
         if (other !== panel)
             other.overlay.getContext("2d").clearRect(0, 0, other.overlay.width, other.overlay.height);
     inspector.elements.overlay = panel.overlay;
-    const count = panel.render.info.settings.chapter === 1 ? 1 : page.paths; /* deterministic */
+    const s = panel.render.info.settings; /* paths among the render's samples */
+    const count = Math.min(page.paths, panel.render.steps * (s.chapter === 8 ? s.spp : 1));
     return helper.ask("record", panel.render.setup, {col: col, row: row, first: 0, count: count})
         .then(function (answer) {
             inspector.show(JSON.parse(answer.json), panel.plan, panel.render.width, panel.render.height);
@@ -376,14 +396,24 @@ function overlayClicked(panel, event) {
 
 /* ---- the scene editor ---------------------------------------------------------------- */
 
+/* The text to apply, in the box unless it is too long to show there. */
+function setEditorText(text) {
+    const box = $("scene-text"), long = text.length > EDITOR_SHOWN_MAX;
+    editorText = text;
+    box.disabled = long;
+    box.value = long ? "" : text;
+    box.placeholder = long ? "(" + text.length + " characters: too many to show here; apply reads them)" : "";
+}
+
 function showScene() {
-    $("scene-text").value = scenes[$("scene-name").value];
+    setEditorText(scenes[$("scene-name").value]);
     $("scene-error").textContent = "";
 }
 
-/* Check the edited text as the chapter program would read it, then render with it. */
+/* Check the edited text as the chapter program would read it (in the helper worker),
+ * then render with it. */
 function applyScene() {
-    const name = $("scene-name").value, text = $("scene-text").value;
+    const name = $("scene-name").value, text = editorText;
     const setup = {key: "check" + (++jobs), sceneName: name, sceneText: text, settings: settingsText(panels.a)};
     return helper.ask("scene", setup).then(function () {
         $("scene-error").textContent = "";
@@ -400,37 +430,75 @@ function applyScene() {
 
 /* ---- the address's fragment ---------------------------------------------------------- */
 
-function readFragment(fragment) {
-    const pairs = fragment.replace(/^#/, "").split("&").filter(Boolean).map(function (pair) {
-        const equals = pair.indexOf("=");
-        return [decodeURIComponent(pair.slice(0, equals)), decodeURIComponent(pair.slice(equals + 1))];
-    });
-    const a = {}, b = {};
-    page.layout = "one";
-    page.reference = "";
-    for (const [key, value] of pairs) {
-        if (key.indexOf("b.") === 0) { b[key.slice(2)] = value; page.layout = "two"; }
-        else if (key === "layout" || key === "fairness" || key === "reference") page[key] = value;
-        else if (key === "workers") page.workers = Number(value);
-        else if (key === "paths") page.paths = Number(value);
-        else if (key === "pixel") page.pixel = value.split(",").map(Number);
-        else a[key] = value;
-    }
-    applySettings(panels.a, a);
-    const base = b.chapter && b.chapter !== a.chapter
-        ? {size: a.size, seed: a.seed, scene: a.scene} : Object.assign({}, a);
-    applySettings(panels.b, Object.assign(base, b));
+function cores() {
+    return Math.max(1, navigator.hardwareConcurrency || 1);
 }
 
-function applySettings(panel, settings) {
-    setChapter(panel, Number(settings.chapter) || LAB_CHAPTERS[LAB_CHAPTERS.length - 1].number);
-    for (const key in settings) {
-        if (settings[key] === undefined || key === "chapter") continue;
-        if (key === "scene") {
-            if (settings.scene in scenes) panel.scene = settings.scene;
-        } else {
-            panel.overrides[key] = settings[key];
+let addressGeneration = 0; /* of applyFragment: an older answer is dropped */
+
+/* Check the address's fragment in C (lab_fragment) and take its settings; or show its
+ * message, render nothing, and keep the settings as they were. */
+function applyFragment(fragment) {
+    const mine = ++addressGeneration;
+    const question = {fragment: fragment.replace(/^#/, ""), scenes: Object.keys(scenes).join("\n"), cores: cores()};
+    return helper.ask("fragment", null, question).then(function (answer) {
+        if (mine !== addressGeneration) return;
+        page.checked++;
+        const given = answer.state.page;
+        page.error = "";
+        page.note = given.note;
+        page.layout = given.layout || (given.b ? "two" : "one");
+        page.fairness = given.fairness || "samples";
+        page.reference = given.reference || "";
+        page.paths = given.paths || 8;
+        page.pixel = given.pixel || null;
+        page.workersGiven = given.workers !== undefined;
+        page.workers = page.workersGiven ? given.workers : cores();
+        setPanel(panels.a, answer.state.a);
+        setPanel(panels.b, answer.state.b);
+        if (pool.workers.length !== page.workers) pool.setWorkers(page.workers);
+        showAddress();
+        showPage();
+        if (renderSignature() !== rendered) {
+            restart();
+        } else if (page.pixel && panels.a.render) { /* the same renders: the inspector only */
+            inspect(panels.a, page.pixel[0], page.pixel[1]);
+            page.pixel = null;
+        } else if (inspector.record && inspected) {
+            inspect(inspected, inspector.record.col, inspector.record.row);
         }
+    }, function (error) {
+        if (mine !== addressGeneration) return;
+        page.checked++;
+        page.error = error.message;
+        page.note = "";
+        stopRenders("the address is refused (above)");
+        showAddress();
+    });
+}
+
+/* What the renders running depend on: when it changes, they start again. */
+function renderSignature() {
+    return JSON.stringify([page.layout, page.fairness, page.reference, page.workers,
+                           activePanels().map(function (p) { return [p.scene, settingsText(p)]; })]);
+}
+
+function showAddress() {
+    const shown = $("address-message");
+    shown.textContent = page.error ? "This address is refused: " + page.error : page.note;
+    shown.className = page.error ? "failed" : "note";
+}
+
+function stopRenders(why) {
+    clearTimeout(restart.timer);
+    restart.pending = false;
+    generation++;
+    rendered = null;
+    pool.run([]);
+    for (const panel of activePanels()) {
+        panel.render = null;
+        panel.error = why;
+        showStats(panel);
     }
 }
 
@@ -445,6 +513,8 @@ function writeFragment() {
     if (page.layout === "two") add("b.", panels.b);
     words.push("fairness=" + page.fairness);
     if (page.reference) words.push("reference=" + page.reference);
+    if (page.workersGiven) words.push("workers=" + encodeURIComponent(page.workers));
+    if (String(page.paths) !== "8") words.push("paths=" + encodeURIComponent(page.paths));
     history.replaceState(null, "", "#" + words.join("&"));
 }
 
@@ -454,6 +524,8 @@ function showPage() {
     $("fairness").value = page.fairness;
     $("workers").value = page.workers;
     $("paths").value = page.paths;
+    $("book").href = "../book/chapter" + panels.a.chapter + ".html";
+    $("book").textContent = "chapter " + panels.a.chapter + " in the book";
     buildForm(panels.a);
     buildForm(panels.b);
 }
@@ -499,17 +571,48 @@ window.labTest = {
             });
         });
     },
+    /* What lab_record says to these numbers: "" when it records, else its message. */
+    recordError: function (sceneName, settings, col, row, first, count) {
+        return labTest.record(sceneName, settings, col, row, first, count)
+            .then(function () { return ""; }, function (error) { return error.message; });
+    },
     record: function (sceneName, settings, col, row, first, count) {
         const setup = {key: "test" + (++jobs), sceneName: sceneName, sceneText: scenes[sceneName],
                        settings: settings};
         return helper.ask("record", setup, {col: col, row: row, first: first, count: count})
             .then(function (answer) { return answer.json; });
     },
-    /* Put this text in the editor as scene NAME and apply it: the error shown, or "". */
+    /* Put this text in the editor as scene NAME (as a file opened there) and apply it: the
+     * error shown, or "". While it is read, labTest.applying is true. */
     editScene: function (name, text) {
         $("scene-name").value = name;
-        $("scene-text").value = text;
-        return applyScene().then(function () { return $("scene-error").textContent; });
+        setEditorText(text);
+        labTest.applying = true;
+        return applyScene().then(function () {
+            labTest.applying = false;
+            return $("scene-error").textContent;
+        });
+    },
+    /* lab_fragment's answer for an address: {state} or {error}. */
+    fragment: function (fragment) {
+        return helper.ask("fragment", null, {fragment: fragment, scenes: Object.keys(scenes).join("\n"), cores: cores()})
+            .then(function (answer) { return {state: answer.state}; }, function (error) { return {error: error.message}; });
+    },
+    /* The pool's choice at equal time between two renders: A with 1 s of finished tasks
+     * and one task in flight for 2 s, B with 2.5 s and none: {chose, used: [A's, B's]}. */
+    equalTimeChoice: function () {
+        const info = {width: 16, height: 16, steps: 100, settings: {chapter: 3, M: 1}};
+        const a = new Render({key: "probe-a"}, info), b = new Render({key: "probe-b"}, info);
+        const probe = new Pool(0, function () {}, function () {});
+        probe.mode = "time";
+        probe.renders = [a, b];
+        a.seconds = 1;
+        a.issued = 3;
+        a.inFlight = 1;
+        b.seconds = 2.5;
+        b.issued = 2;
+        probe.workers = [{render: a, sent: performance.now() - 2000}];
+        return {chose: probe.choose() === a ? "A" : "B", used: [probe.secondsUsed(a), probe.secondsUsed(b)]};
     },
     release: function () {
         if (labTest.kept) labTest.kept.setWorkers(0);
@@ -525,6 +628,8 @@ window.labTest = {
                         complete: !!(r && r.finished), steps: r ? r.steps : 0,
                         done: r ? r.stepsDone() : 0, started: r ? r.started : null,
                         finished: r ? r.finished : null, reference: !!(r && r.reference),
+                        stopped: !!(r && r.stopped), seconds: r ? r.seconds : 0, longest: r ? r.longest : 0,
+                        chapter: r ? r.info.settings.chapter : null, settings: r ? r.info.settings : null,
                         rmse: panel.measured ? panel.measured.rmse : null,
                         relMse: panel.measured ? panel.measured.relMse : null,
                         history: r ? r.history.length : 0};
@@ -532,7 +637,8 @@ window.labTest = {
             inspector: {summary: $("path-summary").textContent, rows: $("path-table").rows.length,
                         hint: $("inspector-hint").textContent},
             longTasks: longTasks.slice(), longestFrame: frame.longest || 0,
-            workers: pool.workers.length,
+            workers: pool.workers.length, address: $("address-message").textContent,
+            addressRefused: !!page.error, checked: page.checked, restarting: !!restart.pending, book: $("book").getAttribute("href"),
         };
     },
 };
@@ -559,13 +665,13 @@ function start() {
         option.textContent = preset[1];
         $("preset").appendChild(option);
     }
-    page.workers = navigator.hardwareConcurrency || 2;
-    readFragment(location.hash || "#chapter=" + LAB_CHAPTERS[LAB_CHAPTERS.length - 1].number);
+    page.workers = cores();
+    for (const name of ["a", "b"]) setChapter(panels[name], panels[name].chapter);
     $("scene-name").value = panels.a.scene;
     showScene();
     showPage();
     helper = new Helper();
-    pool = new Pool(page.workers, function (render) {
+    pool = new Pool(0, function (render) {
         for (const panel of activePanels())
             if (panel.render && panel.render.finished)
                 showStats(panel);
@@ -580,33 +686,33 @@ function start() {
                                detail: $("vertex-detail"), summary: $("path-summary")});
     for (const name of ["a", "b"])
         panels[name].overlay.onclick = overlayClicked.bind(null, panels[name]);
-    $("layout").onchange = function () { page.layout = this.value; showPage(); writeFragment(); restart(); };
-    $("fairness").onchange = function () { page.fairness = this.value; writeFragment(); restart(); };
-    $("workers").onchange = function () {
-        page.workers = Math.max(1, Math.min(32, Number(this.value) || 1));
-        pool.setWorkers(page.workers);
-        restart();
-    };
+    /* Each control writes the address, which is then checked as any address is. */
+    const changed = function () { writeFragment(); applyFragment(location.hash); };
+    $("layout").onchange = function () { page.layout = this.value; changed(); };
+    $("fairness").onchange = function () { page.fairness = this.value; changed(); };
+    $("workers").onchange = function () { page.workers = this.value; page.workersGiven = true; changed(); };
     $("preset").onchange = function () {
         if (!this.value) return;
-        readFragment(this.value);
-        showPage();
-        writeFragment();
-        restart();
+        history.replaceState(null, "", "#" + this.value);
+        applyFragment(location.hash);
     };
     $("exposure").oninput = function () {
         for (const panel of activePanels()) if (panel.render) drawBands(panel, true);
     };
     $("restart").onclick = restart;
     $("paths").onchange = function () {
-        page.paths = Math.max(1, Math.min(64, Number(this.value) || 1));
-        if (inspector.record) inspect(inspected, inspector.record.col, inspector.record.row);
+        page.paths = this.value;
+        changed();
     };
     $("previous-path").onclick = function () { inspector.setPath(inspector.path - 1); };
     $("next-path").onclick = function () { inspector.setPath(inspector.path + 1); };
     $("previous-vertex").onclick = function () { inspector.step(-1); };
     $("next-vertex").onclick = function () { inspector.step(1); };
     $("scene-name").onchange = showScene;
+    $("scene-text").oninput = function () { editorText = this.value; };
+    $("scene-file").onchange = function () {
+        if (this.files.length) this.files[0].text().then(setEditorText);
+    };
     $("apply-scene").onclick = applyScene;
     $("revert-scene").onclick = function () {
         const name = $("scene-name").value;
@@ -614,8 +720,8 @@ function start() {
         showScene();
         restart();
     };
-    window.onhashchange = function () { readFragment(location.hash); showPage(); restart(); };
-    startRenders();
+    window.onhashchange = function () { applyFragment(location.hash); };
+    applyFragment(location.hash);
     requestAnimationFrame(frame);
 }
 

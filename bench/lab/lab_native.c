@@ -11,6 +11,8 @@
  * by Welford's update (renderer.h), on one thread. Errors: "lab-native: what is wrong"
  * on stderr, exit status 2 (bad input) or 1.
  */
+#include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -46,13 +48,18 @@ static Lab *open_lab(const char *path, const char *settings)
     return lab;
 }
 
-static long whole(const char *text)
+/* A whole number from 0 to INT_MAX, or exit. */
+static int whole(const char *text)
 {
     char *end;
-    long n = strtol(text, &end, 10);
-    if (*text == '\0' || *end != '\0' || n < 0)
-        fail(2, "expected a whole number");
-    return n;
+    errno = 0;
+    long long n = strtoll(text, &end, 10);
+    if (*text < '0' || *text > '9' || *end != '\0' || errno != 0 || n > INT_MAX) {
+        fprintf(stderr, "lab-native: expected a whole number from 0 to %d, got '%s'\n", INT_MAX,
+                text);
+        exit(2);
+    }
+    return (int)n;
 }
 
 /* Every step of the band starting at row0 (BAND rows at most), into the pixels' sums. */
@@ -137,8 +144,8 @@ int main(int argc, char **argv)
     Lab *lab = open_lab(argv[1], argv[2]);
     const char *command = argv[3];
     if (strcmp(command, "record") == 0 && argc == 8) {
-        const char *json = lab_record(lab, (int)whole(argv[4]), (int)whole(argv[5]),
-                                      (int)whole(argv[6]), (int)whole(argv[7]));
+        const char *json =
+            lab_record(lab, whole(argv[4]), whole(argv[5]), whole(argv[6]), whole(argv[7]));
         if (!json)
             fail(2, lab_error(lab));
         puts(json);

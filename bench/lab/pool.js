@@ -7,8 +7,9 @@
  * image is the chapter program's, bit for bit where the WebAssembly arithmetic is the
  * native one, for any number of workers. With two renders the pool shares the workers
  * between them at equal samples (the one behind gets the next task) or at equal
- * processor time (the one that has used less; when one has taken all its samples, the
- * other stops there, at the same time).
+ * processor time (the one that has used less, a task in flight counting from the moment
+ * it was sent; when one has taken all its samples, the other takes tasks until it has
+ * used as much, and stops when those are in).
  */
 "use strict";
 
@@ -24,7 +25,10 @@ function newLabWorker() {
     return new Worker(workerUrl);
 }
 
-/* Pixels per task, about: a band of rows takes a few tens of milliseconds. */
+/* Pixels per task, about, at one shadow ray per vertex: a band of rows takes a few tens
+ * of milliseconds. M shadow rays make a sample about (1 + M) / 2 times as costly, and the
+ * band that much smaller, so that a task stays short: a render at equal time then stops
+ * within a short task of its budget. */
 const TASK_SAMPLES = 8192;
 
 class Render {
@@ -38,8 +42,9 @@ class Render {
         this.steps = info.steps;
         const pixels = this.width * this.height;
         const perStep = info.settings.chapter === 8 ? info.settings.spp : 1;
+        const cost = info.settings.M === undefined ? 1 : (1 + info.settings.M) / 2;
         this.bandRows = Math.max(1, Math.min(this.height,
-                                             bandRows || Math.round(TASK_SAMPLES / (this.width * perStep))));
+                                             bandRows || Math.round(TASK_SAMPLES / (this.width * perStep * cost))));
         this.bands = Math.ceil(this.height / this.bandRows);
         this.mean = new Float64Array(3 * pixels);
         this.m2 = new Float64Array(3 * pixels);
@@ -49,6 +54,8 @@ class Render {
         this.issued = 0;                           /* tasks sent: step * bands + band */
         this.inFlight = 0;
         this.seconds = 0;                          /* workers' time on its finished tasks */
+        this.longest = 0;                          /* of one task, seconds */
+        this.budget = Infinity;                    /* equal time: seconds it may use at most */
         this.rays = [0, 0, 0, 0];
         this.started = performance.now();
         this.finished = null;
@@ -62,7 +69,7 @@ class Render {
     }
 
     tasksLeft() {
-        return !this.error && !this.stopped && this.issued < this.steps * this.bands;
+        return !this.error && !this.stopped && !this.stopping && this.issued < this.steps * this.bands;
     }
 
     /* Stop here: the other panel, at equal time, has finished. */
@@ -70,6 +77,12 @@ class Render {
         if (this.finished) return;
         this.stopped = true;
         this.finished = performance.now();
+    }
+
+    /* Equal time: take no more tasks, and stop once those in flight are in. */
+    stopAfterTasksInFlight() {
+        this.stopping = true;
+        if (this.inFlight === 0) this.stop();
     }
 
     /* The next task, in step order. */
@@ -85,6 +98,7 @@ class Render {
     accept(result) {
         this.inFlight--;
         this.seconds += result.seconds;
+        this.longest = Math.max(this.longest, result.seconds);
         for (let k = 0; k < 4; k++)
             this.rays[k] += result.rays[k];
         const band = result.row0 / this.bandRows;
@@ -98,6 +112,8 @@ class Render {
         }
         if (this.complete())
             this.finished = performance.now();
+        else if (this.stopping && this.inFlight === 0)
+            this.stop();
     }
 
     /* Measure against this reference from now on: {image, mse, relMse} (bench/measure.h). */
@@ -208,18 +224,30 @@ class Pool {
         this.schedule();
     }
 
+    /* The processor time a render has used: its finished tasks' time in the workers, and
+     * each task in flight from the moment it was sent. */
+    secondsUsed(render) {
+        const now = performance.now();
+        let seconds = render.seconds;
+        for (const slot of this.workers)
+            if (slot.render === render)
+                seconds += (now - slot.sent) / 1000;
+        return seconds;
+    }
+
     /* The render that gets the next task: at equal samples the one behind in steps, at
-     * equal time the one with less processor time (its tasks in flight counted at its
-     * mean task's time). */
+     * equal time the one that has used less processor time (secondsUsed). At equal time
+     * a render that has used its budget (what the other took to finish) takes no more. */
     choose() {
         let best = null, bestScore = Infinity;
         for (const render of this.renders) {
             if (!render.tasksLeft())
                 continue;
-            const done = render.issued - render.inFlight;
-            const score = this.mode === "time"
-                ? render.seconds + render.inFlight * (done > 0 ? render.seconds / done : 0)
-                : render.issued / render.bands;
+            const score = this.mode === "time" ? this.secondsUsed(render) : render.issued / render.bands;
+            if (this.mode === "time" && score >= render.budget) {
+                render.stopAfterTasksInFlight();
+                continue;
+            }
             if (score < bestScore)
                 best = render, bestScore = score;
         }
@@ -242,6 +270,7 @@ class Pool {
                 slot.key = render.setup.key;
             }
             slot.render = render;
+            slot.sent = performance.now();
             slot.worker.postMessage(task, task.buffer ? [task.buffer] : []);
         }
     }
@@ -263,9 +292,10 @@ class Pool {
             message.job === render.setup.key) {
             if (message.type === "band") {
                 render.accept(message);
-                if (render.finished && this.mode === "time") /* equal time reached */
+                if (render.finished && !render.stopped && this.mode === "time") /* its time is the budget */
                     for (const other of this.renders)
-                        other.stop();
+                        if (!other.finished)
+                            other.budget = Math.min(other.budget, render.seconds);
                 this.onResult(render);
             } else {
                 render.error = message.message;

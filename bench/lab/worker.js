@@ -8,8 +8,11 @@
  *                      earlier result's, to fill again if it has the size)
  *   {type: "record", id, setup, col, row, first, count}   record paths (record.h)
  *   {type: "scene", id, setup}                      the scene's plan (lab_scene)
- * and out: {type: "band", job, step, row0, rows, values, rays, seconds}, {type: "record"
- * | "scene", id, json, info}, or {type: "error", job | id, message} with lab_error's text.
+ *   {type: "fragment", id, fragment, scenes, cores} the address checked (lab_fragment)
+ * and out: {type: "band", job, step, row0, rows, values, rays, seconds}, {type: "record",
+ * id, json, info}, {type: "scene", id, plan, info}, {type: "fragment", id, state}, or
+ * {type: "error", job | id, message} with lab_error's text. Text is read here, in the
+ * worker, as JSON: a big scene's plan or reading keeps the page's own thread free.
  */
 "use strict";
 
@@ -17,6 +20,7 @@ let lab = null;      /* the Lab of lab.c, in M */
 let M = null;        /* the module */
 let configured = ""; /* the key of the job configured in lab */
 let info = null;     /* what lab_configure made of it */
+let loaded = null;   /* {name, text} of the scene in lab, or null */
 const ready = createLabModule().then(function (module) {
     M = module;
     lab = M._lab_new();
@@ -25,7 +29,9 @@ const ready = createLabModule().then(function (module) {
 /* A NUL-terminated UTF-8 copy of text in the module's memory (free it), and its length. */
 function copyIn(text) {
     const bytes = new TextEncoder().encode(text);
-    const pointer = M._malloc(bytes.length + 1);
+    const pointer = bytes.length < 0x7fffffff ? M._malloc(bytes.length + 1) : 0;
+    if (!pointer)
+        throw new Error("out of memory for " + bytes.length + " bytes of text");
     M.HEAPU8.set(bytes, pointer);
     M.HEAPU8[pointer + bytes.length] = 0;
     return {pointer: pointer, length: bytes.length};
@@ -35,18 +41,28 @@ function failure() {
     return new Error(M.UTF8ToString(M._lab_error(lab)));
 }
 
-/* Load the scene and apply the settings of `setup` ({key, sceneName, sceneText, settings})
- * unless they are the ones configured already. */
+/* Load the scene (unless it is the one loaded already) and apply the settings of `setup`
+ * ({key, sceneName, sceneText, settings}) unless they are the ones configured already. */
 function configure(setup) {
     if (setup.key === configured)
         return info;
     configured = "";
-    const text = copyIn(setup.sceneText), name = copyIn(setup.sceneName);
-    const loaded = M._lab_load_scene(lab, text.pointer, text.length, name.pointer);
-    M._free(text.pointer);
-    M._free(name.pointer);
-    if (loaded !== 0)
-        throw failure();
+    if (!loaded || loaded.name !== setup.sceneName || loaded.text !== setup.sceneText) {
+        loaded = null;
+        const text = copyIn(setup.sceneText);
+        let name;
+        try {
+            name = copyIn(setup.sceneName);
+        } finally {
+            if (!name) M._free(text.pointer);
+        }
+        const status = M._lab_load_scene(lab, text.pointer, text.length, name.pointer);
+        M._free(text.pointer);
+        M._free(name.pointer);
+        if (status !== 0)
+            throw failure();
+        loaded = {name: setup.sceneName, text: setup.sceneText};
+    }
     const settings = copyIn(setup.settings);
     const status = M._lab_configure(lab, settings.pointer);
     M._free(settings.pointer);
@@ -80,10 +96,25 @@ function renderBand(message) {
                 [values.buffer]);
 }
 
-function answer(message, json) {
+/* The answer to a question: the JSON text at `json` in the module's memory, as text
+ * (recordings: the tests compare them character for character) or read (`field`). */
+function answer(message, json, field) {
     if (json === 0)
         throw failure();
-    postMessage({type: message.type, id: message.id, json: M.UTF8ToString(json), info: info});
+    const text = M.UTF8ToString(json), reply = {type: message.type, id: message.id, info: info};
+    if (field)
+        reply[field] = JSON.parse(text);
+    else
+        reply.json = text;
+    postMessage(reply);
+}
+
+function checkFragment(message) {
+    const fragment = copyIn(message.fragment), scenes = copyIn(message.scenes);
+    const json = M._lab_fragment(lab, fragment.pointer, scenes.pointer, message.cores);
+    M._free(fragment.pointer);
+    M._free(scenes.pointer);
+    answer(message, json, "state");
 }
 
 onmessage = function (event) {
@@ -98,7 +129,9 @@ onmessage = function (event) {
                 answer(message, M._lab_record(lab, message.col, message.row, message.first,
                                               message.count));
             else if (message.type === "scene")
-                answer(message, M._lab_scene(lab));
+                answer(message, M._lab_scene(lab), "plan");
+            else if (message.type === "fragment")
+                checkFragment(message);
         } catch (error) {
             configured = "";
             postMessage({type: "error", job: message.job, id: message.id,
