@@ -358,6 +358,24 @@ figures:
 browser-test: $(GALLERY)
 	sh bench/browser_gallery.sh $(FIGURES)
 
+# ---- the book ---------------------------------------------------------------------------
+# build/book/: chapterN.html from docs/chapterN.md for every chapter, the other docs/ pages,
+# and index.html, made by Debian's pandoc (installed on demand) with the filter
+# bench/book/book.lua: each listing directive is filled from chapter N's clean source
+# (make source-chapterN) when the page is built, and one that finds nothing fails; the
+# equations are MathML; the figures and tables are the gallery's ($(FIGURES)) when they are
+# there. Then each chapter's listings must show every line the chapter adds to lib/
+# (bench/book/coverage.sh prints what they miss). book-test opens every page in headless
+# Chromium (bench/book/browser_book.js).
+BOOK := $(BUILD)/book
+.PHONY: book book-test
+book: $(foreach n,$(CHAPTERS),source-chapter$(n))
+	@sh .ci/install-deps pandoc
+	sh bench/book/build.sh $(BUILD) $(FIGURES) "$(CHAPTERS)"
+book-test: book
+	@sh .ci/install-deps chromium nodejs
+	node bench/book/browser_book.js $(BOOK) $(BUILD)/book-test
+
 # ---- the lab (docs/lab.md) ---------------------------------------------------------------
 # build/lab/: the final chapter's lesson (lib/, as it is) and the lab's C (bench/lab/)
 # compiled to WebAssembly by Debian's emscripten (installed on demand) into one script
