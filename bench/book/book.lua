@@ -169,7 +169,7 @@ local function find_named(items, name, kind)
   local found = {}
   for _, item in ipairs(items) do
     for _, n in ipairs(item.names) do
-      if n == name then found[#found + 1] = item end
+      if n == name then found[#found + 1] = item; break end
     end
   end
   local function fits(item)
