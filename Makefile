@@ -338,11 +338,13 @@ test: all check-sources
 DIFFS   ?= $(BUILD)
 # The lab's page (make lab) as the gallery links to it, relative to the figures folder.
 LAB_LINK = $(shell realpath -m --relative-to=$(FIGURES) $(BUILD)/lab/index.html)
+# The book (make book) as the gallery links to it, relative to the figures folder.
+BOOK_LINK = $(shell realpath -m --relative-to=$(FIGURES) $(BUILD)/book)
 .PHONY: gallery browser-test
 $(GALLERY): $(BUILD)/chapter$(FINAL)/bench/gallery_main.o $(BUILD)/chapter$(FINAL)/libmc.a
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 gallery: $(GALLERY)
-	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK)
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK) --book $(BOOK_LINK)
 figures:
 	@start=$$(date +%s); started=$$(date '+%Y-%m-%d %H:%M:%S %z'); \
 	$(MAKE) --no-print-directory -j$$(nproc) $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) || exit 1; \
@@ -354,7 +356,7 @@ figures:
 	echo "make figures: $$seconds s"
 	@$(MAKE) --no-print-directory exercise-solutions
 	@for n in $(CHAPTERS); do $(MAKE) --no-print-directory diff-chapter$$n > /dev/null || exit 1; done
-	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK)
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK) --book $(BOOK_LINK)
 browser-test: $(GALLERY)
 	sh bench/browser_gallery.sh $(FIGURES)
 
@@ -374,6 +376,12 @@ book: $(foreach n,$(CHAPTERS),source-chapter$(n))
 	sh bench/book/build.sh $(BUILD) $(FIGURES) "$(CHAPTERS)"
 book-test: book
 	@sh .ci/install-deps chromium nodejs
+	@mkdir -p $(BUILD)/book-test && printf '```{.listing file="lib/render.c" function="no_such_function"}\n```\n' > $(BUILD)/book-test/missing.md
+	@if BOOK_CHAPTER=1 BOOK_SOURCE=$(BUILD)/source/chapter1 pandoc --lua-filter bench/book/book.lua \
+	    $(BUILD)/book-test/missing.md -o /dev/null 2>$(BUILD)/book-test/missing.log; then \
+	    echo "a directive naming a missing function did not fail the build"; exit 1; fi; \
+	grep -q "no function no_such_function in lib/render.c" $(BUILD)/book-test/missing.log || \
+	    { cat $(BUILD)/book-test/missing.log; echo "its message does not name what is missing"; exit 1; }
 	node bench/book/browser_book.js $(BOOK) $(BUILD)/book-test
 
 # ---- the lab (docs/lab.md) ---------------------------------------------------------------

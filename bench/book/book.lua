@@ -305,11 +305,24 @@ local function listing(block)
   return pandoc.Div(blocks, {class = "listing", ["data-directive"] = directive})
 end
 
+-- Links between docs/ pages go to their pages of the book; "../PATH" (the repository's
+-- files, as docs/ links them) goes to the file, relative to the book (BOOK_ROOT).
+local root = os.getenv("BOOK_ROOT") or "../.."
+local function link(l)
+  local target = l.target
+  if target:match("^%a+:") or target:match("^#") then return nil end
+  local name, anchor = target:match("^([%w_%-]+)%.md(#?.*)$")
+  if name then l.target = name .. ".html" .. anchor; return l end
+  local up = target:match("^%.%./(.*)$")
+  if up then l.target = root .. "/" .. up; return l end
+  return nil
+end
+
 local function figure(block)
   local name = block.attributes.name
   if not name then fail(describe(block.attributes), "a figure needs name=") end
   local n = name:match("^ch0*(%d+)_") or chapter
-  local caption = pandoc.read(block.text, "markdown").blocks
+  local caption = pandoc.walk_block(pandoc.Div(pandoc.read(block.text, "markdown").blocks), {Link = link}).content
   local file = figures .. "/" .. name .. ".png"
   local body = {}
   if exists(file) then
@@ -356,21 +369,9 @@ local function csv_table(block)
       pandoc.Str(" (or "), pandoc.Code("make figures"), pandoc.Str(") writes "),
       pandoc.Code("build/figures/" .. name .. ".csv"), pandoc.Str(".")})})
   end
-  for _, b in ipairs(pandoc.read(block.text, "markdown").blocks) do body[#body + 1] = b end
+  local caption = pandoc.walk_block(pandoc.Div(pandoc.read(block.text, "markdown").blocks), {Link = link}).content
+  for _, b in ipairs(caption) do body[#body + 1] = b end
   return pandoc.Div(body, {class = "csv-table", ["data-table"] = name})
-end
-
--- Links between docs/ pages go to their pages of the book; "../PATH" (the repository's
--- files, as docs/ links them) goes to the file, relative to the book (BOOK_ROOT).
-local root = os.getenv("BOOK_ROOT") or "../.."
-local function link(l)
-  local target = l.target
-  if target:match("^%a+:") or target:match("^#") then return nil end
-  local name, anchor = target:match("^([%w_%-]+)%.md(#?.*)$")
-  if name then l.target = name .. ".html" .. anchor; return l end
-  local up = target:match("^%.%./(.*)$")
-  if up then l.target = root .. "/" .. up; return l end
-  return nil
 end
 
 -- BOOK_ITEMS="lib/a.c lib/b.h": print the top-level items of those files of the chapter's source
