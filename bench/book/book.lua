@@ -314,7 +314,7 @@ local function link(l)
   local name, anchor = target:match("^([%w_%-]+)%.md(#?.*)$")
   if name then l.target = name .. ".html" .. anchor; return l end
   local up = target:match("^%.%./(.*)$")
-  if up then l.target = root .. "/" .. up; return l end
+  if up and page:match("^docs/") then l.target = root .. "/" .. up; return l end
   return nil
 end
 
