@@ -10,7 +10,7 @@
  * names a file that exists, and a link to a place in a page names an element of it;
  * no raw TeX is left in the page's text ("$" or a backslash command) and the page has a
  * <math> element for each equation of its Markdown. Screenshots of chapters 1 and 8 go to
- * OUT/chapterN.png. The check is run first on a copy of chapter 1's page with a broken
+ * OUT/chapterN.png (the top) and OUT/chapterN-section.png (a derivation and its code). The check is run first on a copy of chapter 1's page with a broken
  * link, a raw "$x$" and a listing removed: unless it finds all three, the check is broken.
  */
 "use strict";
@@ -124,8 +124,16 @@ async function check(browser, page, markdown) {
                         result.links + " links" + (result.problems.length ? ", FAILED" : ", ok"));
             for (const p of result.problems) console.log("    " + p);
             failed += result.problems.length > 0;
-            if (name === "chapter1.html" || name === "chapter8.html")
-                await browser.screenshot(path.join(out, name.replace(/\.html$/, ".png")));
+            const shots = {"chapter1.html": "10. Spheres", "chapter8.html": "5. Progressive"};
+            if (shots[name]) {
+                const base = path.join(out, name.replace(/\.html$/, ""));
+                await browser.screenshot(base + ".png");
+                /* and a derivation with its code: the section that `shots` names */
+                await browser.evaluate("Array.from(document.querySelectorAll('h2')).find((h) => " +
+                                       "h.textContent.startsWith(" + JSON.stringify(shots[name]) +
+                                       ")).scrollIntoView()");
+                await browser.screenshot(base + "-section.png");
+            }
         }
     } finally {
         await browser.close();
