@@ -382,7 +382,7 @@ book-test: book
 	    echo "a directive naming a missing function did not fail the build"; exit 1; fi; \
 	grep -q "no function no_such_function in lib/render.c" $(BUILD)/book-test/missing.log || \
 	    { cat $(BUILD)/book-test/missing.log; echo "its message does not name what is missing"; exit 1; }
-	node bench/book/browser_book.js $(BOOK) $(BUILD)/book-test
+	node bench/book/browser_book.js $(BOOK) $(BUILD)/book-test $(FIGURES)
 
 # ---- the lab (docs/lab.md) ---------------------------------------------------------------
 # build/lab/: the final chapter's lesson (lib/, as it is) and the lab's C (bench/lab/)

@@ -27,6 +27,7 @@ local chapter = os.getenv("BOOK_CHAPTER") or "?"
 local source = os.getenv("BOOK_SOURCE") or ""
 local coverage = os.getenv("BOOK_COVERAGE")
 local figures = os.getenv("BOOK_FIGURES") or "build/figures"
+local figures_link = os.getenv("BOOK_FIGURES_LINK") or "../figures" -- the same, from the page
 local lab = os.getenv("BOOK_LAB") or "build/lab/index.html"
 local page = (PANDOC_STATE.input_files or {})[1] or "the page"
 
@@ -326,8 +327,8 @@ local function figure(block)
   local file = figures .. "/" .. name .. ".png"
   local body = {}
   if exists(file) then
-    local image = pandoc.Image({pandoc.Str(name)}, "../figures/" .. name .. ".png", "")
-    body[#body + 1] = pandoc.Para({pandoc.Link({image}, "../figures/" .. name .. ".png")})
+    local image = pandoc.Image({pandoc.Str(name)}, figures_link .. "/" .. name .. ".png", "")
+    body[#body + 1] = pandoc.Para({pandoc.Link({image}, figures_link .. "/" .. name .. ".png")})
   else
     body[#body + 1] = pandoc.Para({pandoc.Emph({pandoc.Str("Not rendered yet: "), pandoc.Code("make chapter" .. n),
       pandoc.Str(" (or "), pandoc.Code("make figures"), pandoc.Str(") writes "),
@@ -347,7 +348,7 @@ local function figure(block)
     links[#links + 1] = pandoc.Str(". ")
   end
   if exists(figures .. "/index.html") then
-    links[#links + 1] = pandoc.Link("In the gallery", "../figures/index.html")
+    links[#links + 1] = pandoc.Link("In the gallery", figures_link .. "/index.html")
     links[#links + 1] = pandoc.Str(".")
   end
   if #links > 0 then body[#body + 1] = pandoc.Para(links) end

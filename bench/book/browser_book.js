@@ -1,13 +1,15 @@
 /* browser_book.js (bench, chapter 1): every page of the book in headless Chromium (make
  * book-test).
  *
- *   node bench/book/browser_book.js BOOK OUT
+ *   node bench/book/browser_book.js BOOK OUT FIGURES
  *
  * Opens each BOOK/*.html from file:// (bench/lab/chromium.js) and fails, naming the page,
  * unless: nothing is written to the console and nothing fails to load; every listing
  * directive of the page's Markdown (docs/NAME.md) is a listing on the page, each with
  * code in it; every link and image (to the gallery, the lab, other pages, source files)
- * names a file that exists, and a link to a place in a page names an element of it;
+ * names a file that exists, and a link to a place in a page names an element of it; each
+ * figure whose picture is in FIGURES (the gallery's folder) is shown, and each that is not
+ * says how to make it;
  * no raw TeX is left in the page's text ("$" or a backslash command) and the page has a
  * <math> element for each equation of its Markdown. Screenshots of chapters 1 and 8 go to
  * OUT/chapterN.png (the top) and OUT/chapterN-section.png (a derivation and its code). The check is run first on a copy of chapter 1's page with a broken
@@ -19,9 +21,9 @@ const fs = require("fs");
 const path = require("path");
 const {Chromium, fileUrl} = require("../lab/chromium.js");
 
-const [book, out] = process.argv.slice(2);
-if (!book || !out) {
-    console.error("usage: node bench/book/browser_book.js BOOK OUT");
+const [book, out, figures] = process.argv.slice(2);
+if (!book || !out || !figures) {
+    console.error("usage: node bench/book/browser_book.js BOOK OUT FIGURES");
     process.exit(2);
 }
 fs.mkdirSync(out, {recursive: true});
@@ -51,6 +53,9 @@ const INSPECT = `(() => {
         emptyListings: listings.filter((l) => !l.querySelector("pre code") ||
                                               !l.querySelector("pre code").textContent.trim()).length,
         math: document.querySelectorAll("math").length,
+        figures: Array.from(document.querySelectorAll("div.figure")).map((f) => ({
+            name: f.dataset.figure, image: f.querySelector("img") !== null,
+            note: /make chapter[0-9]/.test(f.textContent)})),
         text: clone.textContent,
         images: Array.from(document.images).filter((i) => !(i.complete && i.naturalWidth > 0)).map((i) => i.src),
     };
@@ -80,6 +85,12 @@ async function check(browser, page, markdown) {
             problems.push("a link to a missing place: " + href);
         }
     }
+    /* a figure of the folder is shown; one missing says how to make it */
+    for (const f of seen.figures) {
+        const there = fs.existsSync(path.join(figures, f.name + ".png"));
+        if (there && !f.image) problems.push("figure " + f.name + " is in " + figures + " but not shown");
+        if (!there && (f.image || !f.note)) problems.push("figure " + f.name + " is missing but the page does not say how to make it");
+    }
     const tex = seen.text.match(/\$[^\n]{0,40}|\\[a-zA-Z]+\{?[^\n]{0,20}/);
     if (tex) problems.push("raw TeX in the text: " + JSON.stringify(tex[0]));
     if (markdown && fs.existsSync(markdown)) {
@@ -90,7 +101,8 @@ async function check(browser, page, markdown) {
         if (seen.math < want.math)
             problems.push(seen.math + " <math> elements, " + want.math + " equations in " + markdown);
     }
-    return {problems: problems, listings: seen.listings, math: seen.math, links: seen.links.length};
+    return {problems: problems, listings: seen.listings, math: seen.math, links: seen.links.length,
+            figures: seen.figures.filter((f) => f.image).length + "/" + seen.figures.length};
 }
 
 (async () => {
@@ -120,7 +132,7 @@ async function check(browser, page, markdown) {
             const page = path.join(book, name);
             const markdown = path.join("docs", name.replace(/\.html$/, ".md"));
             const result = await check(browser, page, markdown);
-            console.log(name + ": " + result.listings + " listings, " + result.math + " equations, " +
+            console.log(name + ": " + result.listings + " listings, " + result.math + " equations, " + result.figures + " figures shown, " +
                         result.links + " links" + (result.problems.length ? ", FAILED" : ", ok"));
             for (const p of result.problems) console.log("    " + p);
             failed += result.problems.length > 0;

@@ -16,6 +16,7 @@ work=$book/.work
 rm -rf "$work"
 mkdir -p "$book" "$work"
 root=$(realpath -m --relative-to="$book" .)
+figures_link=$(realpath -m --relative-to="$book" "$figures")
 style=bench/book/style.html
 
 title() { sed -n '1s/^# *//p' "$1"; }
@@ -24,7 +25,7 @@ title() { sed -n '1s/^# *//p' "$1"; }
 page() {
     md=$1 out=$2
     shift 2
-    BOOK_ROOT=$root BOOK_FIGURES=$figures BOOK_LAB=$build/lab/index.html \
+    BOOK_ROOT=$root BOOK_FIGURES=$figures BOOK_FIGURES_LINK=$figures_link BOOK_LAB=$build/lab/index.html \
         pandoc "$md" --from markdown --to html5 --standalone --mathml \
         --lua-filter bench/book/book.lua --include-in-header "$style" \
         --metadata pagetitle="$(title "$md")" "$@" -o "$out.tmp"
