@@ -21,6 +21,8 @@
 #   make bench            the speed benchmark (a benchmark, not a test)
 #   make gallery          rewrite build/figures/index.html from the figures there
 #   make browser-test     open that page in headless Chromium and check every image loads
+#   make book             the book: build/book/, a page per chapter from docs/ with every
+#                         line of its lib/ in listings (book-test: in headless Chromium)
 #   make lab              the lab: build/lab/index.html, every chapter live in the browser
 #                         (docs/lab.md); lab-test (in headless Chromium), lab-bench,
 #                         lab-references (the page's references, from the cache)
