@@ -19,10 +19,12 @@
 -- "FILE FIRST LAST" (bench/book/coverage.sh checks that they cover the chapter's diff).
 --
 -- Figures and tables. ```{.figure name="ch07_figure7_captioned" lab="chapter=7"}``` shows
--- BOOK_FIGURES/NAME.png (build/figures, as ../figures/ from the page) with the block's
--- text as caption and a link to the lab (../lab/index.html#FRAGMENT) when the lab is
--- built; ```{.table name="ch03_table"}``` shows NAME.csv. Missing, either says how to
--- make it.
+-- BOOK_FIGURES/NAME.png (build/figures; BOOK_FIGURES_LINK is the same folder as the page
+-- links it) with the block's text as caption and a link to the lab
+-- (../lab/index.html#FRAGMENT) when BOOK_LAB is built; ```{.table name="ch03_table"}```
+-- shows NAME.csv. Missing, either says how to make it. Links to other docs/ pages
+-- (NAME.md) go to their pages of the book, and a docs/ page's "../PATH" to the
+-- repository's file (BOOK_ROOT: the repository's top, as the page links it).
 local chapter = os.getenv("BOOK_CHAPTER") or "?"
 local source = os.getenv("BOOK_SOURCE") or ""
 local coverage = os.getenv("BOOK_COVERAGE")
