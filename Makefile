@@ -21,6 +21,8 @@
 #   make bench            the speed benchmark (a benchmark, not a test)
 #   make gallery          rewrite build/figures/index.html from the figures there
 #   make browser-test     open that page in headless Chromium and check every image loads
+#   make book             the book: build/book/, a page per chapter from docs/ with every
+#                         line of its lib/ in listings (book-test: in headless Chromium)
 #   make lab              the lab: build/lab/index.html, every chapter live in the browser
 #                         (docs/lab.md); lab-test (in headless Chromium), lab-bench,
 #                         lab-references (the page's references, from the cache)
@@ -338,11 +340,13 @@ test: all check-sources
 DIFFS   ?= $(BUILD)
 # The lab's page (make lab) as the gallery links to it, relative to the figures folder.
 LAB_LINK = $(shell realpath -m --relative-to=$(FIGURES) $(BUILD)/lab/index.html)
+# The book (make book) as the gallery links to it, relative to the figures folder.
+BOOK_LINK = $(shell realpath -m --relative-to=$(FIGURES) $(BUILD)/book)
 .PHONY: gallery browser-test
 $(GALLERY): $(BUILD)/chapter$(FINAL)/bench/gallery_main.o $(BUILD)/chapter$(FINAL)/libmc.a
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 gallery: $(GALLERY)
-	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK)
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK) --book $(BOOK_LINK)
 figures:
 	@start=$$(date +%s); started=$$(date '+%Y-%m-%d %H:%M:%S %z'); \
 	$(MAKE) --no-print-directory -j$$(nproc) $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) || exit 1; \
@@ -354,9 +358,33 @@ figures:
 	echo "make figures: $$seconds s"
 	@$(MAKE) --no-print-directory exercise-solutions
 	@for n in $(CHAPTERS); do $(MAKE) --no-print-directory diff-chapter$$n > /dev/null || exit 1; done
-	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK)
+	$(GALLERY) --out $(FIGURES) --diffs $(DIFFS) --lab $(LAB_LINK) --book $(BOOK_LINK)
 browser-test: $(GALLERY)
 	sh bench/browser_gallery.sh $(FIGURES)
+
+# ---- the book ---------------------------------------------------------------------------
+# build/book/: chapterN.html from docs/chapterN.md for every chapter, the other docs/ pages,
+# and index.html, made by Debian's pandoc (installed on demand) with the filter
+# bench/book/book.lua: each listing directive is filled from chapter N's clean source
+# (make source-chapterN) when the page is built, and one that finds nothing fails; the
+# equations are MathML; the figures and tables are the gallery's ($(FIGURES)) when they are
+# there. Then each chapter's listings must show every line the chapter adds to lib/
+# (bench/book/coverage.sh prints what they miss). book-test opens every page in headless
+# Chromium (bench/book/browser_book.js).
+BOOK := $(BUILD)/book
+.PHONY: book book-test
+book: $(foreach n,$(CHAPTERS),source-chapter$(n))
+	@sh .ci/install-deps pandoc
+	sh bench/book/build.sh $(BUILD) $(FIGURES) "$(CHAPTERS)"
+book-test: book
+	@sh .ci/install-deps chromium nodejs
+	@mkdir -p $(BUILD)/book-test && printf '```{.listing file="lib/render.c" function="no_such_function"}\n```\n' > $(BUILD)/book-test/missing.md
+	@if BOOK_CHAPTER=1 BOOK_SOURCE=$(BUILD)/source/chapter1 pandoc --lua-filter bench/book/book.lua \
+	    $(BUILD)/book-test/missing.md -o /dev/null 2>$(BUILD)/book-test/missing.log; then \
+	    echo "a directive naming a missing function did not fail the build"; exit 1; fi; \
+	grep -q "no function no_such_function in lib/render.c" $(BUILD)/book-test/missing.log || \
+	    { cat $(BUILD)/book-test/missing.log; echo "its message does not name what is missing"; exit 1; }
+	node bench/book/browser_book.js $(BOOK) $(BUILD)/book-test $(FIGURES)
 
 # ---- the lab (docs/lab.md) ---------------------------------------------------------------
 # build/lab/: the final chapter's lesson (lib/, as it is) and the lab's C (bench/lab/)

@@ -424,8 +424,14 @@ static void write_header(Writer *w)
     }
     fputs(" Each table says what a render cost (seconds, rays) and what it bought (its error "
           "against a reference). Every image links to its full-size file; the folder can be "
-          "copied or zipped as it is.</p>\n<nav>\n<h2>Chapters</h2>\n<ol>\n",
+          "copied or zipped as it is.</p>\n",
           out);
+    if (page->book) {
+        fputs("<p>Each chapter's derivations and code: <a class=\"book\" href=\"", out);
+        html_text(out, page->book);
+        fputs("/index.html\">the book</a>.</p>\n", out);
+    }
+    fputs("<nav>\n<h2>Chapters</h2>\n<ol>\n", out);
     for (int i = 0; i < page->chapter_count; i++) {
         const GalleryChapter *chapter = &page->chapters[i];
         char prefix[16];
@@ -787,7 +793,16 @@ static int write_chapter(Writer *w, const GalleryChapter *chapter)
              n);
     fprintf(out, "<section id=\"chapter%d\">\n<h2>Chapter %d: ", n, n);
     html_text(out, chapter->title);
-    fputs("</h2>\n<p>", out);
+    fputs("</h2>\n", out);
+    if (w->page->book) {
+        fputs("<p><a class=\"book\" href=\"", out);
+        html_text(out, w->page->book);
+        fprintf(
+            out,
+            "/chapter%d.html\">Chapter %d in the book</a>: its derivations and its code.</p>\n",
+            n, n);
+    }
+    fputs("<p>", out);
     html_text(out, chapter->teaches);
     fputs("</p>\n<p><strong>Reproduces:</strong> ", out);
     html_text(out, chapter->reproduces);

@@ -55,10 +55,13 @@ typedef struct {
     const char *diffs;   /* the folder with diff-chapterN.txt or .diff; NULL: none */
     const GalleryChapter *chapters;
     int chapter_count;
-    time_t made;     /* when the page is made, as shown in its header */
-    const char *lab; /* the lab's page, relative to the figures folder; NULL: no links to it.
-                        A figure with settings in the lab links to it with them, and with
-                        the width of its chapter's panels (size=W, from their PFMs) */
+    time_t made;      /* when the page is made, as shown in its header */
+    const char *lab;  /* the lab's page, relative to the figures folder; NULL: no links to it.
+                         A figure with settings in the lab links to it with them, and with
+                         the width of its chapter's panels (size=W, from their PFMs) */
+    const char *book; /* the book's folder (make book), relative to the figures folder; NULL: no
+                         links to it. The page links to its index.html, and each chapter to
+                         its chapterN.html */
 } GalleryPage;
 
 /* Write the page as figures/index.html, whole or not at all (atomic_file.h). Returns 0,

@@ -6,7 +6,7 @@
  * figure of the report it reproduces (the texts below), and prints "wrote PATH".
  * `make figures` runs it at the end; `make gallery` runs it alone.
  *
- *   gallery [--out DIR] [--diffs DIR] [--lab URL] [--help]
+ *   gallery [--out DIR] [--diffs DIR] [--lab URL] [--book DIR] [--help]
  */
 #include <stdio.h>
 #include <string.h>
@@ -114,17 +114,20 @@ static void usage(FILE *out)
           "  --diffs DIR  folder with diff-chapterN.txt or .diff (default: the --out folder)\n"
           "  --lab   URL  the lab's page, relative to the --out folder: each figure links to\n"
           "               it with its settings (default: no links)\n"
+          "  --book  DIR  the book's folder (make book), relative to the --out folder: the\n"
+          "               page and each chapter link to it (default: no links)\n"
           "  --help       this help\n",
           out);
 }
 
 int main(int argc, char **argv)
 {
-    const char *out = "build/figures", *diffs = NULL, *lab = NULL;
+    const char *out = "build/figures", *diffs = NULL, *lab = NULL, *book = NULL;
     for (int i = 1; i < argc; i++) {
         const char **value = strcmp(argv[i], "--out") == 0     ? &out
                              : strcmp(argv[i], "--diffs") == 0 ? &diffs
                              : strcmp(argv[i], "--lab") == 0   ? &lab
+                             : strcmp(argv[i], "--book") == 0  ? &book
                                                                : NULL;
         if (strcmp(argv[i], "--help") == 0) {
             usage(stdout);
@@ -160,7 +163,8 @@ int main(int argc, char **argv)
                         CHAPTERS,
                         (int)(sizeof CHAPTERS / sizeof CHAPTERS[0]),
                         time(NULL),
-                        lab};
+                        lab,
+                        book};
     char error[4400];
     if (gallery_write(&page, error, sizeof error) != 0) {
         fprintf(stderr, "gallery: %s\n", error);

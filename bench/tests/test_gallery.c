@@ -152,7 +152,8 @@ static char *written(const GalleryPage *page)
 static char *make_page(void)
 {
     make_fixture();
-    GalleryPage page = {"Test gallery", fixture, fixture, CHAPTERS, CHAPTER_COUNT, 0, NULL};
+    GalleryPage page = {"Test gallery", fixture, fixture, CHAPTERS,
+                        CHAPTER_COUNT,  0,       NULL,    NULL};
     return written(&page);
 }
 
@@ -406,7 +407,7 @@ static void test_text_is_escaped_and_no_script(void **state)
 static void test_no_run_and_errors(void **state)
 {
     empty_fixture();
-    GalleryPage page = {"Test gallery", fixture, NULL, CHAPTERS, CHAPTER_COUNT, 0, NULL};
+    GalleryPage page = {"Test gallery", fixture, NULL, CHAPTERS, CHAPTER_COUNT, 0, NULL, NULL};
     char error[4400] = "";
     assert_int_equal(gallery_write(&page, error, sizeof error), 0);
     char path[4200];
@@ -433,8 +434,8 @@ static void test_figures_link_to_the_lab(void **state)
     memcpy(chapters, CHAPTERS, sizeof chapters);
     chapters[0].lab = "ch01_figure1 chapter=1&M=2";
     chapters[1].lab = "ch02_figure8 chapter=2&spp=9  ch02_plot chapter=2&b.spp=4";
-    GalleryPage page = {"Test gallery",     fixture, fixture, chapters, CHAPTER_COUNT, 0,
-                        "../lab/index.html"};
+    GalleryPage page = {"Test gallery",      fixture, fixture, chapters, CHAPTER_COUNT, 0,
+                        "../lab/index.html", NULL};
     char *text = written(&page);
     const char *one = strstr(text, "<img src=\"ch01_figure1.png\""),
                *plot = strstr(text, "<img src=\"ch02_plot.png\"");
@@ -462,6 +463,31 @@ static void test_figures_link_to_the_lab(void **state)
     free(text);
 }
 
+/* Where the page knows the book, it links to the book's index and each chapter to its page
+ * there; without it, nowhere. */
+static void test_chapters_link_to_the_book(void **state)
+{
+    make_fixture();
+    GalleryPage page = {"Test gallery", fixture, fixture, CHAPTERS,
+                        CHAPTER_COUNT,  0,       NULL,    "../book"};
+    char *text = written(&page);
+    assert_non_null(strstr(text, "<a class=\"book\" href=\"../book/index.html\">"));
+    for (int i = 0; i < CHAPTER_COUNT; i++) {
+        char section[64], link[96];
+        snprintf(section, sizeof section, "<section id=\"chapter%d\">", CHAPTERS[i].number);
+        snprintf(link, sizeof link, "<a class=\"book\" href=\"../book/chapter%d.html\">",
+                 CHAPTERS[i].number);
+        const char *at = strstr(text, section);
+        assert_non_null(at);
+        assert_true(in_range(at, strstr(at, "</section>"), link));
+    }
+    free(text);
+    page.book = NULL;
+    text = written(&page);
+    assert_null(strstr(text, "../book"));
+    free(text);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -472,6 +498,7 @@ int main(void)
         cmocka_unit_test(test_text_is_escaped_and_no_script),
         cmocka_unit_test(test_no_run_and_errors),
         cmocka_unit_test(test_figures_link_to_the_lab),
+        cmocka_unit_test(test_chapters_link_to_the_book),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
