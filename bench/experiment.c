@@ -213,6 +213,15 @@ void experiment_render(const Scene *scene, const RenderSettings *settings, Estim
                 (unsigned long long)result->samples);
 }
 
+void experiment_render_serial(const Scene *scene, const RenderSettings *settings,
+                              Estimator estimate, const void *estimator_settings,
+                              RenderResult *result)
+{
+    if (render_serial(scene, settings, estimate, estimator_settings, result) != 0)
+        cli_fail(1, "out of memory rendering %d x %d", settings->image.width,
+                 settings->image.height);
+}
+
 Options experiment_quarter_size(const Options *options)
 {
     Options quarter = *options;

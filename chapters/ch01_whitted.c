@@ -27,7 +27,7 @@ int main(int argc, char **argv)
     WhittedSettings whitted = {options.depth};
     RenderSettings settings = experiment_render_settings(&options, &scene, 1, "Whitted");
     RenderResult result;
-    experiment_render(&scene, &settings, whitted_radiance, &whitted, &result);
+    experiment_render_serial(&scene, &settings, whitted_radiance, &whitted, &result);
 
     char settings_text[96], caption[160];
     snprintf(settings_text, sizeof settings_text, "1 ray/pixel, depth %d, point light",

@@ -127,7 +127,7 @@ static Vec3 radiance(const Scene *scene, Vec3 origin, Vec3 target, int max_depth
                      RayCounts *counts)
 {
     WhittedSettings settings = {max_depth};
-    return whitted_radiance(scene, ray_through(origin, target), NULL, &settings, counts);
+    return whitted_radiance(scene, ray_through(origin, target), &settings, counts);
 }
 
 static void assert_colour_close(Vec3 a, Vec3 b)

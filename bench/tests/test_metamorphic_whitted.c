@@ -14,7 +14,7 @@
 #include <cmocka.h>
 
 #include "metamorphic.h"
-#include "whitted.h"
+#include "whitted_estimator.h"
 
 enum {
     SIDE = 64
@@ -30,7 +30,7 @@ static int render_whitted(const char *text, const Scene *scene, uint64_t seed, R
         return -1;
     RayCounts counts = {0, 0, 0};
     for (int i = 0; i < SIDE * height; i++) {
-        Vec3 v = render_sample(scene, &image, i % SIDE, i / SIDE, 0, whitted_radiance, &whitted,
+        Vec3 v = render_sample(scene, &image, i % SIDE, i / SIDE, 0, whitted_estimate, &whitted,
                                &counts);
         out->value[3 * i] = v.x;
         out->value[3 * i + 1] = v.y;
