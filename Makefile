@@ -275,13 +275,15 @@ all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) $(CHAPTER_TESTS) $(FINAL_TESTS)
 # Every source file formatted as .clang-format says (Debian's clang-format, installed on
 # demand). Every chapter's clean source: no chapter markers left; its lesson (lib/) compiles
 # with nothing but its own headers (it never includes the bench, nor a later chapter),
-# its program and tests with the bench built for that chapter; no placeholder statement "(void) x;" in its
+# its program and tests with the bench built for that chapter; its lesson adds no name
+# that the chapter does not use, no socket for a later one (bench/unused.sh, with
+# Universal Ctags); no placeholder statement "(void) x;" in its
 # lesson; chapter 1's lesson and program at most 1,100 lines, and at most 40 lines of
 # earlier lib/ files changed by any later chapter; at most 10 chapter markers in all of
 # lib/*.c; no comment cites a document outside the repository or an issue; each lesson
 # file opens with at most 12 comment lines.
 check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
-	@sh .ci/install-deps clang-format
+	@sh .ci/install-deps clang-format universal-ctags unifdef
 	@unformatted=$$(for f in $(SOURCES); do clang-format --dry-run --Werror $$f >/dev/null 2>&1 || echo $$f; done); \
 	if [ -n "$$unformatted" ]; then \
 	    echo "not formatted as .clang-format says (clang-format -i FILE):" $$unformatted; exit 1; fi
@@ -295,6 +297,8 @@ check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 	    for f in $$tree/chapters/ch0$${n}_*.c $$(find $$tree/tests -name '*.c'); do \
 	        $(CC) $(REQUIRED) -DCHAPTER=$$n -I$$tree/lib -Ibench $(PKG_CFLAGS) -fsyntax-only $$f || exit 1; \
 	    done; \
+	    earlier=$(BUILD)/source/chapter$$((n - 1)); [ -d $$earlier ] || earlier=; \
+	    sh bench/unused.sh $$tree $$n $$earlier || { echo "chapter $$n's lesson declares what it does not use"; exit 1; }; \
 	done; \
 	lines=$$(cat $(BUILD)/source/chapter1/lib/*.[ch] $(BUILD)/source/chapter1/chapters/ch01_*.c | wc -l); \
 	if [ $$lines -gt 1100 ]; then echo "chapter 1's lesson and program: $$lines lines (at most 1100)"; exit 1; fi; \
