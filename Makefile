@@ -5,8 +5,8 @@
 #   make chapterN         build chapter N from chapter N's library and run it
 #                         (ARGS="--size 200 --spp 4" to change its settings; RUNS=1 to
 #                         measure each setting once, in the chapters that take --runs)
-#   make diff-chapterN    what chapter N adds to chapter N-1: the lesson first (lib/ and the
-#                         chapter's program), then its tests (TESTS=no: the lesson only)
+#   make diff-chapterN    what chapter N adds to chapter N-1, top down: the lesson first (the
+#                         chapter's program, then lib/), then its tests (TESTS=no: the lesson)
 #   make source-chapterN  the clean source of chapter N in build/source/chapterN/
 #   make exercise-chapterN      chapter N's tree with its exercises blank, in
 #                               build/exercise/chapterN/ (README: "Do the chapters yourself")
@@ -105,11 +105,13 @@ $(DEPS_OK):
 	@mkdir -p $(@D) && touch $@
 
 # ---- one library, its program and its tests per chapter ---------------------------------
-# The order diff-chapterN shows the lesson's files in: the chapter's new files first, then
-# the lines it changes in earlier ones; each group as chapter 1 reads (vectors, rays, the
-# camera, the shapes, the tree, the scene, the optics, Whitted, one sample), then by name,
-# a header before its source.
-READING_ORDER := vec ray camera sphere triangle bvh material scene mirror snell schlick whitted render
+# The order diff-chapterN shows the lesson in, top down: the chapter's program, then its
+# lib/ files, the new ones first, then the lines it changes in earlier ones; each group as
+# chapter 1 reads, from what the program calls to what that rests on (the estimator,
+# Whitted's, and the optics it uses; one sample and the loop over the image; the scene; the
+# camera, the materials and the shapes; the tree; rays and the offsets that keep them off
+# their surfaces; vectors), then by name, a header before its source.
+READING_ORDER := whitted mirror snell schlick render scene camera material sphere triangle bvh ray vec
 
 # $(1): the chapter. Tests of chapter K are built in chapter K and in the final chapter,
 # but for the grader's and the exercises' tests (ONCE_TESTS): they grade trees they build
@@ -155,6 +157,7 @@ source-chapter$(1): | $(DEPS_OK)
 
 diff-chapter$(1): source-chapter$(1) $(if $(filter-out 1,$(1)),source-chapter$(shell echo $$(($(1) - 1))))
 	@cd $(BUILD)/source && { \
+	    diff -ruN chapter$(shell echo $$(($(1) - 1)))/chapters chapter$(1)/chapters; \
 	    for new in 1 0; do \
 	        for name in $(READING_ORDER) $$$$(ls chapter$(1)/lib | sed 's/[.][ch]$$$$//' | sort -u); do \
 	            printf 'lib/%s.h\nlib/%s.c\n' $$$$name $$$$name; \
@@ -164,7 +167,6 @@ diff-chapter$(1): source-chapter$(1) $(if $(filter-out 1,$(1)),source-chapter$(s
 	            [ $$$$is_new = $$$$new ] && diff -uN chapter$(shell echo $$(($(1) - 1)))/$$$$f chapter$(1)/$$$$f; \
 	        done; \
 	    done; \
-	    diff -ruN chapter$(shell echo $$(($(1) - 1)))/chapters chapter$(1)/chapters; \
 	    if [ "$$(TESTS)" != no ]; then diff -ruN chapter$(shell echo $$(($(1) - 1)))/tests chapter$(1)/tests; fi; \
 	    true; } > ../diff-chapter$(1).diff && cat ../diff-chapter$(1).diff
 endef

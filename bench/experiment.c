@@ -190,8 +190,8 @@ RenderSettings experiment_render_settings(const Options *options, const Scene *s
     settings.image.spp = spp;
 #if CHAPTER >= 2
     settings.image.sampling = sampling;
-#endif
     settings.image.seed = options->seed;
+#endif
     settings.threads = options->threads;
     settings.progress = !options->quiet;
     settings.label = label;

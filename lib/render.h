@@ -37,8 +37,8 @@ typedef struct {
     int spp; /* samples per pixel */
 #if CHAPTER >= 2
     PixelSampling sampling; /* where in its pixel each sample looks */
-#endif
     uint64_t seed;
+#endif
 } ImageSettings;
 
 /* Sample `sample` of pixel (col, row): the radiance that estimate() brings back along

@@ -444,7 +444,7 @@ static void test_far_object_changes_nothing(void **state)
     };
     const double distances[] = {1e3, 1e9, 1e12, 1e20, 1e40, 1e49};
     WhittedSettings whitted = {10};
-    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 1, .seed = 1};
+    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 1};
     Scene room;
     char error[512];
     if (scene_load("scenes/room_whitted.scene", &room, error, sizeof error) != 0)

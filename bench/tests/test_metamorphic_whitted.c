@@ -24,7 +24,7 @@ static int render_whitted(const char *text, const Scene *scene, uint64_t seed, R
 {
     WhittedSettings whitted = {10};
     int height = (int)lround(SIDE / scene_file_aspect(&scene->camera));
-    ImageSettings image = {.width = SIDE, .height = height, .spp = 1, .seed = seed};
+    ImageSettings image = {.width = SIDE, .height = height, .spp = 1};
     *out = (Rendering){SIDE, height, 1, 1, malloc(3 * sizeof(double) * SIDE * height), NULL};
     if (!out->value)
         return -1;

@@ -110,7 +110,7 @@ static void test_same_image_for_any_thread_count(void **state)
     Scene scene;
     load("scenes/room_whitted.scene", &scene);
     WhittedSettings whitted = {10};
-    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 3, .seed = 2019};
+    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 3};
     RenderResult first;
     assert_same_for_any_thread_count(&scene, image, whitted_estimate, &whitted, &first);
     render_result_free(&first);
@@ -339,9 +339,8 @@ static void test_interrupt_keeps_a_normalised_image(void **state)
     scene_init(&scene);
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
     render_install_interrupt();
-    RenderSettings settings = {.image = {.width = 64, .height = 64, .spp = 1000, .seed = 5},
-                               .threads = 1,
-                               .label = "test"};
+    RenderSettings settings = {
+        .image = {.width = 64, .height = 64, .spp = 1000}, .threads = 1, .label = "test"};
     int pass_to_interrupt = 3;
     RenderResult result;
     assert_int_equal(render(&scene, &settings, interrupt_midway, &pass_to_interrupt, &result),
