@@ -45,7 +45,7 @@ if [ -n "$earlier" ]; then
     declared "$earlier" | awk '{ sub(/.*\//, "", $4); print $1, $2, $4 }' | sort -u >"$work/earlier"
 fi
 
-awk -v words="$work/words" -v fields="$work/fields" '
+awk -v words="$work/words" -v fields="$work/fields" -v earlier="$work/earlier" -v n="$n" '
     BEGIN {
         while ((getline line < words) > 0) { split(line, w, " "); word[w[2]] = w[1] }
         while ((getline line < fields) > 0) { split(line, w, " "); field[w[2]] = w[1] }
@@ -71,7 +71,7 @@ awk -v words="$work/words" -v fields="$work/fields" '
             unused++
         }
         exit unused > 0
-    }' n="$n" earlier="$work/earlier" "$work/declared" || status=1
+    }' "$work/declared" || status=1
 
 # A type declared but defined nowhere in the lesson: only a later chapter completes it.
 for f in "$tree"/lib/*.h; do
