@@ -5,8 +5,8 @@
 #   make chapterN         build chapter N from chapter N's library and run it
 #                         (ARGS="--size 200 --spp 4" to change its settings; RUNS=1 to
 #                         measure each setting once, in the chapters that take --runs)
-#   make diff-chapterN    what chapter N adds to chapter N-1: the lesson first (lib/ and the
-#                         chapter's program), then its tests (TESTS=no: the lesson only)
+#   make diff-chapterN    what chapter N adds to chapter N-1, top down: the lesson first (the
+#                         chapter's program, then lib/), then its tests (TESTS=no: the lesson)
 #   make source-chapterN  the clean source of chapter N in build/source/chapterN/
 #   make exercise-chapterN      chapter N's tree with its exercises blank, in
 #                               build/exercise/chapterN/ (README: "Do the chapters yourself")
@@ -107,11 +107,13 @@ $(DEPS_OK):
 	@mkdir -p $(@D) && touch $@
 
 # ---- one library, its program and its tests per chapter ---------------------------------
-# The order diff-chapterN shows the lesson's files in: the chapter's new files first, then
-# the lines it changes in earlier ones; each group as chapter 1 reads (vectors, rays, the
-# camera, the shapes, the tree, the scene, the optics, Whitted, one sample), then by name,
-# a header before its source.
-READING_ORDER := vec ray camera sphere triangle bvh material scene mirror snell schlick whitted render
+# The order diff-chapterN shows the lesson in, top down: the chapter's program, then its
+# lib/ files, the new ones first, then the lines it changes in earlier ones; each group as
+# chapter 1 reads, from what the program calls to what that rests on (the estimator,
+# Whitted's, and the optics it uses; one sample and the loop over the image; the scene; the
+# camera, the materials and the shapes; the tree; rays and the offsets that keep them off
+# their surfaces; vectors), then by name, a header before its source.
+READING_ORDER := whitted mirror snell schlick render scene camera material sphere triangle bvh ray vec
 
 # $(1): the chapter. Tests of chapter K are built in chapter K and in the final chapter,
 # but for the grader's and the exercises' tests (ONCE_TESTS): they grade trees they build
@@ -157,6 +159,7 @@ source-chapter$(1): | $(DEPS_OK)
 
 diff-chapter$(1): source-chapter$(1) $(if $(filter-out 1,$(1)),source-chapter$(shell echo $$(($(1) - 1))))
 	@cd $(BUILD)/source && { \
+	    diff -ruN chapter$(shell echo $$(($(1) - 1)))/chapters chapter$(1)/chapters; \
 	    for new in 1 0; do \
 	        for name in $(READING_ORDER) $$$$(ls chapter$(1)/lib | sed 's/[.][ch]$$$$//' | sort -u); do \
 	            printf 'lib/%s.h\nlib/%s.c\n' $$$$name $$$$name; \
@@ -166,7 +169,6 @@ diff-chapter$(1): source-chapter$(1) $(if $(filter-out 1,$(1)),source-chapter$(s
 	            [ $$$$is_new = $$$$new ] && diff -uN chapter$(shell echo $$(($(1) - 1)))/$$$$f chapter$(1)/$$$$f; \
 	        done; \
 	    done; \
-	    diff -ruN chapter$(shell echo $$(($(1) - 1)))/chapters chapter$(1)/chapters; \
 	    if [ "$$(TESTS)" != no ]; then diff -ruN chapter$(shell echo $$(($(1) - 1)))/tests chapter$(1)/tests; fi; \
 	    true; } > ../diff-chapter$(1).diff && cat ../diff-chapter$(1).diff
 endef
@@ -277,13 +279,15 @@ all: $(CHAPTER_BINS) $(REFERENCE_BIN) $(GALLERY) $(CHAPTER_TESTS) $(FINAL_TESTS)
 # Every source file formatted as .clang-format says (Debian's clang-format, installed on
 # demand). Every chapter's clean source: no chapter markers left; its lesson (lib/) compiles
 # with nothing but its own headers (it never includes the bench, nor a later chapter),
-# its program and tests with the bench built for that chapter; no placeholder statement "(void) x;" in its
+# its program and tests with the bench built for that chapter; its lesson adds no name
+# that the chapter does not use, no socket for a later one (bench/unused.sh, with
+# Universal Ctags); no placeholder statement "(void) x;" in its
 # lesson; chapter 1's lesson and program at most 1,100 lines, and at most 40 lines of
 # earlier lib/ files changed by any later chapter; at most 10 chapter markers in all of
 # lib/*.c; no comment cites a document outside the repository or an issue; each lesson
 # file opens with at most 12 comment lines.
 check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
-	@sh .ci/install-deps clang-format
+	@sh .ci/install-deps clang-format universal-ctags unifdef
 	@unformatted=$$(for f in $(SOURCES); do clang-format --dry-run --Werror $$f >/dev/null 2>&1 || echo $$f; done); \
 	if [ -n "$$unformatted" ]; then \
 	    echo "not formatted as .clang-format says (clang-format -i FILE):" $$unformatted; exit 1; fi
@@ -297,6 +301,8 @@ check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 	    for f in $$tree/chapters/ch0$${n}_*.c $$(find $$tree/tests -name '*.c'); do \
 	        $(CC) $(REQUIRED) -DCHAPTER=$$n -I$$tree/lib -Ibench $(PKG_CFLAGS) -fsyntax-only $$f || exit 1; \
 	    done; \
+	    earlier=$(BUILD)/source/chapter$$((n - 1)); [ -d $$earlier ] || earlier=; \
+	    sh bench/unused.sh $$tree $$n $$earlier || { echo "chapter $$n's lesson declares what it does not use"; exit 1; }; \
 	done; \
 	lines=$$(cat $(BUILD)/source/chapter1/lib/*.[ch] $(BUILD)/source/chapter1/chapters/ch01_*.c | wc -l); \
 	if [ $$lines -gt 1100 ]; then echo "chapter 1's lesson and program: $$lines lines (at most 1100)"; exit 1; fi; \

@@ -190,8 +190,8 @@ RenderSettings experiment_render_settings(const Options *options, const Scene *s
     settings.image.spp = spp;
 #if CHAPTER >= 2
     settings.image.sampling = sampling;
-#endif
     settings.image.seed = options->seed;
+#endif
     settings.threads = options->threads;
     settings.progress = !options->quiet;
     settings.label = label;
@@ -211,6 +211,15 @@ void experiment_render(const Scene *scene, const RenderSettings *settings, Estim
         fprintf(stderr, "%s: %s: dropped %llu non-finite samples of %llu\n", cli_program,
                 settings->label, (unsigned long long)result->nonfinite,
                 (unsigned long long)result->samples);
+}
+
+void experiment_render_serial(const Scene *scene, const RenderSettings *settings,
+                              Estimator estimate, const void *estimator_settings,
+                              RenderResult *result)
+{
+    if (render_serial(scene, settings, estimate, estimator_settings, result) != 0)
+        cli_fail(1, "out of memory rendering %d x %d", settings->image.width,
+                 settings->image.height);
 }
 
 Options experiment_quarter_size(const Options *options)

@@ -60,6 +60,11 @@ RenderSettings experiment_render_settings(const Options *options, const Scene *s
 void experiment_render(const Scene *scene, const RenderSettings *settings, Estimator estimate,
                        const void *estimator_settings, RenderResult *result);
 
+/* The same with the lesson's own loop (render_serial, renderer.h), on one thread. */
+void experiment_render_serial(const Scene *scene, const RenderSettings *settings,
+                              Estimator estimate, const void *estimator_settings,
+                              RenderResult *result);
+
 /* The path of `file_name` in the output directory, which is created if needed. */
 void experiment_path(const Options *options, const char *file_name, char *path, size_t size);
 

@@ -290,6 +290,32 @@ int render_from(const Scene *scene, const RenderSettings *settings, int first_sa
     return 0;
 }
 
+int render_serial(const Scene *scene, const RenderSettings *settings, Estimator estimate,
+                  const void *estimator_settings, RenderResult *result)
+{
+    const ImageSettings *image = &settings->image;
+    RenderResult r = {.threads = 1};
+    r.image = image_new(image->width, image->height);
+    r.std_error = image_new(image->width, image->height);
+    r.average_std_error = image_new(image->width, image->height);
+    Vec3 *pixels = malloc((size_t)image->width * image->height * sizeof *pixels);
+    if (!r.image.pixels || !r.std_error.pixels || !r.average_std_error.pixels || !pixels) {
+        free(pixels);
+        render_result_free(&r);
+        return -1;
+    }
+    double start = stats_now();
+    render_image(scene, image, estimate, estimator_settings, pixels, &r.rays);
+    r.seconds = stats_now() - start;
+    r.samples = (uint64_t)image->width * image->height * image->spp;
+    for (int row = 0; row < image->height; row++)
+        for (int col = 0; col < image->width; col++)
+            image_set(&r.image, col, row, pixels[(long)row * image->width + col]);
+    free(pixels);
+    *result = r;
+    return 0;
+}
+
 void render_result_free(RenderResult *result)
 {
     image_free(&result->image);

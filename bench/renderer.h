@@ -59,6 +59,14 @@ void pixel_sums_finish(const PixelSum *pixels, RenderResult *result);
 int render(const Scene *scene, const RenderSettings *settings, Estimator estimate,
            const void *estimator_settings, RenderResult *result);
 
+/* The lesson's own loop, render_image (lib/render.h), on this thread: the same image as
+ * render() bit for bit (bench/tests/test_render.c) while no sample is NaN or infinite
+ * (render_image keeps them) and the placement is not on sub-pixels (render() takes their
+ * samples in another order, sample_order.h). The standard errors are left 0. Returns 0,
+ * or -1 when memory runs out. */
+int render_serial(const Scene *scene, const RenderSettings *settings, Estimator estimate,
+                  const void *estimator_settings, RenderResult *result);
+
 /* Render samples first_sample .. first_sample + spp - 1 of every pixel (render: from 0),
  * as one of several renders that continue each other (PIXEL_PROGRESSIVE; on sub-pixels,
  * first_sample + the sample sample_order.h chooses). */

@@ -29,10 +29,12 @@ SampleOrder sample_order_make(const ImageSettings *image)
     uint64_t n = (uint64_t)image->spp;
 #if CHAPTER >= 2
     int shuffled = pixel_uses_subpixels(image->sampling) && n > 1;
+    uint64_t seed = image->seed;
 #else
     int shuffled = 0;
+    uint64_t seed = 0; /* chapter 1's samples draw no random numbers */
 #endif
-    return (SampleOrder){image->seed, n, shuffled ? golden_stride(n) : 0};
+    return (SampleOrder){seed, n, shuffled ? golden_stride(n) : 0};
 }
 
 int sample_order_first(const SampleOrder *order, uint64_t pixel)
@@ -49,7 +51,7 @@ int sample_order_first(const SampleOrder *order, uint64_t pixel)
     while (r < rejected);
     return (int)(r % n);
 #else
-    return 0; /* chapter 1 shuffles nothing (sample_order_make), nor has a generator */
+    return 0;          /* chapter 1 shuffles nothing (sample_order_make), nor has a generator */
 #endif
 }
 

@@ -1,9 +1,9 @@
 /* ch01_whitted.c (chapter 1): Whitted ray tracing (report §2.1, Figure 1).
  *
- * New concepts (lib/): vec, ray, camera, sphere, triangle, bvh, material, scene, mirror,
- * snell, schlick, whitted, render. The experiment: the room lit by a point light, one
- * ray through each pixel centre: hard shadows, no colour bleeding, the ray tree in the
- * mirrors and the glass. Whitted is deterministic: no noise to measure, only its cost.
+ * New concepts (lib/), top down: whitted (with mirror, snell, schlick), render, scene,
+ * camera, material, sphere, triangle, bvh, ray, vec. The experiment: the room lit by a point
+ * light, one ray through each pixel centre: hard shadows, no colour bleeding, the ray tree in
+ * the mirrors and the glass. Whitted is deterministic: no noise to measure, only its cost.
  */
 #include <stdio.h>
 
@@ -27,7 +27,7 @@ int main(int argc, char **argv)
     WhittedSettings whitted = {options.depth};
     RenderSettings settings = experiment_render_settings(&options, &scene, 1, "Whitted");
     RenderResult result;
-    experiment_render(&scene, &settings, whitted_radiance, &whitted, &result);
+    experiment_render_serial(&scene, &settings, whitted_radiance, &whitted, &result);
 
     char settings_text[96], caption[160];
     snprintf(settings_text, sizeof settings_text, "1 ray/pixel, depth %d, point light",

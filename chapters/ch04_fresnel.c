@@ -106,7 +106,7 @@ static void figure9(const Options *options, const Scene *scene)
  * sets in is sharp); returns how many. */
 static int angles_with_critical(double step, double *angles)
 {
-    double critical = snell_critical_angle(GLASS_IOR, 1.0) * 180.0 / PI;
+    double critical = fresnel_critical_angle(GLASS_IOR, 1.0) * 180.0 / PI;
     int count = 0;
     for (int i = 0; i * step <= 90.0; i++) {
         if (count > 0 && critical > angles[count - 1] && critical < i * step)
@@ -135,7 +135,7 @@ static void fresnel_curves(const Options *options)
     int count = angles_with_critical(5.0, angles);
     printf("\nglass reflectance R (n = %.1f), Schlick minus exact; the critical angle "
            "leaving glass is %.2f degrees:\n",
-           GLASS_IOR, snell_critical_angle(GLASS_IOR, 1.0) * 180.0 / PI);
+           GLASS_IOR, fresnel_critical_angle(GLASS_IOR, 1.0) * 180.0 / PI);
     printf("  angle   entering: exact  Schlick  differ.   leaving: exact  Schlick  differ.\n");
     for (int i = 0; i < count; i++) {
         reflectances(angles[i], r);

@@ -7,6 +7,7 @@
  * factor beyond a distance still counts as entered before it. */
 #define ROUNDING (1.0 + 1e-12)
 
+/* The box that holds nothing: adding a point to it gives that point's box. */
 static const Box EMPTY = {{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}}};
 
 /* The box grown to hold the point p. */
@@ -47,14 +48,29 @@ static Box primitive_box(BvhPrimitives p, int index)
     return box_add(box_add(EMPTY, vec3_sub(s->center, r)), vec3_add(s->center, r));
 }
 
-/* The box grown by more than the rounding of a ray's slab test and the triangles' edge
- * slack (triangle.h), so that it never turns away a ray that hits what it holds. */
+/* A node's box is widened on every side by three margins, so that it never turns away a
+ * ray that hits what it holds. Its corners are rounded sums (v0 + e1, a sphere's centre
+ * plus its radius), off the exact ones by an ulp or two of each coordinate: the first
+ * margin is four ulps (2^-50) of the coordinate. The slab test rounds each t it works out,
+ * and a triangle accepts hits a little outside its edges (TRIANGLE_EDGE_SLACK): the second
+ * margin is 1e-12 of the box's largest side, which holds both. A box of no size at the
+ * origin would get neither: the third margin, 2^-1000, is the least width any box has (a
+ * normal double, lost in the rounding of any coordinate above 2^-947). All three are far
+ * below the offset of a new ray off its surface (RAY_OFFSET, ray.h), so a ray leaving a
+ * surface still meets that surface's box. */
+#define BOX_COORDINATE_MARGIN 0x1p-50
+#define BOX_SIZE_MARGIN 1e-12
+#define BOX_LEAST_MARGIN 0x1p-1000
+
 static Box widened(Box box)
 {
     double size = max2(box_extent(box, 0), max2(box_extent(box, 1), box_extent(box, 2)));
     for (int k = 0; k < 3; k++) {
-        box.corner[0][k] -= fabs(box.corner[0][k]) * 0x1p-50 + 1e-12 * size + 0x1p-1000;
-        box.corner[1][k] += fabs(box.corner[1][k]) * 0x1p-50 + 1e-12 * size + 0x1p-1000;
+        for (int side = 0; side < 2; side++) {
+            double margin = fabs(box.corner[side][k]) * BOX_COORDINATE_MARGIN +
+                            BOX_SIZE_MARGIN * size + BOX_LEAST_MARGIN;
+            box.corner[side][k] += side == 0 ? -margin : margin; /* 0: the lower corner */
+        }
     }
     return box;
 }
@@ -88,10 +104,12 @@ static void sort_along(const Box *boxes, Item *items, int count, int axis)
 static int best_split(const Box *boxes, Item *items, int count, double *right_area)
 {
     double best_cost = INFINITY;
-    int best_axis = 0, best = count / 2;
+    int best_axis = 0;
+    int best = count / 2;
     for (int axis = 0; axis < 3; axis++) {
         sort_along(boxes, items, count, axis);
-        Box right = EMPTY, left = EMPTY;
+        Box right = EMPTY;
+        Box left = EMPTY;
         for (int i = count - 1; i > 0; i--) {
             right = box_union(right, boxes[items[i].primitive]);
             right_area[i] = box_area(right);

@@ -20,17 +20,20 @@ typedef struct {
     double corner[2][3];
 } Box;
 
+/* A node of the tree. An inner node's first child is the next node, and `right` is its
+ * second; its count is 0. A leaf holds `count` primitives: the entries `first` to
+ * first + count - 1 of the tree's leaf order. */
 typedef struct {
     Box box;
-    int right;        /* inner node: its second child (the first is the next node) */
-    int first, count; /* leaf: its primitives, entries first .. first + count - 1 of the
-                         leaf order; inner node: count 0 */
+    int right;
+    int first;
+    int count;
 } BvhNode;
 
 typedef struct {
-    BvhNode *nodes; /* depth first: the root is nodes[0] */
+    BvhNode *nodes; /* in depth-first order, so the root is nodes[0] */
     int node_count;
-    int *primitives; /* primitive numbers in leaf order */
+    int *primitives; /* the primitives' numbers, in the order the leaves hold them */
 } Bvh;
 
 /* The primitives a hierarchy is built over: numbers 0 .. triangle_count - 1 are the

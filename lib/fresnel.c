@@ -51,3 +51,8 @@ double fresnel_reflectance(double cos_i, double n_i, double n_t)
     Polarised r = fresnel_polarised(cos_i, n_i, n_t);
     return 0.5 * (r.s + r.p);
 }
+
+double fresnel_critical_angle(double n_i, double n_t)
+{
+    return n_i > n_t ? asin(n_t / n_i) : 0.5 * PI;
+}

@@ -23,4 +23,8 @@ double fresnel_s(double cos_i, double n_i, double n_t);
 double fresnel_p(double cos_i, double n_i, double n_t);
 double fresnel_reflectance(double cos_i, double n_i, double n_t);
 
+/* The critical angle arcsin(n_t / n_i) in radians, beyond which light in the denser
+ * medium is totally reflected (snell.h), for n_i > n_t; pi/2 when n_i <= n_t. */
+double fresnel_critical_angle(double n_i, double n_t);
+
 #endif

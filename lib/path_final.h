@@ -17,4 +17,20 @@
 Vec3 path_final_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                          RayCounts *counts);
 
+/* Another estimator of some of the light reaching a diffuse vertex: the radiance it
+ * brings to x towards the path, given whether x sampled the mirror images and how many
+ * diffuse vertices came before it. The light it finds arrives through mirrors and glass
+ * (L S+ D), but for one planar mirror straight on where x sampled the images, so the
+ * path adds no emission it hits that way. */
+typedef struct {
+    Vec3 (*radiance)(const Scene *scene, const Vertex *x, int images, int diffuse_vertices,
+                     const void *context);
+    const void *context;
+} DiffuseEstimate;
+
+/* The final path tracer, with another estimate added at every diffuse vertex (NULL:
+ * none, path_final_radiance). */
+Vec3 path_final_trace(const Scene *scene, Ray ray, Rng *rng, const PathSettings *settings,
+                      const DiffuseEstimate *other, RayCounts *counts);
+
 #endif

@@ -105,7 +105,8 @@ int scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit)
         hit->scale = vec3_max_abs(sphere->center) + sphere->radius;
     } else {
         const Triangle *triangle = &scene->triangles[primitive];
-        Vec3 n = triangle->normal, s = vec3_sub(p, triangle->v0);
+        Vec3 n = triangle->normal;
+        Vec3 s = vec3_sub(p, triangle->v0); /* from the triangle's corner to p */
         hit->normal = n;
         hit->point = vec3_add_scaled(p, n, -vec3_dot(s, n));
         hit->material = triangle->material;

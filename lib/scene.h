@@ -1,10 +1,10 @@
 /* scene.h (chapter 1): everything a scene declares, and the ray queries against it.
  *
- * Flat arrays of materials, triangles (quads, boxes and tetrahedra are split into
- * triangles when read), spheres and point lights; no scene graph, no transforms. Add
+ * A scene is flat arrays of materials, triangles, spheres and point lights, with no
+ * scene graph and no transforms: the scene file's quads, boxes and tetrahedra are split
+ * into triangles when it is read. Add
  * the elements (scene_add_*), then call scene_prepare() once before the first query:
- * it builds the bounding volume hierarchy (bvh.h) through which every query goes, and
- * from chapter 3 on lists the emitting triangles as the area lights (area_light.h).
+ * it builds the bounding volume hierarchy (bvh.h) through which every query goes.
  */
 #ifndef SCENE_H
 #define SCENE_H
@@ -40,8 +40,7 @@ typedef struct {
     int sphere_count;
     PointLight *point_lights;
     int point_light_count;
-    /* Built by scene_prepare(): */
-    Bvh bvh; /* over all triangles and spheres */
+    Bvh bvh; /* the tree over all triangles and spheres, built by scene_prepare() */
 #if CHAPTER >= 3
     int *light_triangles;     /* indices of the emitting triangles */
     double *light_cumulative; /* running sum of their areas, for choosing one by area */
@@ -61,7 +60,7 @@ typedef struct {
     Vec3 normal; /* unit geometric normal of the front side (outward on spheres) */
     int material;
     int triangle; /* index of the triangle hit, or -1 for a sphere */
-    double scale; /* the surface's numbers behind the point's error (ray.h) */
+    double scale; /* the magnitude of the surface's numbers the point came from (ray.h) */
 } Hit;
 
 /* The primitives the hierarchy is built over (bvh.h). */
@@ -81,8 +80,7 @@ int scene_add_triangle(Scene *scene, Triangle triangle);
 int scene_add_sphere(Scene *scene, Sphere sphere);
 int scene_add_point_light(Scene *scene, PointLight light);
 
-/* Build the hierarchy (and from chapter 3 on the light list). Returns 0, or -1 when
- * memory runs out. */
+/* Build what the queries need. Returns 0, or -1 when memory runs out. */
 int scene_prepare(Scene *scene);
 
 /* The nearest hit with t in (0, tmax). Returns 1 and fills *hit, or 0 for a miss. */
@@ -94,8 +92,8 @@ int scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit);
 int scene_occluded(const Scene *scene, Vec3 from, Vec3 from_normal, Vec3 to, Vec3 to_normal);
 #if CHAPTER >= 3
 
-/* The area lights' list, built by scene_prepare() and freed by scene_free()
- * (area_light.c). Returns 0, or -1 when memory runs out. */
+/* The emitting triangles as the area lights: their list, built by scene_prepare() and
+ * freed by scene_free() (area_light.c). Returns 0, or -1 when memory runs out. */
 int area_lights_list(Scene *scene);
 void area_lights_free(Scene *scene);
 #endif

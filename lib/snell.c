@@ -21,8 +21,3 @@ int snell_refract(Vec3 d, Vec3 n, double n_i, double n_t, Vec3 *t)
     *t = vec3_normalize(vec3_add(vec3_scale(d, eta), vec3_scale(n, eta * cos_i - cos_t)));
     return 1;
 }
-
-double snell_critical_angle(double n_i, double n_t)
-{
-    return n_i > n_t ? asin(n_t / n_i) : 0.5 * PI;
-}

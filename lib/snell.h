@@ -24,7 +24,4 @@ int snell_refract(Vec3 d, Vec3 n, double n_i, double n_t, Vec3 *t);
  * (only possible for n_i > n_t). */
 double snell_cos_transmitted(double cos_i, double n_i, double n_t);
 
-/* The critical angle in radians for n_i > n_t; pi/2 when n_i <= n_t. */
-double snell_critical_angle(double n_i, double n_t);
-
 #endif

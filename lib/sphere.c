@@ -14,7 +14,8 @@ double sphere_intersect(const Sphere *sphere, Ray ray, double tmin, double tmax)
     /* The near root, computed without cancellation: q = b + sign(b) h; roots q and k/q. */
     double k = vec3_dot(to_origin, to_origin) - r2;
     double q = b + copysign(half_chord, b);
-    double t0 = q, t1 = q != 0.0 ? k / q : 0.0;
+    double t0 = q;
+    double t1 = q != 0.0 ? k / q : 0.0;
     if (t0 > t1) {
         double swap = t0;
         t0 = t1;

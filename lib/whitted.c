@@ -60,8 +60,7 @@ static Vec3 trace(const Scene *scene, Ray ray, int depth, int max_depth, RayCoun
     return vec3_add(radiance, sum);
 }
 
-Vec3 whitted_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
-                      RayCounts *counts)
+Vec3 whitted_radiance(const Scene *scene, Ray ray, const void *settings, RayCounts *counts)
 {
     const WhittedSettings *s = settings;
     return trace(scene, ray, 1, s->max_depth, counts);

@@ -15,8 +15,8 @@ typedef struct {
     int max_depth;
 } WhittedSettings;
 
-/* An Estimator (render.h); settings points to a WhittedSettings. */
-Vec3 whitted_radiance(const Scene *scene, Ray ray, Rng *rng, const void *settings,
-                      RayCounts *counts);
+/* The radiance arriving along the ray; settings points to a WhittedSettings. In chapter 1
+ * it is an Estimator (render.h). */
+Vec3 whitted_radiance(const Scene *scene, Ray ray, const void *settings, RayCounts *counts);
 
 #endif

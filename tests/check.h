@@ -17,6 +17,13 @@
             fail_msg("%s = %.17g, expected %.17g within %.3g", #a, a_, b_, (double)(tol));     \
     } while (0)
 
+/* The critical angle arcsin(n_t / n_i) for n_i > n_t, pi/2 when n_i <= n_t: the tests'
+ * own, apart from the lesson's (fresnel.h, chapter 4). */
+static inline double test_critical_angle(double n_i, double n_t)
+{
+    return n_i > n_t ? asin(n_t / n_i) : 0.5 * PI;
+}
+
 /* Two unit vectors t, b that with the unit vector n make a right-handed orthonormal
  * frame (t from the axis least along n): the tests' own, apart from the lesson's
  * (frame.h, chapter 2). */

@@ -55,7 +55,7 @@ static void test_value_at_80_degrees(void **state)
  * critical angle R is already close to 1 and it never decreases on the way. */
 static void test_total_internal_reflection(void **state)
 {
-    double critical = snell_critical_angle(GLASS, 1.0);
+    double critical = fresnel_critical_angle(GLASS, 1.0);
     assert_float_equal(critical, asin(1.0 / GLASS), 1e-15);
     assert_float_equal(fresnel_reflectance(cos(critical), GLASS, 1.0), 1.0, 1e-6);
     for (double angle = critical + 1e-9; angle <= 0.5 * PI; angle += 0.001)
@@ -162,12 +162,26 @@ static void test_sweep_finite_and_bounded(void **state)
     }
 }
 
+/* The critical angle is arcsin(n_t / n_i) (not the report's n_i / n_t):
+ * 41.81 degrees from glass of 1.5 into air, 48.61 from water; none (pi/2) entering a
+ * denser medium or with n_i = n_t. */
+static void test_critical_angle_values(void **state)
+{
+    assert_float_equal(fresnel_critical_angle(1.5, 1.0), asin(1.0 / 1.5), 1e-15);
+    assert_float_equal(fresnel_critical_angle(1.5, 1.0) * 180.0 / PI, 41.8103, 1e-4);
+    assert_float_equal(fresnel_critical_angle(1.333, 1.0) * 180.0 / PI, 48.6066, 1e-4);
+    assert_float_equal(fresnel_critical_angle(4.0, 1.5), asin(1.5 / 4.0), 1e-15);
+    assert_float_equal(fresnel_critical_angle(1.0, 1.5), 0.5 * PI, 0);
+    assert_float_equal(fresnel_critical_angle(1.5, 1.5), 0.5 * PI, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_normal_incidence),
         cmocka_unit_test(test_value_at_80_degrees),
         cmocka_unit_test(test_total_internal_reflection),
+        cmocka_unit_test(test_critical_angle_values),
         cmocka_unit_test(test_no_interface_reflects_nothing),
         cmocka_unit_test(test_grazing_reflects_everything),
         cmocka_unit_test(test_brewster_angle),

@@ -19,7 +19,7 @@
 #include "check.h"
 #include "scene.h"
 #include "scene_file.h"
-#include "whitted.h"
+#include "whitted_estimator.h"
 
 /* From the smallest to the largest scale the reader takes (scene_file.c: sizes 1e-50
  * to 1e50), through 1e-12, where an absolute ray offset would fail. */
@@ -444,7 +444,7 @@ static void test_far_object_changes_nothing(void **state)
     };
     const double distances[] = {1e3, 1e9, 1e12, 1e20, 1e40, 1e49};
     WhittedSettings whitted = {10};
-    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 1, .seed = 1};
+    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 1};
     Scene room;
     char error[512];
     if (scene_load("scenes/room_whitted.scene", &room, error, sizeof error) != 0)
@@ -452,7 +452,7 @@ static void test_far_object_changes_nothing(void **state)
     static Vec3 alone[SIDE * SIDE];
     RayCounts counts = {0, 0, 0};
     for (int i = 0; i < SIDE * SIDE; i++)
-        alone[i] = render_sample(&room, &image, i % SIDE, i / SIDE, 0, whitted_radiance,
+        alone[i] = render_sample(&room, &image, i % SIDE, i / SIDE, 0, whitted_estimate,
                                  &whitted, &counts);
     for (int k = 0; k < (int)(sizeof distances / sizeof distances[0]); k++) {
         Scene far;
@@ -461,7 +461,7 @@ static void test_far_object_changes_nothing(void **state)
         assert_int_equal(scene_prepare(&far), 0);
         int differ = 0;
         for (int i = 0; i < SIDE * SIDE; i++) {
-            Vec3 v = render_sample(&far, &image, i % SIDE, i / SIDE, 0, whitted_radiance,
+            Vec3 v = render_sample(&far, &image, i % SIDE, i / SIDE, 0, whitted_estimate,
                                    &whitted, &counts);
             differ += v.x != alone[i].x || v.y != alone[i].y || v.z != alone[i].z;
         }

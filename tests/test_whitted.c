@@ -127,7 +127,7 @@ static Vec3 radiance(const Scene *scene, Vec3 origin, Vec3 target, int max_depth
                      RayCounts *counts)
 {
     WhittedSettings settings = {max_depth};
-    return whitted_radiance(scene, ray_through(origin, target), NULL, &settings, counts);
+    return whitted_radiance(scene, ray_through(origin, target), &settings, counts);
 }
 
 static void assert_colour_close(Vec3 a, Vec3 b)
@@ -409,7 +409,7 @@ static void test_glass_entering_splits_by_schlick(void **state)
 static void test_glass_total_internal_reflection(void **state)
 {
     const Vec3 le_in = vec3(4, 2, 1);
-    const double critical = snell_critical_angle(GLASS_IOR, 1.0);
+    const double critical = test_critical_angle(GLASS_IOR, 1.0);
     const double thetas[] = {10 * PI / 180, 30 * PI / 180, 41 * PI / 180, critical,
                              45 * PI / 180, 60 * PI / 180, 75 * PI / 180};
     const Vec3 top = vec3(0, 0, 0.5); /* where the ray meets the sphere: normal +z */

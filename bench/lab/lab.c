@@ -26,7 +26,7 @@
 #include "sample_order.h"
 #include "scene_file.h"
 #include "sphere_guide.h"
-#include "whitted.h"
+#include "whitted_estimator.h"
 
 #define LAB_CHAPTERS 8
 #define LAB_SIZE_MAX 4096
@@ -553,7 +553,7 @@ static void choose_estimator(Lab *lab)
     switch (s->chapter) {
     case 1:
         lab->whitted.max_depth = s->path.max_depth;
-        lab->estimate = whitted_radiance;
+        lab->estimate = whitted_estimate;
         lab->estimator_settings = &lab->whitted;
         break;
     case 2:

@@ -14,7 +14,7 @@
 #include <cmocka.h>
 
 #include "metamorphic.h"
-#include "whitted.h"
+#include "whitted_estimator.h"
 
 enum {
     SIDE = 64
@@ -24,13 +24,13 @@ static int render_whitted(const char *text, const Scene *scene, uint64_t seed, R
 {
     WhittedSettings whitted = {10};
     int height = (int)lround(SIDE / scene_file_aspect(&scene->camera));
-    ImageSettings image = {.width = SIDE, .height = height, .spp = 1, .seed = seed};
+    ImageSettings image = {.width = SIDE, .height = height, .spp = 1};
     *out = (Rendering){SIDE, height, 1, 1, malloc(3 * sizeof(double) * SIDE * height), NULL};
     if (!out->value)
         return -1;
     RayCounts counts = {0, 0, 0};
     for (int i = 0; i < SIDE * height; i++) {
-        Vec3 v = render_sample(scene, &image, i % SIDE, i / SIDE, 0, whitted_radiance, &whitted,
+        Vec3 v = render_sample(scene, &image, i % SIDE, i / SIDE, 0, whitted_estimate, &whitted,
                                &counts);
         out->value[3 * i] = v.x;
         out->value[3 * i + 1] = v.y;

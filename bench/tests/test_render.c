@@ -7,6 +7,10 @@
  *   Chapter 1 renders it with Whitted through each pixel's centre; from chapter 2 on,
  *   also with random positions and with sub-pixels; from chapter 6 on, also with the
  *   path tracer with shadow rays, exact Fresnel and roulette.
+ * - The lesson's loop (render_image, lib/render.h, run by render_serial) gives each of
+ *   those images bit for bit, and the same ray counts, but on sub-pixels, whose samples
+ *   the threaded renderer takes in another order (sample_order.h); from chapter 2 on,
+ *   also the path tracer of chapter 2's pictures.
  * - Estimates: with an estimator that returns a known value per sample, each pixel is
  *   the mean of its samples and its standard errors (per channel, and of the channel
  *   mean) are the textbook ones, also for a bright pixel of small spread, where only a
@@ -28,17 +32,39 @@
 
 #include "renderer.h"
 #include "scene_file.h"
-#include "whitted.h"
+#include "whitted_estimator.h"
+#if CHAPTER >= 2
+#include "path.h"
+#endif
 #if CHAPTER >= 6
 #include "path_roulette.h"
 #endif
 
 #define SIDE 48
 
+/* The lesson's serial loop renders the same image as `threaded`, bit for bit, with the
+ * same ray counts. */
+static void assert_lesson_loop_gives(const Scene *scene, const RenderResult *threaded,
+                                     ImageSettings image, Estimator estimate,
+                                     const void *estimator_settings)
+{
+    RenderSettings settings = {.image = image, .label = "test"};
+    RenderResult lesson;
+    assert_int_equal(render_serial(scene, &settings, estimate, estimator_settings, &lesson), 0);
+    assert_memory_equal(threaded->image.pixels, lesson.image.pixels,
+                        3 * sizeof(float) * (size_t)image.width * (size_t)image.height);
+    assert_true(threaded->samples == lesson.samples);
+    assert_true(threaded->rays.camera == lesson.rays.camera);
+    assert_true(threaded->rays.bounce == lesson.rays.bounce);
+    assert_true(threaded->rays.shadow == lesson.rays.shadow);
+    render_result_free(&lesson);
+}
+
 /* Render `image` (its size SIDE x SIDE) with 1, 2 and 7 threads: the same images bit
  * for bit, and the same ray counts: one camera ray per sample, and bounce and shadow
- * rays (the room has mirrors and a light), counted in full whichever thread traced them.
- * The one-thread result is left in *first. */
+ * rays (the room has mirrors and a light), counted in full whichever thread traced them;
+ * but on sub-pixels, the lesson's loop gives them too. The one-thread result is left in
+ * *first. */
 static void assert_same_for_any_thread_count(const Scene *scene, ImageSettings image,
                                              Estimator estimate, const void *estimator_settings,
                                              RenderResult *first)
@@ -64,6 +90,10 @@ static void assert_same_for_any_thread_count(const Scene *scene, ImageSettings i
         assert_true(results[0].rays.shadow == results[i].rays.shadow);
         render_result_free(&results[i]);
     }
+#if CHAPTER >= 2
+    if (!pixel_uses_subpixels(image.sampling))
+#endif
+        assert_lesson_loop_gives(scene, &results[0], image, estimate, estimator_settings);
     *first = results[0];
 }
 
@@ -80,9 +110,9 @@ static void test_same_image_for_any_thread_count(void **state)
     Scene scene;
     load("scenes/room_whitted.scene", &scene);
     WhittedSettings whitted = {10};
-    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 3, .seed = 2019};
+    ImageSettings image = {.width = SIDE, .height = SIDE, .spp = 3};
     RenderResult first;
-    assert_same_for_any_thread_count(&scene, image, whitted_radiance, &whitted, &first);
+    assert_same_for_any_thread_count(&scene, image, whitted_estimate, &whitted, &first);
     render_result_free(&first);
     scene_free(&scene);
 }
@@ -118,7 +148,29 @@ static void test_same_sampled_image_for_any_thread_count(void **state)
     Scene scene;
     load("scenes/room_whitted.scene", &scene);
     WhittedSettings whitted = {10};
-    assert_sampled_same_for_any_thread_count(&scene, whitted_radiance, &whitted);
+    assert_sampled_same_for_any_thread_count(&scene, whitted_estimate, &whitted);
+    scene_free(&scene);
+}
+#endif
+
+#if CHAPTER >= 2
+/* Chapter 2's path tracer (light by hitting only) at random points of each pixel: the
+ * lesson's loop and the threaded renderer on 1, 2 and 3 threads give the same image. */
+static void test_lesson_loop_gives_the_path_traced_image(void **state)
+{
+    Scene scene;
+    load("scenes/room.scene", &scene);
+    PathSettings path = {.max_depth = 8};
+    ImageSettings image = {
+        .width = SIDE, .height = SIDE, .spp = 4, .seed = 7, .sampling = PIXEL_RANDOM};
+    for (int threads = 1; threads <= 3; threads++) {
+        RenderSettings settings = {.image = image, .threads = threads, .label = "test"};
+        RenderResult result;
+        assert_int_equal(render(&scene, &settings, path_radiance, &path, &result), 0);
+        assert_true(result.rays.bounce > 0);
+        assert_lesson_loop_gives(&scene, &result, image, path_radiance, &path);
+        render_result_free(&result);
+    }
     scene_free(&scene);
 }
 #endif
@@ -266,8 +318,13 @@ static void test_nonfinite_samples_dropped_and_counted(void **state)
 #endif
 
 /* Returns 1 per sample, and raises SIGINT during pass 3. */
+#if CHAPTER >= 2
 static Vec3 interrupt_midway(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                              RayCounts *counts)
+#else
+static Vec3 interrupt_midway(const Scene *scene, Ray ray, const void *settings,
+                             RayCounts *counts)
+#endif
 {
     const int *pass_to_interrupt = settings;
     static int calls;
@@ -282,9 +339,8 @@ static void test_interrupt_keeps_a_normalised_image(void **state)
     scene_init(&scene);
     scene.camera = camera_make(vec3(0, 0, 0), vec3(-1, -1, 1), vec3(1, -1, 1), vec3(-1, 1, 1));
     render_install_interrupt();
-    RenderSettings settings = {.image = {.width = 64, .height = 64, .spp = 1000, .seed = 5},
-                               .threads = 1,
-                               .label = "test"};
+    RenderSettings settings = {
+        .image = {.width = 64, .height = 64, .spp = 1000}, .threads = 1, .label = "test"};
     int pass_to_interrupt = 3;
     RenderResult result;
     assert_int_equal(render(&scene, &settings, interrupt_midway, &pass_to_interrupt, &result),
@@ -304,6 +360,7 @@ int main(void)
         cmocka_unit_test(test_same_image_for_any_thread_count),
 #if CHAPTER >= 2
         cmocka_unit_test(test_same_sampled_image_for_any_thread_count),
+        cmocka_unit_test(test_lesson_loop_gives_the_path_traced_image),
 #endif
 #if CHAPTER >= 6
         cmocka_unit_test(test_same_path_traced_image_for_any_thread_count),
