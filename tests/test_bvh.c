@@ -1,4 +1,4 @@
-/* test_bvh.c (chapter 1): Tests of the bounding volume hierarchy (lib/bvh.c).
+/* test_bvh.c (chapter 2): Tests of the bounding volume hierarchy (lib/bvh.c).
  *
  * The hierarchy may change only how fast the nearest hit is found, never which hit:
  * for every ray, the BVH's nearest t must equal exactly what testing every primitive
