@@ -46,7 +46,7 @@ static int brute_force(BvhPrimitives p, Ray ray, double *tmax)
     return nearest;
 }
 
-/* The trees under test: chapter 1's, and from chapter 9 on the same made four-wide. */
+/* The trees under test: chapter 2's, and from chapter 9 on the same made four-wide. */
 typedef struct {
     const char *name;
     int (*intersect)(const Scene *scene, Ray ray, double *tmax);
