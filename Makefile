@@ -97,7 +97,7 @@ TEST_SOURCES  := $(wildcard tests/test_*.c bench/tests/test_*.c)
 REFERENCE_BIN := $(BUILD)/reference
 GALLERY       := $(BUILD)/gallery
 
-.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery check-exercises \
+.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery check-exercises grade-class \
         exercise-solutions
 .DEFAULT_GOAL := all
 .SECONDARY:
@@ -245,6 +245,16 @@ exercise-chapter$(1) check-exercise-chapter$(1):
 endif
 endef
 $(foreach n,$(CHAPTERS),$(eval $(call EXERCISE_RULES,$(n))))
+
+# A teacher's command: every tree in DIR graded as check-exercise-chapter$(CHAPTER) grades
+# one, each in its own sandbox, into OUT (bench/exercise/class.sh).
+CHAPTER ?=
+grade-class: $(if $(filter $(CHAPTER),$(EXERCISE_CHAPTERS)),$(call grader_of,$(CHAPTER)))
+	@if [ -z "$$DIR" ] || [ -z "$(filter $(CHAPTER),$(EXERCISE_CHAPTERS))" ]; then \
+	    echo "usage: make grade-class DIR=FOLDER-OF-TREES CHAPTER=N [OUT=FOLDER] [ONLY=IDS] (chapters with exercises: $(strip $(EXERCISE_CHAPTERS)))"; exit 2; fi; \
+	sh bench/exercise/class.sh $(CHAPTER) "$$DIR" "$${OUT:-$(EXERCISE_DIR)/class/chapter$(CHAPTER)}" \
+	    env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL $(MAKE) --no-print-directory -s BUILD=$(BUILD) \
+	    CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" CC="$(CC)" check-exercise-chapter$(CHAPTER)
 
 # The solution's checks (the clean source: every exercise passes), their verdicts and
 # pictures copied into $(FIGURES) as chNN_exercise* for the gallery; then (CI) the blank
