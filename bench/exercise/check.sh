@@ -30,11 +30,11 @@ case $limit in
     '' | *[!0-9]* | 0*) refuse "TIME_LIMIT=$limit is not a whole number of seconds >= 1" ;;
 esac
 case $student in -*) student=./$student ;; esac # no command takes it for an option
-[ -L "$student/lib" ] && refuse "$student/lib is a symbolic link: a tree's lib/ must be its own folder"
-[ -d "$student/lib" ] || refuse "$student is not a chapter's tree (it has no lib/)"
-real=$(cd -P -- "$student" && pwd -P) || refuse "cannot enter $student"
+real=$(cd -P -- "$student" 2> /dev/null && pwd -P) || refuse "cannot enter $student"
 [ "$real" = / ] && refuse "STUDENT=$student is the whole file system (/), not a chapter's tree"
 case $repo/ in "$real"/*) refuse "STUDENT=$student is or holds this repository ($repo), not a chapter's tree" ;; esac
+[ -L "$student/lib" ] && refuse "$student/lib is a symbolic link: a tree's lib/ must be its own folder"
+[ -d "$student/lib" ] || refuse "$student is not a chapter's tree (it has no lib/)"
 case ${TRUSTED:-} in '' | 0) trusted=0 ;; 1) trusted=1 ;; *) refuse "TRUSTED=$TRUSTED is neither 1 nor 0" ;; esac
 
 # Where the verdicts go: made afresh by the grader, never through a link out of the tree.
@@ -99,9 +99,9 @@ entries=$(printf '%s\n' "$list" | awk 'NF == 2 { print $1 ":" $2 }')
 # copies checked again, in the private folder.
 mkdir "$private/references" || refuse "cannot fill the private folder (is the disk full?)"
 # matches SUMS FOLDER: every file SUMS lists (after its first line) is in FOLDER, whole.
+listed() { tail -n +2 "$1" | grep .; }
 matches() {
-    [ "$(tail -n +2 "$1" | wc -l)" -eq 0 ] ||
-        tail -n +2 "$1" | (cd "$2" && sha256sum --status -c --strict 2> /dev/null)
+    [ -z "$(listed "$1")" ] || listed "$1" | (cd "$2" && sha256sum --status -c --strict 2> /dev/null)
 }
 for id in $all_ids; do
     sums=$references/exercise-$id.sha256
@@ -114,7 +114,7 @@ $(cd "$references" && for f in $files; do sha256sum -- "$f"; done)
 " "$sums" ||
             refuse "cannot record the references' checksums: $why"
     fi
-    for file in $(tail -n +2 "$sums" | awk '{ print $2 }'); do
+    for file in $(listed "$sums" | awk '{ print $2 }'); do
         cp -- "$references/$file" "$private/references/$file" || refuse "cannot copy the reference $file"
     done
     matches "$sums" "$private/references" ||

@@ -62,6 +62,11 @@ static const Mistake mistakes[] = {
      "nearest the horizon", NULL},
     {2, "2.1", "phi over half a turn", "lib/hemisphere.c", "double phi = 2.0 * PI * u2;",
      "double phi = PI * u2;", "sector", NULL},
+    {2, "2.1", "a direction 3 parts in a million too long", "lib/hemisphere.c",
+     "return vec3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);",
+     "return vec3_scale(vec3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta), "
+     "1.0 + 3e-6);",
+     "off the unit sphere", NULL},
     {2, "2.2", "the pdf without 1 / pi", "lib/hemisphere.c", "w_local.z / PI : 0.0",
      "w_local.z : 0.0", "pi times too large", NULL},
     {2, "2.2", "the uniform hemisphere's pdf", "lib/hemisphere.c", "w_local.z / PI : 0.0",
