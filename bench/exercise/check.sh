@@ -142,7 +142,7 @@ bench_objects=$(printf 'objects/%s\n' $bench_objects)
 # grader out of the tree's reach: written only by this build's compiler, read-only to
 # the probe.
 if [ -n "${CACHE:-}" ]; then
-    key=$(printf '%s\n' "$real" "$judge_sum" "${CC:-}" "${CFLAGS:-}" "${LDFLAGS:-}" "${PKG_CFLAGS:-}" |
+    key=$(printf '%s\n' "$real" "$trusted" "$judge_sum" "${CC:-}" "${CFLAGS:-}" "${LDFLAGS:-}" "${PKG_CFLAGS:-}" |
         sha256sum | cut -c 1-24)
     objects=$CACHE/$key
     mkdir -p -- "$objects" || refuse "cannot make $objects"
