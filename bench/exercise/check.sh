@@ -140,9 +140,9 @@ mkdir -p "$box/check/build" "$grader/objects" && cp -R -p -- "$real/lib" "$box/l
 bench_objects=$(printf 'objects/%s\n' $bench_objects)
 # The objects of this tree's earlier checks (same tree, judge and flags), kept by the
 # grader out of the tree's reach: written only by this build's compiler, read-only to
-# the probe.
-if [ -n "${CACHE:-}" ]; then
-    key=$(printf '%s\n' "$real" "$trusted" "$judge_sum" "${CC:-}" "${CFLAGS:-}" "${LDFLAGS:-}" "${PKG_CFLAGS:-}" |
+# the probe. (A trusted build sees the private folder by its own changing path: none.)
+if [ -n "${CACHE:-}" ] && [ "$trusted" = 0 ]; then
+    key=$(printf '%s\n' "$real" "$judge_sum" "${CC:-}" "${CFLAGS:-}" "${LDFLAGS:-}" "${PKG_CFLAGS:-}" |
         sha256sum | cut -c 1-24)
     objects=$CACHE/$key
     mkdir -p -- "$objects" || refuse "cannot make $objects"
