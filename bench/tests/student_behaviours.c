@@ -77,17 +77,24 @@ static void forge_everywhere(void)
 static unsigned char stolen[ANSWERS_SECRET];
 static int have_stolen;
 
-static void steal_the_secret(void)
+/* The stolen secret on descriptor 4 again, as the judge gives it. */
+static void give_back_the_secret(void)
 {
     int ends[2];
-    if (answers_read_secret(ANSWERS_SECRET_FD, stolen) != 0 || pipe(ends) != 0)
+    if (!have_stolen || pipe(ends) != 0)
         return;
-    have_stolen = answers_write_all(ends[1], stolen, ANSWERS_SECRET) == 0;
+    answers_write_all(ends[1], stolen, ANSWERS_SECRET);
     close(ends[1]);
     if (ends[0] != ANSWERS_SECRET_FD) { /* pipe() may have given it that very number */
         dup2(ends[0], ANSWERS_SECRET_FD);
         close(ends[0]);
     }
+}
+
+static void steal_the_secret(void)
+{
+    have_stolen = answers_read_secret(ANSWERS_SECRET_FD, stolen) == 0;
+    give_back_the_secret();
 }
 
 static int read_the_secret(unsigned char secret[ANSWERS_SECRET])
@@ -138,24 +145,29 @@ static void kill_the_grader(void)
         pause();
 }
 
-/* The folder of the judge (a process running .../bench/exercise/grade), as /proc shows
- * it, into folder[size]; 0, or -1 when no such process is in sight. */
-static int judge_folder(char *folder, size_t size)
+/* A program of the grader's (`name`: "probe" or "grade", chapter 1's) as /proc shows one
+ * to this process: beside a running judge, or in the build folder under the folder a
+ * process runs in (make's, the checkout). Into path[size]; 0, or -1 when none is seen. */
+static int find_in_proc(const char *name, char *path, size_t size)
 {
     DIR *proc = opendir("/proc");
     struct dirent *entry;
     int found = -1;
     while (proc && found != 0 && (entry = readdir(proc)) != NULL) {
-        char path[300];
-        snprintf(path, sizeof path, "/proc/%.200s/exe", entry->d_name);
-        ssize_t n = readlink(path, folder, size - 1);
-        if (n <= 0)
-            continue;
-        folder[n] = '\0';
-        char *slash = strrchr(folder, '/');
-        if (slash && strcmp(slash, "/grade") == 0 && strstr(folder, "/bench/exercise/")) {
-            *slash = '\0';
-            found = 0;
+        char link[300], target[1024];
+        snprintf(link, sizeof link, "/proc/%.200s/exe", entry->d_name);
+        ssize_t n = readlink(link, target, sizeof target - 1);
+        char *slash = n > 0 ? (target[n] = '\0', strrchr(target, '/')) : NULL;
+        if (slash && strcmp(slash, "/grade") == 0 && strstr(target, "/bench/exercise/")) {
+            snprintf(path, size, "%.*s/%s", (int)(slash - target), target, name);
+            found = access(path, X_OK);
+        }
+        snprintf(link, sizeof link, "/proc/%.200s/cwd", entry->d_name);
+        n = found != 0 ? readlink(link, target, sizeof target - 1) : -1;
+        if (n > 0) {
+            target[n] = '\0';
+            snprintf(path, size, "%s/build/chapter1/bench/exercise/%s", target, name);
+            found = access(path, X_OK);
         }
     }
     if (proc)
@@ -163,16 +175,16 @@ static int judge_folder(char *folder, size_t size)
     return found;
 }
 
-/* The issue's forgery: exec the solution's probe, beside the judge, with this run's
+/* The issue's forgery: exec the solution's probe, found through /proc, with this run's
  * secret (taken by the constructor) on descriptor 4: it would answer right. */
 static void exec_solution_probe(void)
 {
-    char folder[1024], probe[1100];
-    if (judge_folder(folder, sizeof folder) != 0) {
+    char probe[1100];
+    if (find_in_proc("probe", probe, sizeof probe) != 0) {
         printf("no judge in sight in /proc\n");
         return;
     }
-    snprintf(probe, sizeof probe, "%s/probe", folder);
+    give_back_the_secret();
     execl(probe, "probe", "1.1", (char *)NULL);
     printf("cannot run %s: %s\n", probe, strerror(errno));
 }
@@ -180,13 +192,12 @@ static void exec_solution_probe(void)
 /* A script renamed over the judge, for the checks after this one. */
 static void replace_judge(void)
 {
-    char folder[1024], path[1100], fake[1200];
-    if (judge_folder(folder, sizeof folder) != 0) {
+    char path[1100], fake[1200];
+    if (find_in_proc("grade", path, sizeof path) != 0) {
         printf("no judge in sight in /proc\n");
         return;
     }
-    snprintf(path, sizeof path, "%s/grade", folder);
-    snprintf(fake, sizeof fake, "%s/grade.fake", folder);
+    snprintf(fake, sizeof fake, "%s.fake", path);
     FILE *file = fopen(fake, "w");
     if (!file || fputs("#!/bin/sh\necho pass\n", file) < 0 || fclose(file) != 0 ||
         chmod(fake, 0755) != 0 || rename(fake, path) != 0)
@@ -304,7 +315,7 @@ static int file_holds(const char *path, const char *text)
 /* One thing outside the sandbox: "reached WHAT" or "kept out of WHAT". */
 static void reach(const char *what)
 {
-    char path[4200], folder[1024];
+    char path[4200];
     int reached = 0;
     if (strcmp(what, "tree") == 0) /* the student's own tree, as the grader was given it */
         reached = can_write(given("GRADER_TREE", "/check/verdicts.txt", path, sizeof path));
@@ -315,7 +326,7 @@ static void reach(const char *what)
     else if (strcmp(what, "judge-by-path") == 0)
         reached = can_read(given("GRADER_JUDGE", "", path, sizeof path));
     else if (strcmp(what, "judge-via-proc") == 0)
-        reached = judge_folder(folder, sizeof folder) == 0;
+        reached = find_in_proc("grade", path, sizeof path) == 0;
     else if (strcmp(what, "references") == 0)
         reached = can_write(given("GRADER_REFERENCES", "/escaped.pfm", path, sizeof path));
     else if (strcmp(what, "home") == 0)
