@@ -591,7 +591,9 @@ static void test_full_disk(void **state)
     char tree[1300], full[2300], command[16384], environment[8192], *out;
     snprintf(tree, sizeof tree, "%s/solution2", root);
     snprintf(full, sizeof full, "%s/full", abs_root);
-    shell("rm -rf '%s' && mkdir -p '%s' && [ -d '%s/lib' ]", full, full, tree);
+    shell("rm -rf '%s' && mkdir -p '%s' && { [ -d '%s/lib' ] || cp -R '%s/source/chapter2' "
+          "'%s'; }",
+          full, full, tree, build, tree);
     snprintf(command, sizeof command,
              "env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL %s unshare -m sh -c \"mount -t tmpfs -o "
              "size=64k tmpfs '%s' && { dd if=/dev/zero of='%s/filler' bs=4k 2> /dev/null; "
