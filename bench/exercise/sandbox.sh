@@ -1,25 +1,25 @@
 #!/bin/sh
 # sandbox.sh BOX GRADER COMMAND [ARG...]: run COMMAND in a sandbox made with bubblewrap.
 #
-# Inside, BOX (the grader's private copy of a student's tree) is /work, the current folder,
-# writable (SANDBOX_READ_ONLY=1: read-only); GRADER (what the grader gives the build: its makefile, the bench's
-# headers and objects) is /grader, read-only; /usr is read-only, with /etc's compiler
-# links and the loader's cache; /tmp is an empty 128 MiB tmpfs; /proc is the sandbox's own
-# (no other process is seen), /dev a minimal one; nothing else of the machine is there
-# (no home, no checkout, no build folder, no judge, no reference). No network, a session
-# of its own, killed with its parent. Limits per process (prlimit):
-#     SANDBOX_MEMORY MiB of address space (default 4096: the largest probe needs a few
-#         hundred; 20 GB cannot be had), SANDBOX_CPU seconds of processor time (default
-#         300), SANDBOX_FILE MiB per file written (default 64: an object or the probe is a
-#         few MiB), SANDBOX_PROCESSES processes (default 256 more than the user runs now:
-#         a fork bomb stops there; run as root, the sandbox runs as nobody, whose processes
-#         the kernel counts, where root's it does not).
+# Inside, BOX (the grader's private copy of a student's tree) is /work, the current
+# folder, writable (SANDBOX_READ_ONLY=1: read-only; SANDBOX_OBJECTS, a folder of the
+# grader's, is bound at /work/check/build alike); GRADER (what the build needs of the
+# grader's: its makefile, the bench's headers and objects) is /grader, read-only; /usr is
+# read-only, with /etc's compiler links and the loader's cache; /tmp an empty 128 MiB
+# tmpfs; /proc the sandbox's own (no other process in sight), /dev a minimal one. Nothing
+# else of the machine is there (no home, no checkout, no build folder, no judge, no
+# reference). No network, a session of its own, killed with its parent. Run as root, it
+# runs as nobody (root's processes are not counted against a limit). Limits per process:
+#     SANDBOX_MEMORY MiB of address space (default 4096, a sixth of this machine's memory),
+#     SANDBOX_CPU seconds of processor time (default 300), SANDBOX_FILE MiB per file
+#     written (default 64: an object or the probe is a few MiB), SANDBOX_PROCESSES
+#     processes of its user (default: 256 more than it runs now: a fork bomb stops there).
 # The environment inside is PATH, HOME=/work, LC_ALL=C and the variables SANDBOX_ENV
 # names; bubblewrap itself, whose environment is there to read in /proc/1, gets PATH
 # alone. With the address sanitizer, ASAN_OPTIONS gets the memory limit, which RLIMIT_AS
 # cannot be (the sanitizer reserves terabytes it never uses). Descriptors are inherited.
-# Exit status: COMMAND's (128 + N when it is killed by signal N); 125 when the sandbox
-# cannot be made, with bubblewrap's words on stderr.
+# Exit status: COMMAND's (128 + N when it is killed by signal N); bubblewrap's 1 and its
+# words on stderr when the sandbox cannot be made; 125 for a bad limit or no bubblewrap.
 set -u
 box=$1 grader=$2
 shift 2
