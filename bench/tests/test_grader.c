@@ -671,6 +671,13 @@ static void test_class(void **state)
     free(out);
 }
 
+static int teardown(void **state)
+{
+    (void)state;
+    remove(host_mark);
+    return 0;
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -685,5 +692,5 @@ int main(void)
         cmocka_unit_test(test_full_disk),
         cmocka_unit_test(test_class),
     };
-    return cmocka_run_group_tests(tests, setup, NULL);
+    return cmocka_run_group_tests(tests, setup, teardown);
 }
