@@ -157,6 +157,12 @@ void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed 
                  "%s:%d: no area light (a 'light' material on a triangle, quad, box or "
                  "tetrahedron): %s needs one",
                  options->scene, options->scene_lines, cli_program);
+    /* The width not given is fitted to the image plane; the one given is checked now,
+     * before any file is written, as every width derived from it is fitted. */
+    if (!cli_given(options, FLAG_SIZE))
+        options->size = experiment_width_near(scene, options->size);
+    int width, height;
+    experiment_image_size(options, scene, &width, &height);
     /* The figures need the font: say so now rather than after the renders. */
     Font font;
     load_font(&font);
@@ -164,17 +170,43 @@ void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed 
     atexit(print_total_time); /* once the scene is read: from here on, the time is the work */
 }
 
+/* The height of a `width` pixels wide image of the plane's aspect ratio, rounded, or 0 when
+ * the rounded image's aspect ratio would be more than 1% off the plane's. */
+static int fitting_height(double aspect, int width)
+{
+    double exact = width / aspect;
+    if (!(exact >= 0.5 && exact <= 16384.0))
+        return 0;
+    int height = (int)lround(exact);
+    return fabs(height - exact) <= 0.01 * height ? height : 0;
+}
+
 void experiment_image_size(const Options *options, const Scene *scene, int *width, int *height)
 {
     double aspect = scene_file_aspect(&scene->camera);
-    double exact_height = options->size / aspect;
     *width = options->size;
-    *height = (int)lround(exact_height);
-    if (*height < 1 || *height > 16384 || fabs(*height - exact_height) > 0.01 * *height)
+    *height = fitting_height(aspect, options->size);
+    if (*height == 0)
         cli_fail(2,
                  "%s:%d: --size %d gives no image whose aspect ratio matches the image "
                  "plane's (%.4g)",
                  options->scene, options->scene_lines, options->size, aspect);
+}
+
+int experiment_width_near(const Scene *scene, int wanted)
+{
+    double aspect = scene_file_aspect(&scene->camera);
+    for (int d = 0; d < 16384; d++) {
+        if (wanted - d >= 1 && wanted - d <= 16384 && fitting_height(aspect, wanted - d))
+            return wanted - d;
+        if (wanted + d >= 1 && wanted + d <= 16384 && fitting_height(aspect, wanted + d))
+            return wanted + d;
+    }
+    cli_fail(
+        2,
+        "no image width from 1 to 16384 pixels matches the image plane's aspect ratio (%.4g)",
+        aspect);
+    return 0;
 }
 
 #if CHAPTER >= 2
@@ -213,10 +245,10 @@ void experiment_render(const Scene *scene, const RenderSettings *settings, Estim
                 (unsigned long long)result->samples);
 }
 
-Options experiment_quarter_size(const Options *options)
+Options experiment_quarter_size(const Options *options, const Scene *scene)
 {
     Options quarter = *options;
-    quarter.size = cli_quarter(options->size, 16);
+    quarter.size = experiment_width_near(scene, cli_quarter(options->size, 16));
     quarter.reference_spp = (int)fmin(2.0 * options->reference_spp, 1 << 20);
     return quarter;
 }
