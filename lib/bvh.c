@@ -221,6 +221,7 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
                 {1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z}};
     StackEntry stack[BVH_MAX_DEPTH + 1];
     int depth = 0, nearest = -1;
+    double bound = *tmax; /* once a hit is found, just above it: a tie is tested too */
     if (bvh->node_count > 0 && vec3_is_finite(ray.origin) && vec3_is_finite(ray.dir))
         stack[depth++] = (StackEntry){0, box_entry(&bvh->nodes[0].box, &r, *tmax)};
     while (depth > 0) {
@@ -229,10 +230,12 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
             continue;
         const BvhNode *node = &bvh->nodes[e.node];
         for (int i = node->first; i < node->first + node->count; i++) {
-            double t = primitive_intersect(p, bvh->primitives[i], ray, *tmax);
-            if (t < *tmax) {
+            int primitive = bvh->primitives[i];
+            double t = primitive_intersect(p, primitive, ray, bound);
+            if (t < *tmax || (t == *tmax && primitive < nearest)) { /* the tie rule, bvh.h */
                 *tmax = t;
-                nearest = bvh->primitives[i];
+                bound = nextafter(t, INFINITY);
+                nearest = primitive;
                 if (any_hit)
                     return nearest;
             }

@@ -151,6 +151,35 @@ static void test_chapter8(void **state) { smoke("ch08_photon_map", FEW_SAMPLES);
 /* Chapter 9 exits 1 unless every stage rendered the same image, bit for bit. */
 static void test_chapter9(void **state) { smoke("ch09_fast", "--quick --spp 1"); }
 
+/* A rug of another material in the floor's plane, listed before the floor: where a ray
+ * meets both at the same t, every stage must answer the rug (the lower number), so
+ * chapter 9 renders the same image in every stage and exits 0. */
+static void test_chapter9_ties_in_every_stage(void **state)
+{
+    char folder[500], scene[600], command[2400];
+    scratch(folder, sizeof folder);
+    snprintf(scene, sizeof scene, "%s/rug.scene", folder);
+    snprintf(command, sizeof command,
+             "awk '/# floor/ { print \"quad red  1 -3 -5   4 -3 -5   4 3 -5   1 3 -5\" } "
+             "{ print }' scenes/room.scene > %s",
+             scene);
+    assert_int_equal(system(command), 0);
+    snprintf(command, sizeof command,
+             "%s/ch09_fast --quiet --quick --spp 1 --scene %s --out %s/rug 2>&1", programs(),
+             scene, folder);
+    FILE *pipe = popen(command, "r");
+    assert_non_null(pipe);
+    char line[4608];
+    int same = 0;
+    while (fgets(line, sizeof line, pipe)) {
+        if (strstr(line, "differ between the stages"))
+            print_message("    %s", line);
+        same += strstr(line, "every stage rendered the same image") != NULL;
+    }
+    assert_int_equal(pclose(pipe), 0);
+    assert_int_equal(same, 1);
+}
+
 /* A lamp with no blue: chapter 8's ratio of the image's channel means to the reference's
  * has nothing to divide by in blue, and must say so rather than print "nan". */
 static void test_chapter8_lamp_without_blue(void **state)
@@ -355,6 +384,7 @@ int main(void)
 #endif
 #if CHAPTER >= 9
         cmocka_unit_test(test_chapter9),
+        cmocka_unit_test(test_chapter9_ties_in_every_stage),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
