@@ -148,6 +148,23 @@ static void test_chapter7(void **state) { smoke("ch07_final", FEW_SAMPLES); }
 static void test_chapter8(void **state) { smoke("ch08_photon_map", FEW_SAMPLES); }
 #endif
 #if CHAPTER >= 9
+/* Run `program` with `arguments` on the room as the shell filter `edit` changes it
+ * (written in the scratch folder as NAME.scene; the program's output goes to NAME/); its
+ * standard output and error are read through the returned pipe. */
+static FILE *run_on_edited_room(const char *name, const char *edit, const char *program,
+                                const char *arguments)
+{
+    char folder[500], command[2400];
+    scratch(folder, sizeof folder);
+    snprintf(command, sizeof command, "%s scenes/room.scene > %s/%s.scene", edit, folder, name);
+    assert_int_equal(system(command), 0);
+    snprintf(command, sizeof command, "%s/%s %s --scene %s/%s.scene --out %s/%s 2>&1",
+             programs(), program, arguments, folder, name, folder, name);
+    FILE *pipe = popen(command, "r");
+    assert_non_null(pipe);
+    return pipe;
+}
+
 /* Chapter 9 exits 1 unless every stage rendered the same image, bit for bit. */
 static void test_chapter9(void **state) { smoke("ch09_fast", "--quick --spp 1"); }
 
@@ -156,19 +173,10 @@ static void test_chapter9(void **state) { smoke("ch09_fast", "--quick --spp 1");
  * chapter 9 renders the same image in every stage and exits 0. */
 static void test_chapter9_ties_in_every_stage(void **state)
 {
-    char folder[500], scene[600], command[2400];
-    scratch(folder, sizeof folder);
-    snprintf(scene, sizeof scene, "%s/rug.scene", folder);
-    snprintf(command, sizeof command,
-             "awk '/# floor/ { print \"quad red  1 -3 -5   4 -3 -5   4 3 -5   1 3 -5\" } "
-             "{ print }' scenes/room.scene > %s",
-             scene);
-    assert_int_equal(system(command), 0);
-    snprintf(command, sizeof command,
-             "%s/ch09_fast --quiet --quick --spp 1 --scene %s --out %s/rug 2>&1", programs(),
-             scene, folder);
-    FILE *pipe = popen(command, "r");
-    assert_non_null(pipe);
+    FILE *pipe = run_on_edited_room(
+        "rug",
+        "awk '/# floor/ { print \"quad red  1 -3 -5   4 -3 -5   4 3 -5   1 3 -5\" } { print }'",
+        "ch09_fast", "--quiet --quick --spp 1");
     char line[4608];
     int same = 0;
     while (fgets(line, sizeof line, pipe)) {
@@ -184,20 +192,9 @@ static void test_chapter9_ties_in_every_stage(void **state)
  * has nothing to divide by in blue, and must say so rather than print "nan". */
 static void test_chapter8_lamp_without_blue(void **state)
 {
-    char folder[500], scene[600], command[2400];
-    scratch(folder, sizeof folder);
-    snprintf(scene, sizeof scene, "%s/yellow_lamp.scene", folder);
-    snprintf(command, sizeof command,
-             "sed 's/^material lamp   light   25 25 25/material lamp "
-             "light 25 25 0/' scenes/room.scene > %s",
-             scene);
-    assert_int_equal(system(command), 0);
-    snprintf(command, sizeof command,
-             "%s/ch08_photon_map " SMALL " " FEW_SAMPLES " --scene %s "
-             "--out %s/yellow 2>&1",
-             programs(), scene, folder);
-    FILE *pipe = popen(command, "r");
-    assert_non_null(pipe);
+    FILE *pipe = run_on_edited_room(
+        "yellow", "sed 's/^material lamp   light   25 25 25/material lamp light 25 25 0/'",
+        "ch08_photon_map", SMALL " " FEW_SAMPLES);
     char line[4608];
     int ratios = 0;
     while (fgets(line, sizeof line, pipe)) {
