@@ -28,15 +28,6 @@ enum {
 };
 #define STAGE_SECONDS 1.0 /* a quarter of that with --quick */
 
-static const Stage QUERY_STAGES[] = {
-    {"every primitive", QUERY_EVERY_PRIMITIVE, 1},
-    {"chapter 1's binary tree", QUERY_BINARY_TREE, 1},
-    {"the four-wide float tree", QUERY_WIDE_TREE, 1},
-};
-enum {
-    QUERY_STAGE_COUNT = sizeof QUERY_STAGES / sizeof QUERY_STAGES[0]
-};
-
 /* The room with the knot standing in it, in a white material of its own. */
 static void add_knot(Scene *scene)
 {
