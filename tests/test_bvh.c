@@ -10,7 +10,7 @@
  * surfaces, at their edges and vertices too; rays through the vertices of small
  * triangles from far away; rays along the axes, starting on a box's planes; and random
  * soups of triangles and spheres from 1e-45 to 1e45 in size; coplanar overlapping
- * triangles of two materials, in three orders.
+ * triangles of two materials, in three orders; the nearer child visited first.
  *
  * The boxes must enclose what they bound, and degenerate input must build at once, in
  * a tree of bounded depth: 20,000 copies of one triangle and 2,000 triangles with one
@@ -505,6 +505,50 @@ static void test_coplanar_ties_go_to_the_lower_number(void **state)
     }
 }
 
+/* The traversal visits the nearer child first, so that a box entered beyond a hit found
+ * in it is skipped. Seen with stale boxes: two squares, 5 apart on the ray; after the
+ * trees are built, the far square's triangles (and the four-wide tree's copies of them)
+ * are moved to 2 in front of the eye, beyond the boxes' knowledge. Visiting the nearer
+ * box first finds the near square at t = 5 and skips the far box (entered at 10); a
+ * traversal that visited the farther box first would test the moved square and answer
+ * it, at t = 2. From above and from below, so that the order in memory does not decide. */
+static void test_nearer_child_first(void **state)
+{
+    for (int from_below = 0; from_below < 2; from_below++) {
+        int grey;
+        Scene scene = grey_scene(&grey);
+        for (int k = 0; k < 2; k++) { /* square k at z = 5 k: triangles 2 k, 2 k + 1 */
+            double z = 5.0 * k;
+            assert_true(
+                scene_add_triangle(&scene, triangle_make(vec3(-1, -1, z), vec3(1, -1, z),
+                                                         vec3(1, 1, z), grey)) >= 0);
+            assert_true(scene_add_triangle(&scene, triangle_make(vec3(-1, -1, z), vec3(1, 1, z),
+                                                                 vec3(-1, 1, z), grey)) >= 0);
+        }
+        assert_int_equal(scene_prepare(&scene), 0);
+        Ray ray = {vec3(0.3, -0.2, from_below ? -5.0 : 10.0), vec3(0, 0, from_below ? 1 : -1)};
+        int far = from_below ? 1 : 0; /* the square whose box the ray enters at t = 10 */
+        Vec3 move = vec3(0, 0, from_below ? -8.0 : 8.0);
+        for (int t = 2 * far; t < 2 * far + 2; t++) {
+            scene.triangles[t].v0 = vec3_add(scene.triangles[t].v0, move);
+#if CHAPTER >= 9
+            for (int i = 0; i < scene.triangle_count; i++)
+                if (scene.wide.primitives[i] == t)
+                    scene.wide.triangles[i].v0 = vec3_add(scene.wide.triangles[i].v0, move);
+#endif
+        }
+        for (size_t k = 0; k < sizeof trees / sizeof trees[0]; k++) {
+            double t = INFINITY;
+            int found = trees[k].intersect(&scene, ray, &t);
+            if (found / 2 != 1 - far || t != 5.0)
+                fail_msg("from %s: the %s tree answered triangle %d at t = %g, not the near "
+                         "square at t = 5: it visited the farther box first",
+                         from_below ? "below" : "above", trees[k].name, found, t);
+        }
+        scene_free(&scene);
+    }
+}
+
 /* The room's and a soup's boxes enclose what they bound, widened beyond it, and every
  * primitive is in exactly one leaf. */
 static void test_boxes_enclose_their_primitives(void **state)
@@ -634,6 +678,7 @@ int main(void)
         cmocka_unit_test(test_random_soups_of_every_size),
         cmocka_unit_test(test_room_coincident_bottoms),
         cmocka_unit_test(test_coplanar_ties_go_to_the_lower_number),
+        cmocka_unit_test(test_nearer_child_first),
         cmocka_unit_test(test_boxes_enclose_their_primitives),
         cmocka_unit_test(test_common_centre_is_one_leaf),
         cmocka_unit_test(test_nest_has_bounded_depth),
