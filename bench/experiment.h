@@ -6,8 +6,7 @@
  * for bad input, 1 for a failure of the machine (memory, disk), 130 after an
  * interruption. From chapter 2 on, panels are measured against references rendered by
  * build/reference (bench/reference.c) from the final chapter's library and cached in
- * build/references/ under a key that hashes the scene, what the reference estimates
- * and the reference program itself, so a change to the code it links renders it again.
+ * build/references/ (reference_cache.h).
  */
 #ifndef EXPERIMENT_H
 #define EXPERIMENT_H
