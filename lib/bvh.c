@@ -221,7 +221,9 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
                 {1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z}};
     StackEntry stack[BVH_MAX_DEPTH + 1];
     int depth = 0, nearest = -1;
-    double bound = *tmax; /* once a hit is found, just above it: a tie is tested too */
+    /* Once a hit is found, just above its t (the next double up, or the one after): a
+     * primitive hit at the same t is tested too, for the tie rule. */
+    double bound = *tmax;
     if (bvh->node_count > 0 && vec3_is_finite(ray.origin) && vec3_is_finite(ray.dir))
         stack[depth++] = (StackEntry){0, box_entry(&bvh->nodes[0].box, &r, *tmax)};
     while (depth > 0) {
@@ -232,9 +234,9 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
         for (int i = node->first; i < node->first + node->count; i++) {
             int primitive = bvh->primitives[i];
             double t = primitive_intersect(p, primitive, ray, bound);
-            if (t < *tmax || (t == *tmax && primitive < nearest)) { /* the tie rule, bvh.h */
+            if (t <= *tmax && (t < *tmax || primitive < nearest)) { /* the tie rule, bvh.h */
                 *tmax = t;
-                bound = nextafter(t, INFINITY);
+                bound = t * (1.0 + 0x1p-52) + 0x1p-1074;
                 nearest = primitive;
                 if (any_hit)
                     return nearest;
