@@ -71,10 +71,10 @@ void experiment_render(const Scene *scene, const RenderSettings *settings, Estim
 void experiment_path(const Options *options, const char *file_name, char *path, size_t size);
 
 /* The options for a chapter's sweep on a quarter-size image: a quarter of --size (at
- * least 16 pixels; experiment_width_near of that), and a reference with twice the samples per
- * pixel (at most 2^20), for an eighth of the cost of the full-size reference. The sweeps'
- * panels have few samples, so its noise stays a small share of their error (at most 4% in `make
- * figures`, chapter 5's sweep). */
+ * least 16 pixels, at most --size; experiment_width_near of that), and a reference with twice
+ * the samples per pixel (at most 2^20), for an eighth of the cost of the full-size reference.
+ * The sweeps' panels have few samples, so its noise stays a small share of their error (at most
+ * 4% in `make figures`, chapter 5's sweep). */
 Options experiment_quarter_size(const Options *options, const Scene *scene);
 
 /* Exposure of every panel's PNG: radiance 1 is white. */

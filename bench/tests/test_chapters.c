@@ -264,12 +264,13 @@ static int fits(double aspect, int width)
 }
 
 /* experiment_width_near gives, for very wide, very tall and odd image planes, a width that
- * fits and that no nearer width beats (of two as near, the smaller). */
+ * fits and that no nearer width beats (of two as near, the smaller); a quarter-size width
+ * is no wider than its image (a 1:1000 camera at 8 pixels: 16 would be 16,000 high). */
 static void test_width_near_fits_and_is_nearest(void **state)
 {
     const double aspects[] = {1.0,    1.5,    32.0,        1.0 / 7.0, 1.37,
-                              0.7071, 1000.0, 1.0 / 300.0, 2.999};
-    const int wanted[] = {1, 8, 16, 25, 100, 240, 4099, 16384};
+                              0.7071, 1000.0, 1.0 / 300.0, 2.999,     0.001};
+    const int wanted[] = {1, 8, 12, 16, 25, 100, 240, 4099, 16384};
     for (size_t a = 0; a < sizeof aspects / sizeof *aspects; a++)
         for (size_t k = 0; k < sizeof wanted / sizeof *wanted; k++) {
             Scene scene;
@@ -286,6 +287,13 @@ static void test_width_near_fits_and_is_nearest(void **state)
                     (abs(c - wanted[k]) < d || c < w))
                     fail_msg("aspect %g, wanted %d: width %d, but %d fits and is as near",
                              aspects[a], wanted[k], w, c);
+            /* A quarter-size sweep's width is never wider than the image it is derived from. */
+            if (fits(aspects[a], wanted[k])) {
+                int quarter = experiment_width_near(&scene, cli_quarter(wanted[k], 16));
+                if (quarter > wanted[k])
+                    fail_msg("aspect %g: the quarter of %d is %d wide", aspects[a], wanted[k],
+                             quarter);
+            }
             scene_free(&scene);
         }
 }
