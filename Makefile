@@ -289,10 +289,12 @@ check-exercises: exercise-solutions
 	@echo "check-exercises: every chapter's solution passes and every blank exercise fails"
 
 # The reference renderer: the final library's best estimator. It links the physics and
-# what measures it, not the files that draw figures, plots and tables, so that editing
-# those does not make every reference render again (the cache key holds this program's
-# bytes and time).
-PRESENTATION    := $(wildcard bench/figure.c bench/plot.c bench/table.c bench/font.c bench/gallery.c bench/experiment.c bench/cli.c)
+# what measures it, not the files that draw figures, plots and tables nor the chapter
+# programs' chores (their command line, the reference cache that runs this program), so
+# that editing those does not make every reference render again (the cache key holds this
+# program's bytes and time).
+PRESENTATION    := $(wildcard bench/figure.c bench/plot.c bench/table.c bench/font.c bench/gallery.c \
+                              bench/experiment.c bench/reference_cache.c bench/directory.c bench/cli.c)
 REFERENCE_OBJS  := $(patsubst %.c,$(BUILD)/chapter$(FINAL)/%.o,$(filter-out $(PRESENTATION),$(call upto,$(FINAL),$(LIB_SOURCES) $(BENCH_SOURCES))))
 $(REFERENCE_BIN): $(BUILD)/chapter$(FINAL)/bench/reference.o $(REFERENCE_OBJS)
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
