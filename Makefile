@@ -10,7 +10,10 @@
 #   make source-chapterN  the clean source of chapter N in build/source/chapterN/
 #   make exercise-chapterN      chapter N's tree with its exercises blank, in
 #                               build/exercise/chapterN/ (README: "Do the chapters yourself")
-#   make check-exercise-chapterN  grade it (STUDENT=DIR: another copy; ONLY="2.1 2.3": some)
+#   make check-exercise-chapterN  grade it, in a sandbox (STUDENT=DIR: another copy; ONLY="2.1
+#                         2.3": some; OUT=DIR: the verdicts there; TRUSTED=1: no sandbox)
+#   make grade-class DIR=FOLDER CHAPTER=N   grade every tree in FOLDER, each in its own
+#                         sandbox: a CSV and a summary in OUT (docs/exercises.md)
 #   make check-exercises  every chapter's check on the solution (all pass) and on the blank
 #                         exercises (every one fails)
 #   make check-sources    every chapter's clean source: compiles alone, no markers left,
@@ -96,7 +99,7 @@ TEST_SOURCES  := $(wildcard tests/test_*.c bench/tests/test_*.c)
 REFERENCE_BIN := $(BUILD)/reference
 GALLERY       := $(BUILD)/gallery
 
-.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery check-exercises \
+.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery check-exercises grade-class \
         exercise-solutions
 .DEFAULT_GOAL := all
 .SECONDARY:
@@ -198,22 +201,36 @@ PROBE_COMMON      := $(wildcard bench/exercise/probe.c bench/exercise/grading.c 
                                 bench/exercise/render_check.c)
 EXERCISE_CHAPTERS := $(foreach n,$(CHAPTERS),$(if $(wildcard bench/exercise/chapter$(n).c),$(n)))
 EXERCISE_DIR      := $(BUILD)/exercise
-# STUDENT and ONLY reach check-exercise-chapterN's shell through its environment, never
-# pasted into its text, so that any path works (spaces, quotes, a leading dash).
+# STUDENT, ONLY, OUT, TRUSTED and DIR reach the recipes' shells through their environment,
+# never pasted into their text, so that any path works (spaces, quotes, a leading dash).
 STUDENT           ?=
 ONLY              ?=
-export STUDENT ONLY
+OUT               ?=
+TRUSTED           ?=
+DIR               ?=
+export STUDENT ONLY OUT TRUSTED DIR
 grader_of          = $(BUILD)/chapter$(1)/bench/exercise/grade
 probe_of           = $(BUILD)/chapter$(1)/bench/exercise/probe
 grader_sources     = $(call upto,$(1),$(EXERCISE_COMMON)) bench/exercise/chapter$(1).c
 probe_sources      = $(call upto,$(1),$(PROBE_COMMON)) bench/exercise/chapter$(1).c
 SOLUTION_GRADERS  := $(foreach n,$(EXERCISE_CHAPTERS),$(call grader_of,$(n)) $(call probe_of,$(n)))
+# The judge of chapter $(1) as it was built (its checksum, recorded then, in JUDGE.sha256;
+# never its time stamp), else built again; then bubblewrap, unless TRUSTED=1.
+judge_verified     = if [ "$$(sha256sum < $(call grader_of,$(1)) | cut -c 1-64)" != "$$(cut -c 1-64 $(call grader_of,$(1)).sha256 2> /dev/null)" ]; then \
+	    echo "$(call grader_of,$(1)) is not the judge make built (its checksum differs): building it again"; \
+	    rm -f $(call grader_of,$(1)) && $(MAKE) --no-print-directory -s $(call grader_of,$(1)) || exit 2; fi; \
+	[ "$${TRUSTED:-}" = 1 ] || sh .ci/install-deps bubblewrap || exit 2; set -f;
+# What bench/exercise/check.sh builds the student's tree with.
+grade_env          = CACHE=$(abspath $(EXERCISE_DIR)/cache/chapter$(1)) CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" LIBS="$(LIBS)" PKG_CFLAGS="$(PKG_CFLAGS)" \
+	BENCH_OBJECTS="$(addprefix $(CURDIR)/,$(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call upto,$(1),$(BENCH_SOURCES))))" \
+	PROBE_FILES="$(addprefix $(CURDIR)/,$(call probe_sources,$(1)))"
 
 define EXERCISE_RULES
 .PHONY: exercise-chapter$(1) check-exercise-chapter$(1)
 ifneq ($(filter $(1),$(EXERCISE_CHAPTERS)),)
 $(call grader_of,$(1)): $(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call grader_sources,$(1))) $(BUILD)/chapter$(1)/libmc.a
 	$$(CC) $$^ $$(LDFLAGS) $$(LIBS) -o $$@
+	sha256sum < $$@ > $$@.sha256
 
 $(call probe_of,$(1)): $(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call probe_sources,$(1))) $(BUILD)/chapter$(1)/libmc.a
 	$$(CC) $$^ $$(LDFLAGS) $$(LIBS) -o $$@
@@ -224,17 +241,24 @@ exercise-chapter$(1): source-chapter$(1) $(call grader_of,$(1))
 check-exercise-chapter$(1): $(call grader_of,$(1))
 	@student=$$$${STUDENT:-$(EXERCISE_DIR)/chapter$(1)}; \
 	if [ ! -d "$$$$student/lib" ]; then echo "no exercise tree in $$$$student: make exercise-chapter$(1) first (or STUDENT=DIR)"; exit 2; fi; \
-	set -f; \
-	CC="$$(CC)" CFLAGS="$$(CFLAGS)" LDFLAGS="$$(LDFLAGS)" LIBS="$$(LIBS)" PKG_CFLAGS="$$(PKG_CFLAGS)" \
-	BENCH_OBJECTS="$$(addprefix $$(CURDIR)/,$(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call upto,$(1),$(BENCH_SOURCES))))" \
-	PROBE_FILES="$$(addprefix $$(CURDIR)/,$(call probe_sources,$(1)))" \
-	sh bench/exercise/check.sh $(1) "$$$$student" $(call grader_of,$(1)) $(EXERCISE_DIR)/references/chapter$(1) $$$${ONLY:-}
+	$$(call judge_verified,$(1)) \
+	$$(call grade_env,$(1)) sh bench/exercise/check.sh $(1) "$$$$student" $(call grader_of,$(1)) $(EXERCISE_DIR)/references/chapter$(1) $$$${ONLY:-}
 else
 exercise-chapter$(1) check-exercise-chapter$(1):
 	@echo "chapter $(1) has no exercises yet (bench/exercise/chapter$(1).c)"; exit 2
 endif
 endef
 $(foreach n,$(CHAPTERS),$(eval $(call EXERCISE_RULES,$(n))))
+
+# A teacher's command: every tree in DIR graded as check-exercise-chapter$(CHAPTER) grades
+# one, each in its own sandbox, into OUT (bench/exercise/class.sh).
+CHAPTER ?=
+grade-class: $(if $(filter $(CHAPTER),$(EXERCISE_CHAPTERS)),$(call grader_of,$(CHAPTER)))
+	@if [ -z "$$DIR" ] || [ -z "$(filter $(CHAPTER),$(EXERCISE_CHAPTERS))" ]; then \
+	    echo "usage: make grade-class DIR=FOLDER-OF-TREES CHAPTER=N [OUT=FOLDER] [ONLY=IDS] (chapters with exercises: $(strip $(EXERCISE_CHAPTERS)))"; exit 2; fi; \
+	sh bench/exercise/class.sh $(CHAPTER) "$$DIR" "$${OUT:-$(EXERCISE_DIR)/class/chapter$(CHAPTER)}" \
+	    env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL $(MAKE) --no-print-directory -s BUILD=$(BUILD) \
+	    CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" CC="$(CC)" check-exercise-chapter$(CHAPTER)
 
 # The solution's checks (the clean source: every exercise passes), their verdicts and
 # pictures copied into $(FIGURES) as chNN_exercise* for the gallery; then (CI) the blank
@@ -265,10 +289,12 @@ check-exercises: exercise-solutions
 	@echo "check-exercises: every chapter's solution passes and every blank exercise fails"
 
 # The reference renderer: the final library's best estimator. It links the physics and
-# what measures it, not the files that draw figures, plots and tables, so that editing
-# those does not make every reference render again (the cache key holds this program's
-# bytes and time).
-PRESENTATION    := $(wildcard bench/figure.c bench/plot.c bench/table.c bench/font.c bench/gallery.c bench/experiment.c bench/cli.c)
+# what measures it, not the files that draw figures, plots and tables nor the chapter
+# programs' chores (their command line, the reference cache that runs this program), so
+# that editing those does not make every reference render again (the cache key holds this
+# program's bytes and time).
+PRESENTATION    := $(wildcard bench/figure.c bench/plot.c bench/table.c bench/font.c bench/gallery.c \
+                              bench/experiment.c bench/reference_cache.c bench/directory.c bench/cli.c)
 REFERENCE_OBJS  := $(patsubst %.c,$(BUILD)/chapter$(FINAL)/%.o,$(filter-out $(PRESENTATION),$(call upto,$(FINAL),$(LIB_SOURCES) $(BENCH_SOURCES))))
 $(REFERENCE_BIN): $(BUILD)/chapter$(FINAL)/bench/reference.o $(REFERENCE_OBJS)
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@

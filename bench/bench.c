@@ -74,7 +74,7 @@ int main(int argc, char **argv)
         render_result_free(&results[i]);
 
     Options small = options;
-    small.size = cli_quarter(options.size, 16);
+    small.size = experiment_width_near(&scene, cli_quarter(options.size, 16));
     small.spp = 64;
     small.depth = 64;
     small.fresnel = FRESNEL_EXACT;

@@ -318,4 +318,8 @@ void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options)
         options->runs = CLI_QUICK_RUNS;
 }
 
-int cli_quarter(int value, int smallest) { return value / 4 > smallest ? value / 4 : smallest; }
+int cli_quarter(int value, int smallest)
+{
+    int quarter = value / 4 > smallest ? value / 4 : smallest;
+    return quarter < value ? quarter : value;
+}

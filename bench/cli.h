@@ -85,8 +85,8 @@ extern const char *cli_program;
  * CLI_QUICK_RUNS. Exits on --help (status 0) and on any error (status 2). */
 void cli_parse(int argc, char **argv, const ProgramInfo *info, Options *options);
 
-/* A quarter of `value`, but at least `smallest`: --quick's sizes, and the chapters'
- * sweeps on quarter-size images. */
+/* A quarter of `value`, but at least `smallest` and at most `value` itself: --quick's
+ * sizes, and the chapters' sweeps on quarter-size images. */
 int cli_quarter(int value, int smallest);
 
 /* Print "PROGRAM: message" on stderr and exit with `status`. */

@@ -3,18 +3,16 @@
 #include "experiment.h"
 
 #include <errno.h>
-#include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
+#include "directory.h"
 #include "figure.h"
+#if CHAPTER >= 2
+#include "reference_cache.h"
+#endif
 #include "scene_file.h"
 #if CHAPTER >= 7
 #include "sphere_guide.h"
@@ -44,64 +42,12 @@ static void load_font(Font *font)
         cli_fail(1, "%s", error);
 }
 
-/* mkdir -p; returns 0, or -1 with errno set and the failing directory in `failed`. */
-static int make_directories(const char *path, char *failed, size_t size)
-{
-    char directory[4096];
-    if (snprintf(directory, sizeof directory, "%s", path) >= (int)sizeof directory) {
-        errno = ENAMETOOLONG;
-        snprintf(failed, size, "%s", path);
-        return -1;
-    }
-    for (char *p = directory + 1;; p++) {
-        int end = *p == '\0';
-        if (*p == '/' || end) {
-            *p = '\0';
-            struct stat status;
-            if (mkdir(directory, 0777) != 0 &&
-                (errno != EEXIST || stat(directory, &status) != 0 ||
-                 !S_ISDIR(status.st_mode))) {
-                if (errno == EEXIST)
-                    errno = ENOTDIR;
-                snprintf(failed, size, "%s", directory);
-                return -1;
-            }
-            if (end)
-                return 0;
-            *p = '/';
-        }
-    }
-}
-
-/* Whether a file can be written into `directory` (created if needed): 0, or -1 with
- * errno set and the folder that failed in failed[size]. A full disk is found by writing
- * a little. */
-static int writable_directory(const char *directory, char *failed, size_t size)
-{
-    if (make_directories(directory, failed, size) != 0)
-        return -1;
-    char probe[4200], block[4096] = {0};
-    snprintf(failed, size, "%s", directory);
-    snprintf(probe, sizeof probe, "%s/.write-test.%ld", directory, (long)getpid());
-    FILE *file = fopen(probe, "wb");
-    int ok = file && fwrite(block, 1, sizeof block, file) == sizeof block;
-    int saved_errno = errno;
-    if (file && fclose(file) != 0 && ok) {
-        ok = 0;
-        saved_errno = errno;
-    }
-    if (file)
-        remove(probe);
-    errno = saved_errno;
-    return ok ? 0 : -1;
-}
-
 /* --out must be a directory we can write a file into: found out now, not after the
  * render. */
 static void check_output_directory(const Options *options)
 {
     char failed[4096];
-    if (writable_directory(options->out, failed, sizeof failed) != 0)
+    if (directory_writable(options->out, failed, sizeof failed) != 0)
         cli_fail(errno == ENOTDIR || errno == ENAMETOOLONG ? 2 : 1,
                  "--out %s: cannot write in %s: %s", options->out, failed, strerror(errno));
 }
@@ -157,6 +103,12 @@ void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed 
                  "%s:%d: no area light (a 'light' material on a triangle, quad, box or "
                  "tetrahedron): %s needs one",
                  options->scene, options->scene_lines, cli_program);
+    /* The width not given is fitted to the image plane; the one given is checked now,
+     * before any file is written, as every width derived from it is fitted. */
+    if (!cli_given(options, FLAG_SIZE))
+        options->size = experiment_width_near(scene, options->size);
+    int width, height;
+    experiment_image_size(options, scene, &width, &height);
     /* The figures need the font: say so now rather than after the renders. */
     Font font;
     load_font(&font);
@@ -164,17 +116,43 @@ void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed 
     atexit(print_total_time); /* once the scene is read: from here on, the time is the work */
 }
 
+/* The height of a `width` pixels wide image of the plane's aspect ratio, rounded, or 0 when
+ * the rounded image's aspect ratio would be more than 1% off the plane's. */
+static int fitting_height(double aspect, int width)
+{
+    double exact = width / aspect;
+    if (!(exact >= 0.5 && exact <= 16384.0))
+        return 0;
+    int height = (int)lround(exact);
+    return fabs(height - exact) <= 0.01 * height ? height : 0;
+}
+
 void experiment_image_size(const Options *options, const Scene *scene, int *width, int *height)
 {
     double aspect = scene_file_aspect(&scene->camera);
-    double exact_height = options->size / aspect;
     *width = options->size;
-    *height = (int)lround(exact_height);
-    if (*height < 1 || *height > 16384 || fabs(*height - exact_height) > 0.01 * *height)
+    *height = fitting_height(aspect, options->size);
+    if (*height == 0)
         cli_fail(2,
                  "%s:%d: --size %d gives no image whose aspect ratio matches the image "
                  "plane's (%.4g)",
                  options->scene, options->scene_lines, options->size, aspect);
+}
+
+int experiment_width_near(const Scene *scene, int wanted)
+{
+    double aspect = scene_file_aspect(&scene->camera);
+    for (int d = 0; d < 16384; d++) {
+        if (wanted - d >= 1 && wanted - d <= 16384 && fitting_height(aspect, wanted - d))
+            return wanted - d;
+        if (wanted + d >= 1 && wanted + d <= 16384 && fitting_height(aspect, wanted + d))
+            return wanted + d;
+    }
+    cli_fail(
+        2,
+        "no image width from 1 to 16384 pixels matches the image plane's aspect ratio (%.4g)",
+        aspect);
+    return 0;
 }
 
 #if CHAPTER >= 2
@@ -222,10 +200,10 @@ void experiment_render_serial(const Scene *scene, const RenderSettings *settings
                  settings->image.height);
 }
 
-Options experiment_quarter_size(const Options *options)
+Options experiment_quarter_size(const Options *options, const Scene *scene)
 {
     Options quarter = *options;
-    quarter.size = cli_quarter(options->size, 16);
+    quarter.size = experiment_width_near(scene, cli_quarter(options->size, 16));
     quarter.reference_spp = (int)fmin(2.0 * options->reference_spp, 1 << 20);
     return quarter;
 }
@@ -233,7 +211,7 @@ Options experiment_quarter_size(const Options *options)
 void experiment_path(const Options *options, const char *file_name, char *path, size_t size)
 {
     char failed[4096];
-    if (make_directories(options->out, failed, sizeof failed) != 0)
+    if (directory_make(options->out, failed, sizeof failed) != 0)
         cli_fail(1, "--out %s: cannot create directory %s: %s", options->out, failed,
                  strerror(errno));
     if (snprintf(path, size, "%s/%s", options->out, file_name) >= (int)size)
@@ -368,328 +346,44 @@ void experiment_exit_if_interrupted(const RenderResult *result, const char *save
 }
 
 #if CHAPTER >= 2
-/* The reference program: "reference" beside this program (the Makefile builds both
- * into build/), and its cache folder "references" beside it. */
-static void reference_program(char *program, char *directory, size_t size)
-{
-    char self[4096];
-    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (n <= 0 || (size_t)n >= sizeof self - 1)
-        cli_fail(1, "cannot find this program's own path to find the reference program");
-    self[n] = '\0';
-    char *slash = strrchr(self, '/');
-    *slash = '\0';
-    if (snprintf(program, size, "%s/reference", self) >= (int)size ||
-        snprintf(directory, size, "%s/references", self) >= (int)size)
-        cli_fail(1, "path too long: %s", self);
-}
-
-/* The reference program's identity: its bytes and its modification time, so that a
- * rebuild (make rebuilds it whenever a lib/ file it links changes) renders every
- * reference again. */
-static uint64_t program_identity(const char *program)
-{
-    int fd = open(program, O_RDONLY);
-    struct stat status;
-    if (fd < 0 || fstat(fd, &status) != 0)
-        cli_fail(1, "cannot read the reference program %s: %s (build it: make %s)", program,
-                 strerror(errno), program);
-    uint64_t hash = MEASURE_HASH_START;
-    char block[1 << 16];
-    ssize_t n;
-    while ((n = read(fd, block, sizeof block)) > 0)
-        hash = measure_hash(hash, block, (size_t)n);
-    close(fd);
-    long long stamp[2] = {(long long)status.st_mtim.tv_sec, (long long)status.st_mtim.tv_nsec};
-    return measure_hash(hash, stamp, sizeof stamp);
-}
-
-/* Run the reference program with `argv`, the scene's bytes on its standard input, with
- * this program's signals passed on to it (render_forward_signals). Returns its exit
- * status (128 + the signal if a signal ended it), or -1 with why in failure[size]. */
-static int run_reference_program(char *const argv[], char *failure, size_t size)
-{
-    int pipe_ends[2];
-    if (pipe(pipe_ends) != 0) {
-        snprintf(failure, size, "cannot start the reference program: %s", strerror(errno));
-        return -1;
-    }
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, pipe_ends[0], STDIN_FILENO);
-    posix_spawn_file_actions_addclose(&actions, pipe_ends[1]);
-    posix_spawnattr_t attributes;
-    posix_spawnattr_init(&attributes);
-    sigset_t none;
-    sigemptyset(&none);
-    posix_spawnattr_setsigmask(&attributes, &none);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
-    pid_t child;
-    extern char **environ;
-    render_hold_signals(1); /* none may come between the start and the forwarding */
-    int spawn_error = posix_spawn(&child, argv[0], &actions, &attributes, argv, environ);
-    if (spawn_error == 0)
-        render_forward_signals(child);
-    render_hold_signals(0);
-    posix_spawn_file_actions_destroy(&actions);
-    posix_spawnattr_destroy(&attributes);
-    close(pipe_ends[0]);
-    if (spawn_error != 0) {
-        close(pipe_ends[1]);
-        snprintf(failure, size, "cannot start the reference program %s: %s", argv[0],
-                 strerror(spawn_error));
-        return -1;
-    }
-    void (*previous)(int) = signal(SIGPIPE, SIG_IGN); /* a child that stops reading */
-    for (size_t done = 0; done < scene_length;) {
-        ssize_t n = write(pipe_ends[1], scene_text + done, scene_length - done);
-        if (n <= 0 && errno != EINTR)
-            break;
-        done += n > 0 ? (size_t)n : 0;
-    }
-    close(pipe_ends[1]);
-    signal(SIGPIPE, previous);
-    int status = render_wait_for_child();
-    if (status < 0)
-        snprintf(failure, size, "lost the reference program: %s", strerror(errno));
-    return status;
-}
-
-/* Hold the cache entry KEY: a lock on DIR/KEY.lock (its path in path[size]), waited for
- * while another program renders the same entry, so that it is rendered once; released
- * when the returned descriptor is closed, or when the program ends. Returns -1 with
- * errno set when the lock cannot be made, -2 when SIGINT stopped the wait. */
-static int lock_entry(const char *directory, const char *key_text, char *path, size_t size)
-{
-    snprintf(path, size, "%s/%s.lock", directory, key_text);
-    int fd = open(path, O_RDWR | O_CREAT, 0666);
-    if (fd < 0)
-        return -1;
-    struct flock lock = {.l_type = F_WRLCK, .l_whence = SEEK_SET};
-    while (fcntl(fd, F_SETLKW, &lock) != 0) {
-        int reason = errno;
-        if (reason == EINTR && !render_interrupted())
-            continue;
-        close(fd);
-        errno = reason;
-        return reason == EINTR ? -2 : -1;
-    }
-    return fd;
-}
-
-/* A new empty folder for a reference that is not to be kept, in $TMPDIR (or /tmp), its
- * path in folder[size]. Returns 0, or -1 with errno set. */
-static int make_temporary_folder(char *folder, size_t size)
-{
-    const char *base = getenv("TMPDIR") && getenv("TMPDIR")[0] ? getenv("TMPDIR") : "/tmp";
-    if (snprintf(folder, size, "%s/mc-reference-XXXXXX", base) >= (int)size) {
-        errno = ENAMETOOLONG;
-        return -1;
-    }
-    return mkdtemp(folder) ? 0 : -1;
-}
-
-/* Remove a temporary folder made for entry KEY, with whatever of the entry is in it. */
-static void remove_temporary_folder(const char *folder, const char *key_text)
-{
-    const char *suffixes[] = {".pfm", "-stderr.pfm", ".txt", ".lock"};
-    for (int i = 0; i < 4; i++) {
-        char path[4300];
-        snprintf(path, sizeof path, "%s/%s%s", folder, key_text, suffixes[i]);
-        remove(path);
-    }
-    rmdir(folder);
-}
-
-/* Where a reference is looked for and rendered: the cache folder, or a temporary one
- * when the cache cannot be written; and a temporary one the reference program falls
- * back to when the cache fails it while it saves. */
-typedef struct {
-    char cache[4200];     /* where it is kept */
-    char folder[4200];    /* where it is looked for and rendered: the cache, or temporary */
-    char temporary[4200]; /* "" until made */
-    char key_text[64];
-    int lock;
-} ReferencePlace;
-
-/* Make the temporary folder, if not yet made; from then on a signal that ends the
- * program ends it only once the folder is removed (leave_place). Returns 0, or -1 with
- * errno set. */
-static int make_place_temporary(ReferencePlace *place)
-{
-    if (place->temporary[0])
-        return 0;
-    render_forward_signals(0);
-    if (make_temporary_folder(place->temporary, sizeof place->temporary) == 0)
-        return 0;
-    int reason = errno;
-    place->temporary[0] = '\0';
-    render_end_deferred();
-    errno = reason;
-    return -1;
-}
-
-/* Remove the temporary folder, if made, then end the program if a signal that ends it
- * came meanwhile. */
-static void leave_place(ReferencePlace *place)
-{
-    if (place->temporary[0])
-        remove_temporary_folder(place->temporary, place->key_text);
-    place->temporary[0] = '\0';
-    render_end_deferred();
-}
-
-/* Say that the cache cannot be written and why ("cannot write in FOLDER" or "cannot make
- * FILE", and errno's reason), and use a temporary folder instead. */
-static void use_temporary_folder(ReferencePlace *place, const char *what, const char *path,
-                                 int reason)
-{
-    printf("reference cache %s: %s %s: %s: rendering into a temporary folder, nothing is "
-           "kept\n",
-           place->cache, what, path, strerror(reason));
-    if (make_place_temporary(place) != 0)
-        cli_fail(1, "cannot make a temporary folder for the reference: %s", strerror(errno));
-    snprintf(place->folder, sizeof place->folder, "%s", place->temporary);
-}
-
-/* The cache folder if it can be written, else a temporary one; locked for the key. */
-static void open_reference_place(ReferencePlace *place)
-{
-    char failed[4096];
-    snprintf(place->folder, sizeof place->folder, "%s", place->cache);
-    if (writable_directory(place->cache, failed, sizeof failed) != 0)
-        use_temporary_folder(place, "cannot write in", failed, errno);
-    char lock_path[4300];
-    place->lock = lock_entry(place->folder, place->key_text, lock_path, sizeof lock_path);
-    if (place->lock == -1 && !place->temporary[0]) {
-        use_temporary_folder(place, "cannot make", lock_path, errno);
-        place->lock = lock_entry(place->folder, place->key_text, lock_path, sizeof lock_path);
-    }
-    int reason = errno;
-    if (place->lock < 0)
-        leave_place(place);
-    if (place->lock == -2)
-        cli_fail(130, "interrupted while waiting for another program to render the reference");
-    if (place->lock < 0)
-        cli_fail(1, "cannot lock %s: %s", lock_path, strerror(reason));
-}
-
-/* Render the reference into place->folder (the program falling back to the temporary
- * folder) and read it, or exit saying why. argv[argc] onwards has room for two words. */
-static void render_reference(ReferencePlace *place, char **argv, int argc,
-                             const ReferenceIdentity *identity, int width, int height,
-                             Reference *reference)
-{
-    if (render_interrupted()) {
-        leave_place(place);
-        cli_fail(130, "interrupted: stopped before rendering the reference");
-    }
-    /* Without a fallback folder the cache alone must take it. */
-    if (strcmp(place->folder, place->cache) == 0 && make_place_temporary(place) == 0) {
-        argv[argc++] = "--fallback";
-        argv[argc++] = place->temporary;
-    }
-    argv[argc] = NULL;
-    fflush(stdout);
-    char failure[4400] = "", why[320];
-    int exit_status = run_reference_program(argv, failure, sizeof failure);
-    int status = -1;
-    if (exit_status == 0) {
-        status = measure_load_reference(place->folder, identity, width, height, reference, why,
-                                        sizeof why);
-        if (status == -1 && place->temporary[0] && strcmp(place->folder, place->temporary) != 0)
-            status = measure_load_reference(place->temporary, identity, width, height,
-                                            reference, why, sizeof why);
-    }
-    leave_place(place);
-    if (exit_status == 130 || exit_status == 128 + SIGINT)
-        cli_fail(130, "interrupted while rendering the reference; nothing was cached");
-    if (exit_status < 0)
-        cli_fail(1, "%s", failure);
-    if (exit_status != 0)
-        cli_fail(exit_status == 2 ? 2 : 1, "the reference program failed (exit status %d)",
-                 exit_status);
-    if (status != 0)
-        cli_fail(1, "the reference program wrote no usable reference %s/%s.pfm (%s)",
-                 place->folder, place->key_text, status == -1 ? "no entry" : why);
-    reference->cached = 0;
-}
-
 void experiment_path_reference(const Options *options, const Scene *scene,
                                const PathSettings *path, const char *rough_material,
                                double rough_sigma, Reference *reference)
 {
     int width, height;
     experiment_image_size(options, scene, &width, &height);
-    char program[4200];
-    ReferencePlace place = {.temporary = ""};
-    reference_program(program, place.cache, sizeof program);
 #if CHAPTER >= 4
     int exact = path->fresnel == FRESNEL_EXACT;
 #else
     int exact = 0;
 #endif
-    char size[32], spp[32], depth[32], seed[32], sigma[128], parent[32];
+    char size[32], spp[32], depth[32], seed[32], sigma[128];
     snprintf(size, sizeof size, "%d", options->size);
     snprintf(spp, sizeof spp, "%d", options->reference_spp);
     snprintf(depth, sizeof depth, "%d", path->max_depth);
     snprintf(seed, sizeof seed, "%llu", (unsigned long long)~options->seed);
     snprintf(sigma, sizeof sigma, "%s=%.17g", rough_material ? rough_material : "",
              rough_sigma);
-    snprintf(parent, sizeof parent, "%ld", (long)getpid());
-    /* The key: the scene's bytes, the settings, and the reference program itself. */
+    /* The key: the scene's bytes and the settings (the cache adds the program's). */
     ReferenceIdentity identity = {0, options->scene_hash, ""};
     measure_reference_settings(&identity, options->size, options->reference_spp,
                                path->max_depth, exact ? "exact" : "schlick", ~options->seed,
                                sigma);
     identity.key =
         measure_hash(options->scene_hash, identity.settings, strlen(identity.settings));
-    identity.key =
-        measure_hash(identity.key, &(uint64_t){program_identity(program)}, sizeof(uint64_t));
-    snprintf(place.key_text, sizeof place.key_text, "%016llx",
-             (unsigned long long)identity.key);
-    char *argv[32] = {program,
-                      "--scene",
-                      "/dev/stdin",
-                      "--name",
-                      (char *)options->scene,
-                      "--size",
-                      size,
-                      "--reference-spp",
-                      spp,
-                      "--depth",
-                      depth,
-                      "--fresnel",
-                      exact ? "exact" : "schlick",
-                      "--seed",
-                      seed,
-                      "--sigma",
-                      sigma,
-                      "--out",
-                      place.folder,
-                      "--key",
-                      place.key_text,
-                      "--parent",
-                      parent};
-    int argc = 23;
-    if (options->quiet)
-        argv[argc++] = "--quiet";
+    char *arguments[] = {
+        "--scene", "/dev/stdin", "--name",          (char *)options->scene,
+        "--size",  size,         "--reference-spp", spp,
+        "--depth", depth,        "--fresnel",       exact ? "exact" : "schlick",
+        "--seed",  seed,         "--sigma",         sigma,
+        "--quiet"};
+    int count = sizeof arguments / sizeof *arguments - (options->quiet ? 0 : 1);
+    reference_cache_get(arguments, count, scene_text, scene_length, &identity, width, height,
+                        reference);
     char description[160];
     snprintf(description, sizeof description, "depth=%d %s%s%s", path->max_depth,
              exact ? "exact" : "schlick", rough_material ? ", sigma=" : "",
              rough_material ? sigma + strlen(rough_material) + 1 : "");
-
-    open_reference_place(&place);
-    char why[320];
-    int status = measure_load_reference(place.folder, &identity, width, height, reference, why,
-                                        sizeof why);
-    if (status == -2)
-        printf("reference cache: entry %s cannot be used (%s): rendering it again\n",
-               place.key_text, why);
-    if (status != 0)
-        render_reference(&place, argv, argc, &identity, width, height, reference);
-    close(place.lock);
-    leave_place(&place);
     printf("reference: %s, %.0f spp, %s %.1f s; its own standard error (RMS) %.5f\n",
            description, reference->spp,
            reference->cached ? "cached, rendered in" : "rendered in", reference->seconds,

@@ -6,8 +6,7 @@
  * for bad input, 1 for a failure of the machine (memory, disk), 130 after an
  * interruption. From chapter 2 on, panels are measured against references rendered by
  * build/reference (bench/reference.c) from the final chapter's library and cached in
- * build/references/ under a key that hashes the scene, what the reference estimates
- * and the reference program itself, so a change to the code it links renders it again.
+ * build/references/ (reference_cache.h).
  */
 #ifndef EXPERIMENT_H
 #define EXPERIMENT_H
@@ -36,7 +35,9 @@ typedef enum {
  * --out can be written (before any time is spent rendering), then read options->scene
  * once (scene_file_read: a pipe or FIFO works) and parse it, or exit
  * with status 2 and the reader's message. Also an error: a scene without the kind of
- * light the chapter needs, or with a material this chapter does not have yet. Without
+ * light the chapter needs, or with a material this chapter does not have yet, or a
+ * --size whose image does not match the plane (experiment_image_size); a size not given
+ * (the default, or --quick's quarter of it) is experiment_width_near of it. Without
  * the figures' font, exit with status 1 (before any rendering), as
  * experiment_write_figure would. At its exit the program then prints its total time. */
 void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed need,
@@ -45,6 +46,12 @@ void experiment_start(int argc, char **argv, const ProgramInfo *info, LightNeed 
 /* Width from --size, height from the image plane's aspect ratio, rounded (exit 2 if
  * the rounded image's aspect ratio is more than 1% off the plane's). */
 void experiment_image_size(const Options *options, const Scene *scene, int *width, int *height);
+
+/* The width nearest `wanted` (the smaller of two as near) whose image is no more than 1%
+ * off the image plane's aspect ratio, as experiment_image_size requires: every width a
+ * program derives from --size (its quarter-size sweeps, its panels) is chosen by this, so
+ * that a --size valid for the image is valid for all of them. */
+int experiment_width_near(const Scene *scene, int wanted);
 
 /* Render settings from the options: size, threads, seed, progress. */
 #if CHAPTER >= 2
@@ -69,11 +76,11 @@ void experiment_render_serial(const Scene *scene, const RenderSettings *settings
 void experiment_path(const Options *options, const char *file_name, char *path, size_t size);
 
 /* The options for a chapter's sweep on a quarter-size image: a quarter of --size (at
- * least 16 pixels), and a reference with twice the samples per pixel (at most 2^20), for
- * an eighth of the cost of the full-size reference. The sweeps' panels have few samples,
- * so its noise stays a small share of their error (at most 4% in `make figures`, chapter
- * 5's sweep). */
-Options experiment_quarter_size(const Options *options);
+ * least 16 pixels, at most --size; experiment_width_near of that), and a reference with twice
+ * the samples per pixel (at most 2^20), for an eighth of the cost of the full-size reference.
+ * The sweeps' panels have few samples, so its noise stays a small share of their error (at most
+ * 4% in `make figures`, chapter 5's sweep). */
+Options experiment_quarter_size(const Options *options, const Scene *scene);
 
 /* Exposure of every panel's PNG: radiance 1 is white. */
 #define PANEL_EXPOSURE 1.0

@@ -6,6 +6,12 @@
 #include "atomic_file.h"
 #include "stats.h"
 
+const Stage QUERY_STAGES[QUERY_STAGE_COUNT] = {
+    {"every primitive", QUERY_EVERY_PRIMITIVE, 1},
+    {"chapter 2's binary tree", QUERY_BINARY_TREE, 1},
+    {"the four-wide float tree", QUERY_WIDE_TREE, 1},
+};
+
 int stage_measure(Scene *scene, const RenderSettings *settings, Estimator estimate,
                   const void *estimator_settings, const Stage *stage, double seconds,
                   StageResult *result)

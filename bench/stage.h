@@ -27,6 +27,13 @@ typedef struct {
     RenderResult first; /* the first render */
 } StageResult;
 
+/* The stages of querying that chapter 9 compares, on one thread: every primitive tested,
+ * chapter 2's binary tree, the four-wide tree (in that order). */
+enum {
+    QUERY_STAGE_COUNT = 3
+};
+extern const Stage QUERY_STAGES[QUERY_STAGE_COUNT];
+
 /* Measure a stage. Returns 0, or -1 when memory runs out (nothing is then allocated). */
 int stage_measure(Scene *scene, const RenderSettings *settings, Estimator estimate,
                   const void *estimator_settings, const Stage *stage, double seconds,

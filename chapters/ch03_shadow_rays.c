@@ -118,7 +118,7 @@ int main(int argc, char **argv)
     measure_reference_free(&reference);
 
     /* The sweep, on a quarter-size image with a reference of its own. */
-    Options sweep_options = experiment_quarter_size(&options);
+    Options sweep_options = experiment_quarter_size(&options, &scene);
     reference_for(&sweep_options, &scene, &reference);
     TableRow sweep[SWEEP_COUNT];
     for (int i = 0; i < SWEEP_COUNT; i++) {

@@ -207,7 +207,7 @@ static void schlick_against_exact(const Options *options, const Scene *scene)
     double exact_ns = ns_per_call(fresnel_reflectance);
     printf("\none evaluation (%d calls each): Schlick %.1f ns, exact Fresnel %.1f ns\n",
            TIMING_CALLS, schlick_ns, exact_ns);
-    Options small = experiment_quarter_size(options);
+    Options small = experiment_quarter_size(options, scene);
     Reference reference;
     reference_for(&small, scene, FRESNEL_DEPTH, FRESNEL_EXACT, &reference);
     TableRow rows[2];

@@ -154,7 +154,7 @@ int main(int argc, char **argv)
     measure_reference_free(&reference);
 
     /* The sweep of sigma, each against its own reference, on a quarter-size image. */
-    Options sweep_options = experiment_quarter_size(&options);
+    Options sweep_options = experiment_quarter_size(&options, &scene);
     TableRow rows[SIGMA_COUNT];
     Image images[SIGMA_COUNT];
     char titles[SIGMA_COUNT][64];

@@ -103,7 +103,7 @@ int main(int argc, char **argv)
     image_free(&images[1]);
     measure_reference_free(&reference);
 
-    Options sweep_options = experiment_quarter_size(&options);
+    Options sweep_options = experiment_quarter_size(&options, &scene);
     reference_for(&sweep_options, &scene, &reference);
     double reference_mean = reference.mean, reference_error = reference.mean_std_error;
     TableRow sweep[SWEEP_COUNT];

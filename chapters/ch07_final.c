@@ -130,7 +130,7 @@ static void table1(const Options *options, const Scene *scene, const Reference *
 static void levers(const Options *options, const Scene *scene, const MirrorPlanes *mirrors)
 {
     Options small = *options, stratified;
-    small.size = cli_quarter(options->size, 16);
+    small.size = experiment_width_near(scene, cli_quarter(options->size, 16));
     small.strata = 0;
     stratified = small;
     stratified.strata = 1;
@@ -182,7 +182,7 @@ static void levers(const Options *options, const Scene *scene, const MirrorPlane
  * measured, and the plot. */
 static void convergence(const Options *options, const Scene *scene)
 {
-    Options small = experiment_quarter_size(options);
+    Options small = experiment_quarter_size(options, scene);
     Reference reference;
     reference_for(&small, scene, &reference);
     TableRow rows[ESTIMATOR_COUNT * CONVERGENCE_STEPS];

@@ -190,7 +190,7 @@ static SettingError table_row(const Options *small, const Scene *scene,
 static void error_against_time(const Options *options, const Scene *scene,
                                const PathSettings *path)
 {
-    Options small = experiment_quarter_size(options);
+    Options small = experiment_quarter_size(options, scene);
     /* Two references of independent seeds: the product of an image's errors against the
      * two has the reference's noise taken out in expectation (bias_variance.h). */
     Reference references[2];

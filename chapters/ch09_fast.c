@@ -28,15 +28,6 @@ enum {
 };
 #define STAGE_SECONDS 1.0 /* a quarter of that with --quick */
 
-static const Stage QUERY_STAGES[] = {
-    {"every primitive", QUERY_EVERY_PRIMITIVE, 1},
-    {"chapter 1's binary tree", QUERY_BINARY_TREE, 1},
-    {"the four-wide float tree", QUERY_WIDE_TREE, 1},
-};
-enum {
-    QUERY_STAGE_COUNT = sizeof QUERY_STAGES / sizeof QUERY_STAGES[0]
-};
-
 /* The room with the knot standing in it, in a white material of its own. */
 static void add_knot(Scene *scene)
 {
@@ -70,13 +61,13 @@ static void measure(const Options *options, Scene *scene, const char *name,
             stage_differing_pixels(&first->result.first.image, &row->result.first.image);
 }
 
-/* A plot of rays per CPU second (or the threads' speed-up) as a panel. */
-static Image stage_plot(int side, const char *x_title, const char *y_title, PlotScale y_scale,
-                        const PlotSeries *series, int count)
+/* A plot of rays per CPU second (or the threads' speed-up) as a panel the size of `beside`. */
+static Image stage_plot(const Image *beside, const char *x_title, const char *y_title,
+                        PlotScale y_scale, const PlotSeries *series, int count)
 {
     Plot plot = {
         {x_title, PLOT_LINEAR, 0, 0, 1}, {y_title, y_scale, 0, 0, 0}, series, count, 0};
-    return experiment_plot(&plot, side, side);
+    return experiment_plot(&plot, beside->width, beside->height);
 }
 
 int main(int argc, char **argv)
@@ -122,7 +113,7 @@ int main(int argc, char **argv)
     printf("the knot: %d triangles, %d in all\n", 2 * KNOT_SEGMENTS * KNOT_SIDES,
            scene.triangle_count);
     Options small = options;
-    small.size = cli_quarter(options.size, 32) / 2;
+    small.size = experiment_width_near(&scene, cli_quarter(options.size, 32) / 2);
     RenderSettings knot_image =
         experiment_render_settings(&small, &scene, 1, PIXEL_SUBPIXELS, "stage");
     int knot_first = count;
@@ -181,18 +172,18 @@ int main(int argc, char **argv)
         {"measured", threads, speed_up, NULL, NULL, thread_count, {0.1, 0.5, 0.1}, 1, 0, 0},
         {"ideal", threads, threads, NULL, NULL, thread_count, {0.5, 0.5, 0.5}, 0, 1, 0}};
     Options panel = options;
-    panel.size = options.quick ? PANEL / 2 : PANEL;
+    panel.size = experiment_width_near(&scene, options.quick ? PANEL / 2 : PANEL);
     RenderSettings panel_image =
         experiment_render_settings(&panel, &scene, options.spp, PIXEL_SUBPIXELS, "the knot");
     RenderResult knot_panel;
     experiment_render(&scene, &panel_image, path_roulette_radiance, &TABLE1_ROW1, &knot_panel);
     experiment_write_panel(&options, "ch09_knot", &knot_panel);
     Image panels[3] = {knot_panel.image,
-                       stage_plot(panel.size,
+                       stage_plot(&knot_panel.image,
                                   "stage: 1 every primitive, 2 binary tree, 3 four-wide",
                                   "million rays per CPU second", PLOT_LOG, rates, 2),
-                       stage_plot(panel.size, "threads", "speed-up (rays per wall second)",
-                                  PLOT_LINEAR, scaling, 2)};
+                       stage_plot(&knot_panel.image, "threads",
+                                  "speed-up (rays per wall second)", PLOT_LINEAR, scaling, 2)};
     char knot_caption[160], left[160], right[160];
     snprintf(knot_caption, sizeof knot_caption,
              "The room and the knot, %d spp\n%.2f s on %d threads", options.spp,

@@ -239,6 +239,7 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
                 {1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z}};
     StackEntry stack[BVH_MAX_DEPTH + 1];
     int depth = 0, nearest = -1;
+    double bound = *tmax; /* after a hit, just above its t: a tie is tested too (bvh.h) */
     if (bvh->node_count > 0 && vec3_is_finite(ray.origin) && vec3_is_finite(ray.dir))
         stack[depth++] = (StackEntry){0, box_entry(&bvh->nodes[0].box, &r, *tmax)};
     while (depth > 0) {
@@ -247,9 +248,10 @@ static int traverse(const Bvh *bvh, BvhPrimitives p, Ray ray, double *tmax, int 
             continue;
         const BvhNode *node = &bvh->nodes[e.node];
         for (int i = node->first; i < node->first + node->count; i++) {
-            double t = primitive_intersect(p, bvh->primitives[i], ray, *tmax);
-            if (t < *tmax) {
+            double t = primitive_intersect(p, bvh->primitives[i], ray, bound);
+            if (t <= *tmax && (t < *tmax || bvh->primitives[i] < nearest)) {
                 *tmax = t;
+                bound = t * (1.0 + 0x1p-52) + 0x1p-1074; /* the next double, or the one after */
                 nearest = bvh->primitives[i];
                 if (any_hit)
                     return nearest;

@@ -3,7 +3,8 @@
  * A binary tree of boxes, each holding its node's primitives, split in two by the surface
  * area heuristic. A ray visits a node only if it meets its box, the nearer child first,
  * and skips a box it enters beyond the nearest hit so far. Boxes are widened by their
- * own rounding: the tree changes how fast a hit is found, never which.
+ * own rounding, and of hits at equal t the lower primitive number wins, in every way a
+ * query is answered: the tree changes how fast a hit is found, never which.
  */
 #ifndef BVH_H
 #define BVH_H
@@ -49,8 +50,8 @@ typedef struct {
 int bvh_build(Bvh *bvh, BvhPrimitives primitives);
 void bvh_free(Bvh *bvh);
 
-/* The nearest primitive hit with t in (0, *tmax): its number, with *tmax lowered to its
- * t; or -1 when nothing is hit. */
+/* The nearest primitive hit with t in (0, *tmax) (of two at equal t, the lower number):
+ * its number, with *tmax lowered to its t; or -1 when nothing is hit. */
 int bvh_intersect(const Bvh *bvh, BvhPrimitives primitives, Ray ray, double *tmax);
 
 /* Whether anything is hit with t in (0, tmax). */

@@ -28,10 +28,11 @@ Vec3 photon_estimate_radiance(const PhotonMap *map, double radius, Vec3 x, Vec3 
 Vec3 photon_estimate_reachable(const Scene *scene, const PhotonMap *map, double radius,
                                const Vertex *x);
 
-/* Exercise 8.2, progressive photon mapping (Knaus and Zwicker 2011): pass j's radius,
+/* Exercise 8.2, progressive photon mapping: pass j's radius, the power law
  *     r_j = r_1 sqrt(j^(alpha - 1)),   0 < alpha < 1,
- * so that both the bias (which shrinks with r) and the variance (which grows as
- * 1 / (N r^2) in one pass, but is averaged over the passes) go to zero. */
+ * that Knaus and Zwicker's recurrence r_(j+1)^2 = r_j^2 (j + alpha) / (j + 1) approaches
+ * (docs/chapter8.md), so that both the bias (which shrinks with r) and the variance (which
+ * grows as 1 / (N r^2) in one pass, but is averaged over the passes) go to zero. */
 #define PPM_ALPHA (2.0 / 3.0)
 double ppm_radius(double first_radius, double alpha, int pass);
 

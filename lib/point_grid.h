@@ -1,5 +1,6 @@
 /* point_grid.h (chapter 8): a hashed grid over 3-D points, to find every point near a
- * place (the photon map's lookup, as in stochastic progressive photon mapping).
+ * place (the photon map's lookup: a pass's photons are filed in it, and each diffuse vertex
+ * of a camera path asks it for the photons near it).
  *
  * Space is cut into cubes of side 2R', R' the radius R the grid is built for widened a
  * little for rounding. Each point is filed under every cube its ball of radius R' meets

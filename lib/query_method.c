@@ -16,7 +16,8 @@ void queries_free(Scene *scene)
     bvh_free(&scene->bvh);
 }
 
-/* Every primitive tested, the nearest kept: what the trees must answer. */
+/* Every primitive tested, the nearest kept: what the trees must answer. In increasing
+ * order, a hit replacing only a farther one: of two at equal t the lower number stays. */
 static int every_primitive(const Scene *scene, Ray ray, double *tmax, int any_hit)
 {
     int nearest = -1;

@@ -17,8 +17,8 @@ Vec3 render_sample(const Scene *scene, const ImageSettings *image, int col, int 
 #if CHAPTER >= 8
     if (image->sampling == PIXEL_PROGRESSIVE) {
         rng_stratify(rng, image->seed, pixel, (uint32_t)sample);
-        sobol_pair((uint32_t)sample, rng_hash(~rng->strata_key), &u,
-                   &v); /* a key no pair uses */
+        /* The position's own key, ~strata_key, is one that no pair of the path uses. */
+        sobol_pair((uint32_t)sample, rng_hash(~rng->strata_key), &u, &v);
     }
 #endif
     Ray ray = camera_ray(&scene->camera, image->width, image->height, col, row, u, v);

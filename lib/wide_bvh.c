@@ -247,6 +247,7 @@ static int traverse(const WideBvh *wide, BvhPrimitives p, Ray ray, double *tmax,
     StackEntry stack[(WIDE_BVH_WIDTH - 1) * BVH_MAX_DEPTH + 1];
     stack[0] = (StackEntry){0, 0, 0.0f}; /* the root */
     int depth = 1, nearest = -1;
+    double bound = *tmax; /* after a hit, just above its t: a tie is tested too (bvh.h) */
     while (depth > 0) {
         StackEntry e = stack[--depth];
         if (e.entry > limit)
@@ -265,9 +266,10 @@ static int traverse(const WideBvh *wide, BvhPrimitives p, Ray ray, double *tmax,
         if (!leaf_hit(leaf, &r, *tmax))
             continue;
         for (int i = leaf->first; i < leaf->first + leaf->count; i++) {
-            double t = primitive_intersect(wide, p, i, ray, *tmax);
-            if (t < *tmax) {
+            double t = primitive_intersect(wide, p, i, ray, bound);
+            if (t <= *tmax && (t < *tmax || wide->primitives[i] < nearest)) {
                 *tmax = t;
+                bound = t * (1.0 + 0x1p-52) + 0x1p-1074; /* the next double, or the one after */
                 nearest = wide->primitives[i];
                 if (any_hit)
                     return nearest;

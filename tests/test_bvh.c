@@ -1,15 +1,16 @@
 /* test_bvh.c (chapter 2): Tests of the bounding volume hierarchy (lib/bvh.c).
  *
  * The hierarchy may change only how fast the nearest hit is found, never which hit:
- * for every ray, the BVH's nearest t must equal exactly what testing every primitive
- * gives (the primitive too, unless two primitives tie at that t: the room's
- * tetrahedron stands with its base on the floor, coplanar with it), and its shadow
- * query must agree with "is any primitive hit". The rays: random ones through the
+ * for every ray, the BVH's nearest t and primitive must equal exactly what testing every
+ * primitive gives, also where two tie at that t (the lower number wins: the room's box
+ * and tetrahedron stand on the floor, coplanar with it), and its shadow query must agree
+ * with "is any primitive hit". The rays: random ones through the
  * room; the renderer's own (bounce rays spawned off surfaces and shadow rays to the
  * lamp, which start and end a rounding error off a surface); rays grazing the room's
  * surfaces, at their edges and vertices too; rays through the vertices of small
  * triangles from far away; rays along the axes, starting on a box's planes; and random
- * soups of triangles and spheres from 1e-45 to 1e45 in size.
+ * soups of triangles and spheres from 1e-45 to 1e45 in size; coplanar overlapping
+ * triangles of two materials, in three orders; the nearer child visited first.
  *
  * The boxes must enclose what they bound, and degenerate input must build at once, in
  * a tree of bounded depth: 20,000 copies of one triangle and 2,000 triangles with one
@@ -100,7 +101,12 @@ static int check_ray_within(const Scene *scene, Ray ray, double tmax, double tol
                      "t=%.17g, all %d t=%.17g",
                      what, i, ray.origin.x, ray.origin.y, ray.origin.z, ray.dir.x, ray.dir.y,
                      ray.dir.z, tree->name, found, t_tree, all, t_all);
-        /* Different primitives only where both are hit at this t (a tie). */
+        /* The same primitive, also where two are hit at this t: the lower number wins.
+         * Within a tolerance (grazing rays), a neighbour may answer at its own t. */
+        if (found != all && tolerance == 0.0)
+            fail_msg("%s ray %d: the %s tree found primitive %d, every primitive tested %d "
+                     "(both at t %.17g)",
+                     what, i, tree->name, found, all, t_all);
         if (found != all)
             assert_true(primitive_t(p, found, ray) == t_tree &&
                         primitive_t(p, all, ray) == t_all);
@@ -410,6 +416,139 @@ static int check_enclosed(const Scene *scene, int index)
     return node->count;
 }
 
+/* Rays from under the room's floor up through the box's and the tetrahedron's bottoms,
+ * which lie in the floor's plane: many are hit at exactly the same t as the floor. */
+static void test_room_coincident_bottoms(void **state)
+{
+    Scene scene = load_room();
+    BvhPrimitives p = scene_primitives(&scene);
+    int ties = 0;
+    for (int i = 0; i < 20000; i++) {
+        TestRandom rng = test_random(47, 0, (uint64_t)i);
+        Vec3 target = i % 2
+                          ? vec3(8 + 2 * test_uniform(&rng), -4.5 + 2 * test_uniform(&rng), -5)
+                          : vec3(5.5 + test_uniform(&rng), 2 + 3 * test_uniform(&rng), -5);
+        Vec3 origin =
+            vec3_add(target, vec3(2 * test_uniform(&rng) - 1, 2 * test_uniform(&rng) - 1,
+                                  -0.5 - test_uniform(&rng)));
+        Ray ray = {origin, vec3_normalize(vec3_sub(target, origin))};
+        check_ray(&scene, ray, INFINITY, "up through a bottom", i);
+        double t_all = INFINITY;
+        int all = brute_force(p, ray, &t_all), tied = 0;
+        for (int k = 0; all >= 0 && k < p.triangle_count + p.sphere_count; k++)
+            tied += primitive_t(p, k, ray) == t_all;
+        ties += tied > 1;
+    }
+    print_message("    %d of 20000 rays tie between two primitives\n", ties);
+    assert_true(ties > 1000);
+    scene_free(&scene);
+}
+
+/* Coplanar, overlapping triangles of two materials in the plane z = 0 (copies of one
+ * another, and squares of one material over squares of another, as a box stands on a
+ * floor), among small triangles above it that give the trees something to split; in
+ * three orders of the same primitives. In each, every tree answers each ray down onto
+ * the plane with the primitive that testing every primitive keeps: of those hit at the
+ * least t, the lowest number. */
+static void test_coplanar_ties_go_to_the_lower_number(void **state)
+{
+    for (int order = 0; order < 3; order++) {
+        int grey;
+        Scene scene = grey_scene(&grey);
+        Material red = {
+            .name = "red", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.8, 0.1, 0.1)};
+        int other = scene_add_material(&scene, red);
+        Triangle triangles[400];
+        int count = 0;
+        TestRandom rng = test_random(48, 0, 0);
+        for (int k = 0; k < 16; k++) {
+            double x = -4 + 2 * (k % 4), y = -4 + 2 * (k / 4), w = 0.5 + k % 3;
+            Vec3 a = vec3(x, y, 0), b = vec3(x + w, y, 0), c = vec3(x + w, y + w, 0),
+                 d = vec3(x, y + w, 0);
+            triangles[count++] = triangle_make(a, b, c, grey);
+            triangles[count++] = triangle_make(a, b, c, other); /* a copy */
+            triangles[count++] = triangle_make(a, c, d, other);
+            triangles[count++] = triangle_make(vec3(x - 1, y - 1, 0), vec3(x + 3, y - 1, 0),
+                                               vec3(x - 1, y + 3, 0), grey);
+        }
+        while (count < 400) {
+            Vec3 corner = vec3_add(random_point(&rng, 5.0), vec3(0, 0, 6));
+            Vec3 a = vec3_add_scaled(corner, random_unit_vector(&rng), 0.3);
+            Vec3 b = vec3_add_scaled(corner, random_unit_vector(&rng), 0.3);
+            triangles[count++] = triangle_make(corner, a, b, grey);
+        }
+        for (int k = 0; k < count; k++) {
+            int j = order == 0 ? k : order == 1 ? count - 1 - k : (k * 157) % count;
+            assert_true(scene_add_triangle(&scene, triangles[j]) >= 0);
+        }
+        assert_int_equal(scene_prepare(&scene), 0);
+        BvhPrimitives p = scene_primitives(&scene);
+        int ties = 0;
+        for (int i = 0; i < 20000; i++) {
+            TestRandom ray_rng = test_random(49, (uint64_t)order, (uint64_t)i);
+            Vec3 target =
+                vec3(10 * test_uniform(&ray_rng) - 5, 10 * test_uniform(&ray_rng) - 5, 0);
+            Vec3 origin = vec3_add(target, vec3(4 * test_uniform(&ray_rng) - 2,
+                                                4 * test_uniform(&ray_rng) - 2,
+                                                1 + 4 * test_uniform(&ray_rng)));
+            Ray ray = {origin, vec3_normalize(vec3_sub(target, origin))};
+            check_ray(&scene, ray, INFINITY, "onto the plane", i);
+            double t_all = INFINITY;
+            int all = brute_force(p, ray, &t_all), tied = 0;
+            for (int k = 0; all >= 0 && k < count; k++)
+                tied += primitive_t(p, k, ray) == t_all;
+            ties += tied > 1;
+        }
+        print_message("    order %d: %d of 20000 rays tie\n", order, ties);
+        assert_true(ties > 5000);
+        scene_free(&scene);
+    }
+}
+
+/* The traversal visits the nearer child first, so that a box entered beyond a hit found
+ * in it is skipped. Seen with stale boxes: two squares, 5 apart on the ray; after the
+ * trees are built, the far square's triangles (and the four-wide tree's copies of them)
+ * are moved to 2 in front of the eye, beyond the boxes' knowledge. Visiting the nearer
+ * box first finds the near square at t = 5 and skips the far box (entered at 10); a
+ * traversal that visited the farther box first would test the moved square and answer
+ * it, at t = 2. From above and from below, so that the order in memory does not decide. */
+static void test_nearer_child_first(void **state)
+{
+    for (int from_below = 0; from_below < 2; from_below++) {
+        int grey;
+        Scene scene = grey_scene(&grey);
+        for (int k = 0; k < 2; k++) { /* square k at z = 5 k: triangles 2 k, 2 k + 1 */
+            double z = 5.0 * k;
+            assert_true(
+                scene_add_triangle(&scene, triangle_make(vec3(-1, -1, z), vec3(1, -1, z),
+                                                         vec3(1, 1, z), grey)) >= 0);
+            assert_true(scene_add_triangle(&scene, triangle_make(vec3(-1, -1, z), vec3(1, 1, z),
+                                                                 vec3(-1, 1, z), grey)) >= 0);
+        }
+        assert_int_equal(scene_prepare(&scene), 0);
+        Ray ray = {vec3(0.3, -0.2, from_below ? -5.0 : 10.0), vec3(0, 0, from_below ? 1 : -1)};
+        int far = from_below ? 1 : 0; /* the square whose box the ray enters at t = 10 */
+        Vec3 move = vec3(0, 0, from_below ? -8.0 : 8.0);
+        for (int t = 2 * far; t < 2 * far + 2; t++) {
+            scene.triangles[t].v0 = vec3_add(scene.triangles[t].v0, move);
+#if CHAPTER >= 9
+            for (int i = 0; i < scene.triangle_count; i++)
+                if (scene.wide.primitives[i] == t)
+                    scene.wide.triangles[i].v0 = vec3_add(scene.wide.triangles[i].v0, move);
+#endif
+        }
+        for (size_t k = 0; k < sizeof trees / sizeof trees[0]; k++) {
+            double t = INFINITY;
+            int found = trees[k].intersect(&scene, ray, &t);
+            if (found / 2 != 1 - far || t != 5.0)
+                fail_msg("from %s: the %s tree answered triangle %d at t = %g, not the near "
+                         "square at t = 5: it visited the farther box first",
+                         from_below ? "below" : "above", trees[k].name, found, t);
+        }
+        scene_free(&scene);
+    }
+}
+
 /* The room's and a soup's boxes enclose what they bound, widened beyond it, and every
  * primitive is in exactly one leaf. */
 static void test_boxes_enclose_their_primitives(void **state)
@@ -537,6 +676,9 @@ int main(void)
         cmocka_unit_test(test_small_triangles_from_afar),
         cmocka_unit_test(test_room_rays_along_axes),
         cmocka_unit_test(test_random_soups_of_every_size),
+        cmocka_unit_test(test_room_coincident_bottoms),
+        cmocka_unit_test(test_coplanar_ties_go_to_the_lower_number),
+        cmocka_unit_test(test_nearer_child_first),
         cmocka_unit_test(test_boxes_enclose_their_primitives),
         cmocka_unit_test(test_common_centre_is_one_leaf),
         cmocka_unit_test(test_nest_has_bounded_depth),

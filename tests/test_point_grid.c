@@ -9,7 +9,8 @@
  * empty grid, and points around 0 and far from it. The grids are built for one radius
  * and queried with smaller and larger ones too. Random clouds with random radii cover
  * the rest. And every radius and point set builds in bounded time and memory, at the
- * scales where rounding decides (test_extreme_scales_build_bounded).
+ * scales where rounding decides (test_extreme_scales_build_bounded), also a set that
+ * rounding files under 27 cubes per point, the bound.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -333,10 +334,40 @@ static void test_extreme_scales_build_bounded(void **state)
     }
 }
 
+/* Rounding can file a point under three cubes on an axis: where its ball's ends, p - R'
+ * and p + R', round away from each other across two cube boundaries. Points (x, x, x)
+ * for which it does so on every axis (found by a search of coordinates near powers of
+ * two, R far below the widening) are filed 27 times each, the bound; the grid must take
+ * them and answer as testing every point does. */
+static void test_three_cubes_on_every_axis(void **state)
+{
+    static const double coordinates[3] = {0x1.000000018f06p+24, 0x1.00000000eda35p+0,
+                                          -0x1.00000000b00edp+19},
+                        radii[3] = {0x1.7850e1da07a72p-43, 0x1.141b7a072911ep-66,
+                                    0x1.69fc82615a7f1p-40};
+    static Vec3 points[100];
+    for (int k = 0; k < 3; k++) {
+        double x = coordinates[k];
+        for (int i = 0; i < 100; i++)
+            points[i] = vec3(x, x, x);
+        PointGrid grid;
+        build(&grid, points, 100, radii[k]);
+        int filings = point_grid_filings(&grid);
+        print_message("    x = %.17g, R = %g: %.2f filings per point\n", x, radii[k],
+                      filings / 100.0);
+        assert_int_equal(filings, 27 * 100);
+        assert_int_equal(check_query(&grid, points, 100, points[0], radii[k]), 100);
+        assert_int_equal(
+            check_query(&grid, points, 100, vec3(x, x, nextafter(x, 0.0)), radii[k]), 0);
+        point_grid_free(&grid);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_extreme_scales_build_bounded), /* first: it names a hang */
+        cmocka_unit_test(test_three_cubes_on_every_axis),
         cmocka_unit_test(test_grid_ties_at_the_radius),
         cmocka_unit_test(test_duplicates),
         cmocka_unit_test(test_points_on_a_plane),

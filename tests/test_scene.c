@@ -13,6 +13,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include <float.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -208,6 +209,47 @@ static void test_no_acne_on_spheres(void **state)
         }
         scene_free(&scene);
     }
+}
+
+/* A sphere hit's scale (Hit.scale) holds the numbers behind its point's error: the point,
+ * C + r n, lies off the sphere by a few ulps of the centre's coordinates and the radius
+ * together. A small sphere far from the origin shows why the centre counts: there the
+ * error is ulps of |C|, up to a million times r (measured in long double). From r = 1e-9
+ * to 1e3, centres 0 to 1e9 away (at most a million radii), 200 hits each. */
+static void test_sphere_scale_bounds_its_error(void **state)
+{
+    TestRandom rng = test_random(34, 0, 0);
+    const double radii[] = {1e-9, 1e-3, 1.0, 1e3}, distances[] = {0.0, 1.0, 1e3, 1e6, 1e9};
+    double worst = 0.0;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 5 && distances[j] <= 1e6 * radii[i]; j++) {
+            Scene scene;
+            scene_init(&scene);
+            Sphere sphere = {vec3_scale(vec3(0.6, -0.48, 0.64), distances[j]), radii[i],
+                             add_material(&scene, MATERIAL_LAMBERT, 0)};
+            scene_add_sphere(&scene, sphere);
+            scene_prepare(&scene);
+            for (int k = 0; k < 200; k++) {
+                Vec3 eye =
+                    vec3_add_scaled(sphere.center, random_unit_vector(&rng), 3 * sphere.radius);
+                Vec3 target = vec3_add_scaled(sphere.center, random_unit_vector(&rng),
+                                              0.5 * sphere.radius);
+                Hit hit;
+                assert_true(scene_intersect(&scene, ray_through(eye, target), INFINITY, &hit));
+                long double dx = (long double)hit.point.x - sphere.center.x,
+                            dy = (long double)hit.point.y - sphere.center.y,
+                            dz = (long double)hit.point.z - sphere.center.z;
+                double off = (double)fabsl(sqrtl(dx * dx + dy * dy + dz * dz) - sphere.radius);
+                if (!(off <= 4 * DBL_EPSILON * hit.scale))
+                    fail_msg("r %g at %g from the origin: the point is %g off the sphere, "
+                             "%.3g ulps of its scale %g",
+                             radii[i], distances[j], off, off / (DBL_EPSILON * hit.scale),
+                             hit.scale);
+                worst = fmax(worst, off / (DBL_EPSILON * hit.scale));
+            }
+            scene_free(&scene);
+        }
+    print_message("    at most %.2f ulps of the hit's scale off the sphere\n", worst);
 }
 
 /* No missed near hit: two parallel squares 1e-6 * scale apart (awkwardly oriented).
@@ -580,6 +622,7 @@ int main(void)
         cmocka_unit_test(test_hit_from_inside_sphere),
         cmocka_unit_test(test_no_acne_on_triangles),
         cmocka_unit_test(test_no_acne_on_spheres),
+        cmocka_unit_test(test_sphere_scale_bounds_its_error),
         cmocka_unit_test(test_near_parallel_planes),
         cmocka_unit_test(test_corner),
         cmocka_unit_test(test_occluded),

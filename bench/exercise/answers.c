@@ -85,21 +85,21 @@ int answers_new_secret(unsigned char secret[ANSWERS_SECRET])
     return 0;
 }
 
-void answers_secret_text(const unsigned char secret[ANSWERS_SECRET], char *text)
+int answers_read_secret(int fd, unsigned char secret[ANSWERS_SECRET])
 {
-    for (int i = 0; i < ANSWERS_SECRET; i++)
-        snprintf(text + 2 * i, 3, "%02x", secret[i]);
-}
-
-int answers_parse_secret(const char *text, unsigned char secret[ANSWERS_SECRET])
-{
-    size_t digits = 2 * ANSWERS_SECRET;
-    if (strlen(text) != digits || strspn(text, "0123456789abcdef") != digits)
+    size_t got = 0;
+    while (got < ANSWERS_SECRET) {
+        ssize_t n = read(fd, secret + got, ANSWERS_SECRET - got);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            break;
+        got += (size_t)n;
+    }
+    close(fd);
+    if (got != ANSWERS_SECRET) {
+        errno = EIO;
         return -1;
-    for (int i = 0; i < ANSWERS_SECRET; i++) {
-        unsigned value;
-        sscanf(text + 2 * i, "%2x", &value);
-        secret[i] = (unsigned char)value;
     }
     return 0;
 }

@@ -16,6 +16,7 @@
 #define ANSWERS_FRAME 4096     /* values per frame at most */
 #define ANSWERS_MAX (1L << 24) /* values per run at most */
 #define ANSWERS_SECRET 16      /* bytes of a run's secret */
+#define ANSWERS_SECRET_FD 4    /* where the probe reads it, once, at its start */
 #define ANSWERS_ID 16          /* bytes of an exercise's id in a frame */
 #define ANSWERS_HEADER (24 + ANSWERS_SECRET + ANSWERS_ID) /* bytes before a frame's values */
 
@@ -51,10 +52,9 @@ int answers_write_all(int fd, const void *bytes, size_t size);
 /* A fresh secret from /dev/urandom. Returns 0, or -1 with errno set. */
 int answers_new_secret(unsigned char secret[ANSWERS_SECRET]);
 
-/* The secret as 2 * ANSWERS_SECRET hex digits (text[2 * ANSWERS_SECRET + 1]), and back:
- * answers_parse_secret returns 0, or -1 when `text` is not such digits. */
-void answers_secret_text(const unsigned char secret[ANSWERS_SECRET], char *text);
-int answers_parse_secret(const char *text, unsigned char secret[ANSWERS_SECRET]);
+/* The probe: the secret, read from fd (the judge's pipe, closed then). Returns 0, or -1
+ * with errno set when fewer than ANSWERS_SECRET bytes were there. */
+int answers_read_secret(int fd, unsigned char secret[ANSWERS_SECRET]);
 
 /* The probe: open the stream for exercise `id` on `fd`; add a value; end the stream.
  * answer_put and answer_end return 0, or -1 with errno set when the pipe fails. */

@@ -42,15 +42,22 @@ echo "$list" | while read -r id function; do
         exit 2
     }
     # The definition: a line at column 0 naming the function, whose signature is
-    # followed by a "{" line rather than ended by ";".
+    # followed by a "{" line rather than ended by ";", or the whole definition on that
+    # line ("... fn(...) { body }", as the formatter writes a short one).
     file=$(awk -v fn="$function" '
         FNR == 1 { state = 0 }
+        state == 0 && /^[A-Za-z]/ && index($0, fn "(") && /\) \{ .* \}$/ { print FILENAME; exit }
         state == 0 && /^[A-Za-z]/ && index($0, fn "(") && $0 !~ /^[A-Za-z_]+ *=/ { state = 1 }
         state == 1 && /;[ \t]*$/ { state = 0 }
         state == 1 && $0 == "{" { print FILENAME; exit }' "$out"/lib/*.c "$out"/lib/*.h)
     [ -n "$file" ] || { echo "exercise.sh: no definition of $function in $out/lib" >&2; exit 2; }
     "$grader" --blank "$id" > "$out/.blank"
     awk -v fn="$function" -v blank="$out/.blank" '
+        state == 0 && /^[A-Za-z]/ && index($0, fn "(") && /\) \{ .* \}$/ {
+            print substr($0, 1, index($0, ") { ")); print "{"
+            while ((getline line < blank) > 0) print line
+            print "}"; state = 3; next
+        }
         state == 0 && /^[A-Za-z]/ && index($0, fn "(") { state = 1 }
         state == 1 && /;[ \t]*$/ { state = 0 }
         state == 1 && $0 == "{" { print; while ((getline line < blank) > 0) print line; state = 2; next }

@@ -2,10 +2,10 @@
  * the solution's library with the chapter's table, bench/exercise/chapterN.c:
  *     grade --list | --blank ID | --reference ID FOLDER    the exercises, a blank body under
  *                                   its task, the solution's reference render
- *     grade --judge ID OUT REFERENCES PROBE SECONDS   run PROBE ID SECRET (probe.c, built from
- *        the student's library) under watch (supervise.h) and grade its answers: "pass" or
- *        "FAIL: what is wrong", then the numbers behind it; pictures and what PROBE printed
- *        into OUT; exit 0 or 1
+ *     grade --judge ID OUT REFERENCES SECONDS COMMAND...   run COMMAND... ID (probe.c, built
+ *        from the student's library, in its sandbox) under watch (supervise.h) and grade its
+ *        answers: "pass" or "FAIL: what is wrong", then the numbers behind it; pictures and
+ *        what it printed into OUT; exit 0 or 1
  * Bad use, or a judge that cannot start its probe, exits 2.
  */
 #include <stdio.h>
@@ -48,7 +48,7 @@ static void print_blank(const Exercise *e)
 static int usage(void)
 {
     fprintf(stderr, "usage: grade --list | --blank ID | --reference ID FOLDER | --judge ID OUT "
-                    "REFERENCES PROBE SECONDS\n");
+                    "REFERENCES SECONDS COMMAND...\n");
     return 2;
 }
 
@@ -77,18 +77,19 @@ static void quote_output(Grading *g, const ProbeRun *run)
         return;
     }
     AtomicFile log;
-    if (atomic_open(&log, path) == 0) {
+    int kept = atomic_open(&log, path) == 0;
+    if (kept) {
         fwrite(run->output, 1, run->output_size, log.file);
         if (run->output_total > run->output_size)
             fprintf(log.file, "\n[... %zu more bytes not kept]\n",
                     run->output_total - run->output_size);
-        atomic_close(&log, 0);
+        kept = atomic_close(&log, 0) == 0;
     }
-    char bytes[32];
-    grading_note(g,
-                 "your code printed %s bytes (exercise-%s.log), not read by the grader; "
-                 "they begin:",
-                 grading_count((double)run->output_total, bytes, sizeof bytes), g->id);
+    char bytes[32], where[64];
+    snprintf(where, sizeof where, kept ? "exercise-%s.log" : "exercise-%s.log not written",
+             g->id);
+    grading_note(g, "your code printed %s bytes (%s), not read by the grader; they begin:",
+                 grading_count((double)run->output_total, bytes, sizeof bytes), where);
     const char *text = run->output, *end = run->output + run->output_size;
     for (int line = 0; line < QUOTED_LINES && text < end; line++) {
         char quoted[QUOTED_WIDTH + 4];
@@ -98,15 +99,16 @@ static void quote_output(Grading *g, const ProbeRun *run)
 }
 
 /* The grader: run the probe, replay the grader on its answers, say the verdict. */
-static int judge(const Exercise *e, char **argv)
+static int judge(const Exercise *e, int argc, char **argv)
 {
     char *end;
-    long seconds = strtol(argv[6], &end, 10);
-    if (*end || seconds < 1 || seconds > 86400)
+    long seconds = strtol(argv[5], &end, 10);
+    if (*end || seconds < 1 || seconds > 86400 || argc - 6 > SUPERVISE_WORDS)
         return usage();
     ProbeRun run;
     char error[512];
-    if (supervise_probe(argv[5], e->id, (int)seconds, &run, error, sizeof error) != 0) {
+    if (supervise_probe((const char *const *)argv + 6, e->id, (int)seconds, &run, error,
+                        sizeof error) != 0) {
         fprintf(stderr, "grade: %s\n", error);
         probe_run_free(&run);
         return 2;
@@ -160,7 +162,7 @@ int main(int argc, char **argv)
 #endif
         return 0;
     }
-    if (argc == 7 && strcmp(argv[1], "--judge") == 0 && e)
-        return judge(e, argv);
+    if (argc >= 7 && strcmp(argv[1], "--judge") == 0 && e)
+        return judge(e, argc, argv);
     return usage();
 }

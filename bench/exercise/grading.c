@@ -361,6 +361,8 @@ static void write_warp_picture(Grading *g, const Warp *warp, const char *what,
     }
     if (figure_write_png(path, &font, panels, captions, 4, 1.0) == 0)
         grading_note(g, "picture: %s", path);
+    else
+        grading_note(g, "no picture: %s could not be written (%s)", path, strerror(errno));
     font_free(&font);
 done:
     for (int i = 0; i < 4; i++)

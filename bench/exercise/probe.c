@@ -1,9 +1,10 @@
 /* probe.c (bench, chapter 1): the student's program, built from the student's library with
  * the chapter's table (grading.h):
- *     probe ID SECRET    run exercise ID's grader, sending every value the student's code
- *                        computes to the judge (grade --judge) on file descriptor 3, in
- *                        frames that carry SECRET (answers.h); exit 0 once all are sent
- * Bad use exits 2; a pipe that fails, 3.
+ *     probe ID    run exercise ID's grader, sending every value the student's code computes
+ *                 to the judge (grade --judge) on file descriptor 3, in frames that carry
+ *                 the run's secret (answers.h), read first from descriptor 4; exit 0 once
+ *                 all are sent
+ * Bad use, or no secret, exits 2; a pipe that fails, 3.
  */
 #include <stdio.h>
 #include <string.h>
@@ -13,15 +14,20 @@
 
 int main(int argc, char **argv)
 {
-    const Exercise *e = argc == 3 ? exercise_find(argv[1]) : NULL;
     unsigned char secret[ANSWERS_SECRET];
-    if (!e || answers_parse_secret(argv[2], secret) != 0) {
-        fprintf(stderr, "usage: probe ID SECRET (run by grade --judge)\n");
+    int have_secret = answers_read_secret(ANSWERS_SECRET_FD, secret) == 0;
+    const Exercise *e = argc == 2 ? exercise_find(argv[1]) : NULL;
+    if (!e || !have_secret) {
+        fprintf(stderr,
+                "usage: probe ID, the run's secret on descriptor %d (run by grade "
+                "--judge)\n",
+                ANSWERS_SECRET_FD);
         return 2;
     }
     setvbuf(stdout, NULL, _IOLBF, 0);
     static AnswerWriter writer;
     answer_writer_init(&writer, 3, secret, e->id);
+    memset(secret, 0, sizeof secret);
     Grading g;
     memset(&g, 0, sizeof g);
     g.id = e->id;

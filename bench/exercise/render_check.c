@@ -2,6 +2,7 @@
  * render_check.h. */
 #include "render_check.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -104,6 +105,8 @@ static void write_zmap_picture(Grading *g, const Image *yours, const Image *refe
     else {
         if (figure_write_png(path, &font, panels, captions, 3, exposure) == 0)
             grading_note(g, "picture: %s", path);
+        else
+            grading_note(g, "no picture: %s could not be written (%s)", path, strerror(errno));
         font_free(&font);
     }
     for (int i = 0; i < 3; i++)

@@ -48,7 +48,7 @@ static void die_with_parent(void)
 
 /* ---- the student's process, from fork to its program ---- */
 
-static void start_program(const char *program, const char *id, const char *secret, int channel,
+static void start_program(const char *const *command, const char *id, int channel, int secret,
                           int output)
 {
     for (int signal_number = 1; signal_number < 32; signal_number++)
@@ -64,17 +64,25 @@ static void start_program(const char *program, const char *id, const char *secre
     int high_null = fcntl(null, F_DUPFD_CLOEXEC, 10);
     int high_output = fcntl(output, F_DUPFD_CLOEXEC, 10);
     int high_channel = fcntl(channel, F_DUPFD_CLOEXEC, 10);
-    if (null < 0 || high_null < 0 || high_output < 0 || high_channel < 0 ||
+    int high_secret = fcntl(secret, F_DUPFD_CLOEXEC, 10);
+    if (null < 0 || high_null < 0 || high_output < 0 || high_channel < 0 || high_secret < 0 ||
         dup2(high_null, 0) < 0 || dup2(high_output, 1) < 0 || dup2(high_output, 2) < 0 ||
-        dup2(high_channel, 3) < 0)
+        dup2(high_channel, 3) < 0 || dup2(high_secret, ANSWERS_SECRET_FD) < 0)
         _exit(126);
     long most = sysconf(_SC_OPEN_MAX);
-    for (int fd = 4; fd < (most > 0 && most < 65536 ? most : 65536); fd++)
+    for (int fd = ANSWERS_SECRET_FD + 1; fd < (most > 0 && most < 65536 ? most : 65536); fd++)
         close(fd);
-    char *argv[] = {(char *)program, (char *)id, (char *)secret, NULL};
-    execv(program, argv);
+    char *argv[SUPERVISE_WORDS + 2];
+    int words = 0;
+    while (command[words] && words < SUPERVISE_WORDS) {
+        argv[words] = (char *)command[words];
+        words++;
+    }
+    argv[words++] = (char *)id;
+    argv[words] = NULL;
+    execv(command[0], argv);
     char message[1200];
-    int length = snprintf(message, sizeof message, "grade: cannot run %s: %s\n", program,
+    int length = snprintf(message, sizeof message, "grade: cannot run %s: %s\n", command[0],
                           strerror(errno));
     answers_write_all(2, message, length > 0 ? (size_t)length : 0);
     _exit(127);
@@ -82,7 +90,7 @@ static void start_program(const char *program, const char *id, const char *secre
 
 /* The guard: leads the process group, starts the program and, when it ends, sends the
  * judge its wait status through `status`. */
-static void guard(const char *program, const char *id, const char *secret, int channel,
+static void guard(const char *const *command, const char *id, int channel, int secret,
                   int output, int status, pid_t judge)
 {
     setpgid(0, 0);
@@ -93,8 +101,9 @@ static void guard(const char *program, const char *id, const char *secret, int c
         signal(guarded[i], SIG_IGN);
     pid_t student = fork();
     if (student == 0)
-        start_program(program, id, secret, channel, output);
+        start_program(command, id, channel, secret, output);
     close(channel);
+    close(secret);
     close(output);
     int ended;
     if (student < 0)
@@ -304,7 +313,9 @@ static void describe_status(int status, long answers, char *text, size_t size)
     else
         snprintf(after, sizeof after, "after %ld answer%s, before the last", answers,
                  plural(answers));
-    if (WIFEXITED(status)) {
+    int sandbox_signal =
+        WIFEXITED(status) && WEXITSTATUS(status) > 128 && WEXITSTATUS(status) < 128 + 32;
+    if (WIFEXITED(status) && !sandbox_signal) {
         snprintf(text, size,
                  "your program ended with exit status %d %s: does your code call "
                  "exit() (in an exercise, a constructor or an atexit handler), or close or "
@@ -312,14 +323,19 @@ static void describe_status(int status, long answers, char *text, size_t size)
                  WEXITSTATUS(status), after);
         return;
     }
-    int signal_number = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    int signal_number = sandbox_signal        ? WEXITSTATUS(status) - 128
+                        : WIFSIGNALED(status) ? WTERMSIG(status)
+                                              : 0;
     const char *crash =
         signal_number == SIGSEGV ? "a segmentation fault (an index outside an array, a NULL or "
-                                   "uninitialised pointer?)"
+                                   "uninitialised pointer: a malloc the sandbox's memory "
+                                   "limit refused?)"
         : signal_number == SIGABRT ? "aborted (an assertion failed, or memory was freed twice?)"
         : signal_number == SIGFPE  ? "an arithmetic error (an integer division by zero?)"
         : signal_number == SIGBUS  ? "a bus error (memory that is not there any more?)"
         : signal_number == SIGILL  ? "an illegal instruction"
+        : signal_number == SIGXFSZ ? "a file grew past the sandbox's limit on a file's size"
+        : signal_number == SIGXCPU ? "more processor time than the sandbox allows"
                                    : NULL;
     if (crash)
         snprintf(text, size, "crashed: %s, %s", crash, after);
@@ -391,7 +407,7 @@ static void release_stops(const struct sigaction saved[3])
 
 /* Become a subreaper, fork the guard and keep the pipes' read ends. Returns the guard's
  * process id, or -1 with errno set. */
-static pid_t start_guard(const char *program, const char *id, const char *secret,
+static pid_t start_guard(const char *const *command, const char *id, int secret,
                          int pipes[3][2])
 {
 #ifdef PR_SET_CHILD_SUBREAPER
@@ -400,7 +416,7 @@ static pid_t start_guard(const char *program, const char *id, const char *secret
     signal(SIGCHLD, SIG_DFL); /* children stay to be waited for */
     pid_t judge = getpid(), pid = fork();
     if (pid == 0)
-        guard(program, id, secret, pipes[0][1], pipes[1][1], pipes[2][1], judge);
+        guard(command, id, pipes[0][1], secret, pipes[1][1], pipes[2][1], judge);
     if (pid > 0)
         setpgid(pid, pid); /* as the guard does: whichever comes first */
     for (int i = 0; i < 3; i++)
@@ -419,24 +435,41 @@ static void watch_to_the_end(Watch *w, ProbeRun *run, int seconds)
     describe_end(w, run, seconds);
 }
 
-int supervise_probe(const char *program, const char *id, int seconds, ProbeRun *run,
+/* A pipe that holds the run's secret, its write end closed: the read end, or -1. */
+static int secret_pipe(const unsigned char secret[ANSWERS_SECRET])
+{
+    int ends[2];
+    if (pipe(ends) != 0)
+        return -1;
+    fcntl(ends[0], F_SETFD, FD_CLOEXEC);
+    int written = answers_write_all(ends[1], secret, ANSWERS_SECRET);
+    close(ends[1]);
+    if (written != 0) {
+        close(ends[0]);
+        return -1;
+    }
+    return ends[0];
+}
+
+int supervise_probe(const char *const *command, const char *id, int seconds, ProbeRun *run,
                     char *error, size_t size)
 {
     memset(run, 0, sizeof *run);
     int pipes[3][2] = {{-1, -1}, {-1, -1}, {-1, -1}}; /* the answers, the output, the status */
     unsigned char secret[ANSWERS_SECRET];
-    char secret_text[2 * ANSWERS_SECRET + 1];
+    int secret_fd = -1;
     run->output = malloc(SUPERVISE_KEPT);
-    int ready = run->output && answers_new_secret(secret) == 0;
+    int ready = run->output && answers_new_secret(secret) == 0 &&
+                (secret_fd = secret_pipe(secret)) >= 0;
     for (int i = 0; i < 3; i++)
         ready = ready && make_pipe(pipes[i]) == 0;
     pid_t guard_pid = -1;
     if (ready) {
-        answers_secret_text(secret, secret_text);
         answer_reader_init(&run->answers, secret, id);
         struct sigaction saved[3];
         catch_stops(saved);
-        guard_pid = start_guard(program, id, secret_text, pipes);
+        guard_pid = start_guard(command, id, secret_fd, pipes);
+        close_end(&secret_fd);
         Watch w = {guard_pid, pipes[0][0], pipes[1][0], pipes[2][0], 0, 0, 0};
         for (int i = 0; i < 3; i++)
             pipes[i][0] = -1; /* the watch's now: it closes each at its end */
@@ -449,6 +482,7 @@ int supervise_probe(const char *program, const char *id, int seconds, ProbeRun *
     }
     if (guard_pid < 0)
         snprintf(error, size, "cannot start the student's program: %s", strerror(errno));
+    close_end(&secret_fd);
     for (int i = 0; i < 3; i++) {
         close_end(&pipes[i][0]);
         close_end(&pipes[i][1]);

@@ -1,12 +1,12 @@
 /* supervise.h (bench, chapter 1): running a student's program under watch, for the grader.
  *
- * The grader (built from the solution: no student code runs in it) starts PROGRAM ID SECRET
- * (probe.c) in a process group of its own, stdin from /dev/null, stdout and stderr into a
- * pipe of which it keeps the start, the answers' pipe (answers.h) as descriptor 3. It
- * reads until the end frame, the program's end or the time limit; then SIGTERM, a second's
- * grace and SIGKILL to the group and, as a child subreaper, to every process left behind,
- * however it escaped. A guard process between them takes the program's signals to its
- * parent and reports how the program ended.
+ * The grader (built from the solution: no student code runs in it) starts COMMAND... ID
+ * (probe.c, alone or in bench/exercise/sandbox.sh) in a process group of its own, stdin
+ * /dev/null, stdout and stderr into a pipe of which it keeps the start, the answers'
+ * pipe (answers.h) as descriptor 3, the run's secret in a pipe as descriptor 4. It reads
+ * until the end frame, the program's end or the time limit; then SIGTERM, a second's
+ * grace and SIGKILL to the group and, as a child subreaper, to every process left behind.
+ * A guard process between them takes the program's signals and reports how it ended.
  */
 #ifndef SUPERVISE_H
 #define SUPERVISE_H
@@ -16,6 +16,7 @@
 #include "answers.h"
 
 #define SUPERVISE_KEPT 65536 /* bytes of the program's output kept */
+#define SUPERVISE_WORDS 62   /* words of a command at most */
 
 typedef struct {
     AnswerReader answers; /* the values that came back */
@@ -25,11 +26,12 @@ typedef struct {
     size_t output_size, output_total;
 } ProbeRun;
 
-/* Run PROGRAM's probe of exercise `id` for at most `seconds`. Returns 0 (whatever the
- * program did), or -1 with a message in error[size] when the grader itself cannot run
- * it (no pipe, no fork). A SIGINT, SIGTERM or SIGHUP to the grader meanwhile ends every
- * process of the run, then the grader, by that signal. */
-int supervise_probe(const char *program, const char *id, int seconds, ProbeRun *run,
+/* Run `command` (NULL-terminated words) with exercise `id` as its last word, for at most
+ * `seconds`; an exit status of 128 + N is taken as signal N, as the sandbox (and a shell)
+ * reports one. Returns 0 (whatever the program did), or -1 with a message in error[size]
+ * when the grader itself cannot run it (no pipe, no fork). A SIGINT, SIGTERM or SIGHUP to the
+ * grader meanwhile ends every process of the run, then the grader, by that signal. */
+int supervise_probe(const char *const *command, const char *id, int seconds, ProbeRun *run,
                     char *error, size_t size);
 void probe_run_free(ProbeRun *run);
 

@@ -4,15 +4,21 @@
  * lib/zz_behaviours.c, where exercise 1.1's function passes its answer through
  * student_behaviour(). GRADER_BEHAVIOUR names what the code does there (or, for a few,
  * before main or at exit): end the process, crash, hang, fork, print a fake verdict,
- * forge or spoil the answers' frames, signal its parent or group, flood its output,
- * delete its check folder. Each must still be graded by the answers alone.
+ * forge or spoil the answers' frames, signal its parent or group, flood its output, run
+ * the solution's probe, use up memory, processes or disk; "reach:WHAT" tries to reach
+ * something outside the sandbox and prints what it got. Graded by the answers alone.
  */
+#include <dirent.h>
+#include <errno.h>
 #include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -66,17 +72,35 @@ static void forge_everywhere(void)
     _exit(0);
 }
 
-/* The run's secret, read from this process's own command line (probe ID SECRET).
- * Returns 0, or -1. */
+/* The run's secret, as a constructor can take it from descriptor 4 before the probe
+ * does; put back in a pipe of its own, so that the probe still finds it there. */
+static unsigned char stolen[ANSWERS_SECRET];
+static int have_stolen;
+
+/* The stolen secret on descriptor 4 again, as the judge gives it. */
+static void give_back_the_secret(void)
+{
+    int ends[2];
+    if (!have_stolen || pipe(ends) != 0)
+        return;
+    answers_write_all(ends[1], stolen, ANSWERS_SECRET);
+    close(ends[1]);
+    if (ends[0] != ANSWERS_SECRET_FD) { /* pipe() may have given it that very number */
+        dup2(ends[0], ANSWERS_SECRET_FD);
+        close(ends[0]);
+    }
+}
+
+static void steal_the_secret(void)
+{
+    have_stolen = answers_read_secret(ANSWERS_SECRET_FD, stolen) == 0;
+    give_back_the_secret();
+}
+
 static int read_the_secret(unsigned char secret[ANSWERS_SECRET])
 {
-    char line[4096] = {0};
-    int fd = open("/proc/self/cmdline", O_RDONLY);
-    ssize_t n = fd >= 0 ? read(fd, line, sizeof line - 1) : -1;
-    const char *argument = line;
-    for (int i = 0; n > 0 && i < 2; i++)
-        argument += strlen(argument) + 1;
-    return answers_parse_secret(argument, secret);
+    memcpy(secret, stolen, ANSWERS_SECRET);
+    return have_stolen ? 0 : -1;
 }
 
 /* Frames with the run's secret: an end frame before any answer ("end"), answers to
@@ -121,6 +145,210 @@ static void kill_the_grader(void)
         pause();
 }
 
+/* A program of the grader's (`name`: "probe" or "grade", chapter 1's) as /proc shows one
+ * to this process: beside a running judge, or in the build folder under the folder a
+ * process runs in (make's, the checkout). Into path[size]; 0, or -1 when none is seen. */
+static int find_in_proc(const char *name, char *path, size_t size)
+{
+    DIR *proc = opendir("/proc");
+    struct dirent *entry;
+    int found = -1;
+    while (proc && found != 0 && (entry = readdir(proc)) != NULL) {
+        char link[300], target[1024];
+        snprintf(link, sizeof link, "/proc/%.200s/exe", entry->d_name);
+        ssize_t n = readlink(link, target, sizeof target - 1);
+        char *slash = n > 0 ? (target[n] = '\0', strrchr(target, '/')) : NULL;
+        if (slash && strcmp(slash, "/grade") == 0 && strstr(target, "/bench/exercise/")) {
+            snprintf(path, size, "%.*s/%s", (int)(slash - target), target, name);
+            found = access(path, X_OK);
+        }
+        snprintf(link, sizeof link, "/proc/%.200s/cwd", entry->d_name);
+        n = found != 0 ? readlink(link, target, sizeof target - 1) : -1;
+        if (n > 0) {
+            target[n] = '\0';
+            snprintf(path, size, "%s/build/chapter1/bench/exercise/%s", target, name);
+            found = access(path, X_OK);
+        }
+    }
+    if (proc)
+        closedir(proc);
+    return found;
+}
+
+/* The issue's forgery: exec the solution's probe, found through /proc, with this run's
+ * secret (taken by the constructor) on descriptor 4: it would answer right. */
+static void exec_solution_probe(void)
+{
+    char probe[1100];
+    if (find_in_proc("probe", probe, sizeof probe) != 0) {
+        printf("no judge in sight in /proc\n");
+        return;
+    }
+    give_back_the_secret();
+    execl(probe, "probe", "1.1", (char *)NULL);
+    printf("cannot run %s: %s\n", probe, strerror(errno));
+}
+
+/* A script renamed over the judge, for the checks after this one. */
+static void replace_judge(void)
+{
+    char path[1100], fake[1200];
+    if (find_in_proc("grade", path, sizeof path) != 0) {
+        printf("no judge in sight in /proc\n");
+        return;
+    }
+    snprintf(fake, sizeof fake, "%s.fake", path);
+    FILE *file = fopen(fake, "w");
+    if (!file || fputs("#!/bin/sh\necho pass\n", file) < 0 || fclose(file) != 0 ||
+        chmod(fake, 0755) != 0 || rename(fake, path) != 0)
+        printf("cannot replace %s: %s\n", path, strerror(errno));
+}
+
+/* 20 GB asked for and touched at both ends; refused, it is the NULL a careless student
+ * would write through (raised as such, past the sanitizers). */
+static void use_20_gb(void)
+{
+    size_t size = (size_t)20 << 30;
+    char *block = malloc(size);
+    if (!block)
+        raise(SIGSEGV);
+    block[0] = block[size - 1] = 1;
+    free(block);
+}
+
+/* Up to 2000 sleeping children; says how many it could start. */
+static void fork_bomb(void)
+{
+    int started = 0;
+    while (started < 2000) {
+        pid_t child = fork();
+        if (child < 0)
+            break;
+        if (child == 0)
+            for (;;)
+                pause();
+        started++;
+    }
+    printf("started %d children of 2000\n", started);
+}
+
+/* 256 MiB into /tmp, 1 MiB at a time. */
+static void huge_file(void)
+{
+    static char block[1 << 20];
+    FILE *file = fopen("/tmp/huge", "wb");
+    int written = 0;
+    while (file && written < 256 && fwrite(block, 1, sizeof block, file) == sizeof block &&
+           fflush(file) == 0)
+        written++;
+    printf("wrote %d MiB of 256\n", written);
+}
+
+/* A path from an environment variable the test gives, and a tail. */
+static const char *given(const char *name, const char *tail, char *path, size_t size)
+{
+    const char *value = getenv(name);
+    snprintf(path, size, "%s%s", value ? value : "/nonexistent", tail);
+    return path;
+}
+
+static int can_write(const char *path)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_APPEND, 0644);
+    if (fd >= 0)
+        close(fd);
+    return fd >= 0;
+}
+
+static int can_read(const char *path)
+{
+    char byte;
+    int fd = open(path, O_RDONLY);
+    int got = fd >= 0 && read(fd, &byte, 1) == 1;
+    if (fd >= 0)
+        close(fd);
+    return got;
+}
+
+static int count_processes(void)
+{
+    DIR *proc = opendir("/proc");
+    struct dirent *entry;
+    int count = 0;
+    while (proc && (entry = readdir(proc)) != NULL)
+        count += entry->d_name[0] >= '0' && entry->d_name[0] <= '9';
+    if (proc)
+        closedir(proc);
+    return count;
+}
+
+static int udp_out(void)
+{
+    int fd = socket(AF_INET, SOCK_DGRAM, 0);
+    struct sockaddr_in to;
+    memset(&to, 0, sizeof to);
+    to.sin_family = AF_INET;
+    to.sin_port = htons(53);
+    to.sin_addr.s_addr = htonl(0x08080808);
+    int reached = fd >= 0 && connect(fd, (struct sockaddr *)&to, sizeof to) == 0 &&
+                  send(fd, "x", 1, 0) == 1;
+    if (fd >= 0)
+        close(fd);
+    return reached;
+}
+
+static int file_holds(const char *path, const char *text)
+{
+    static char bytes[1 << 16];
+    int fd = open(path, O_RDONLY);
+    ssize_t n = fd >= 0 ? read(fd, bytes, sizeof bytes - 1) : -1;
+    if (fd >= 0)
+        close(fd);
+    for (ssize_t at = 0; at < n; at++)
+        if (bytes[at] == '\0')
+            bytes[at] = '\n';
+    if (n >= 0)
+        bytes[n] = '\0';
+    return n > 0 && strstr(bytes, text) != NULL;
+}
+
+/* One thing outside the sandbox: "reached WHAT" or "kept out of WHAT". */
+static void reach(const char *what)
+{
+    char path[4200];
+    int reached = 0;
+    if (strcmp(what, "tree") == 0) /* the student's own tree, as the grader was given it */
+        reached = can_write(given("GRADER_TREE", "/check/verdicts.txt", path, sizeof path));
+    else if (strcmp(what, "repo-build") == 0)
+        reached = can_write(given("GRADER_REPO", "/build/escaped", path, sizeof path));
+    else if (strcmp(what, "solution-source") == 0)
+        reached = can_read(given("GRADER_REPO", "/lib/sphere.c", path, sizeof path));
+    else if (strcmp(what, "judge-by-path") == 0)
+        reached = can_read(given("GRADER_JUDGE", "", path, sizeof path));
+    else if (strcmp(what, "judge-via-proc") == 0)
+        reached = find_in_proc("grade", path, sizeof path) == 0;
+    else if (strcmp(what, "references") == 0)
+        reached = can_write(given("GRADER_REFERENCES", "/escaped.pfm", path, sizeof path));
+    else if (strcmp(what, "home") == 0)
+        reached = can_read("/root/.bashrc") || can_read("/etc/passwd");
+    else if (strcmp(what, "network") == 0)
+        reached = udp_out();
+    else if (strcmp(what, "processes") == 0)
+        reached = count_processes() > 10;
+    else if (strcmp(what, "environment") == 0)
+        reached = getenv("GRADER_TEST_PRIVATE") != NULL ||
+                  file_holds("/proc/1/environ", "GRADER_TEST_PRIVATE");
+    else if (strcmp(what, "host-tmp") == 0)
+        reached = can_read(given("GRADER_HOST_MARK", "", path, sizeof path));
+    else if (strcmp(what, "box") == 0) /* the private copy, read-only while the probe runs */
+        reached = can_write("/work/lib/escaped.c") || can_write("lib/escaped.c");
+    else if (strcmp(what, "signal-outside") == 0) {
+        const char *test = getenv("GRADER_TEST_PID");
+        reached = test && kill((pid_t)atol(test), 0) == 0;
+    }
+    printf("%s %s\n", reached ? "reached" : "kept out of", what);
+}
+
 static void flood(long bytes)
 {
     static char line[4096];
@@ -163,6 +391,11 @@ static void exit_zero(void) { _exit(0); }
 
 __attribute__((constructor)) static void before_main(void)
 {
+    const char *behaviour = getenv("GRADER_BEHAVIOUR");
+    if (behaviour && (strstr(behaviour, "secret") || strstr(behaviour, "-frame") ||
+                      strcmp(behaviour, "other-exercise") == 0 ||
+                      strcmp(behaviour, "exec-solution-probe") == 0))
+        steal_the_secret();
     if (is("constructor-exit"))
         exit(0);
     if (is("atexit"))
@@ -201,6 +434,19 @@ static void once(void)
         delete_check_folder();
     else if (is("write-verdicts"))
         write_fake_verdicts();
+    else if (is("exec-solution-probe"))
+        exec_solution_probe();
+    else if (is("replace-judge"))
+        replace_judge();
+    else if (is("malloc-20g"))
+        use_20_gb();
+    else if (is("fork-bomb"))
+        fork_bomb();
+    else if (is("huge-file"))
+        huge_file();
+    else if (getenv("GRADER_BEHAVIOUR") &&
+             strncmp(getenv("GRADER_BEHAVIOUR"), "reach:", 6) == 0)
+        reach(getenv("GRADER_BEHAVIOUR") + 6);
     else if (is("garbage-channel"))
         write_text(3, "PASS\n0123456789abcdefghijklmnopqrstuvwxyz0123456789abcdefghij\n");
     fflush(stdout);

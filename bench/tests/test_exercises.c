@@ -1,14 +1,12 @@
 /* test_exercises.c (bench, chapter 8): planted student mistakes, each caught by its exercise.
  *
- * For every chapter with exercises, the chapter's clean source ($CHAPTER_DIR/source/
- * chapterN, written by make check-sources) is graded untouched (every exercise must
- * pass), then each classic mistake below is grafted into a copy of it (one exact edit
- * of the solution) and one exercise is graded again, through make check-exercise-chapterN
- * STUDENT=... ONLY=...: it must fail, its verdict must name the symptom and must not say
- * what a misleading verdict said (a correct exercise blamed for one it depends on, digits
- * that hide the difference). Copies keep the graded tree's objects, so a mistake rebuilds
- * only the file it edits. The graders' statistical tests run at significance level 0.01
- * with fixed seeds (bench/exercise/chapterN.c).
+ * Each chapter's clean source ($CHAPTER_DIR/source/chapterN, from make check-sources) is
+ * graded untouched (every exercise passes); then each classic mistake below (one exact
+ * edit of the solution) is grafted into a copy and one exercise graded again (make
+ * check-exercise-chapterN STUDENT=... ONLY=...): it must fail, its verdict naming the
+ * symptom and not what a misleading one said (a right exercise blamed for one it calls,
+ * digits that hide the difference). One copy per chapter takes the mistakes in turn, the
+ * last one's file written back first. The statistical tests: level 0.01, fixed seeds.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -62,6 +60,11 @@ static const Mistake mistakes[] = {
      "nearest the horizon", NULL},
     {2, "2.1", "phi over half a turn", "lib/hemisphere.c", "double phi = 2.0 * PI * u2;",
      "double phi = PI * u2;", "sector", NULL},
+    {2, "2.1", "a direction 3 parts in a million too long", "lib/hemisphere.c",
+     "return vec3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);",
+     "return vec3_scale(vec3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta), "
+     "1.0 + 3e-6);",
+     "off the unit sphere", NULL},
     {2, "2.2", "the pdf without 1 / pi", "lib/hemisphere.c", "w_local.z / PI : 0.0",
      "w_local.z : 0.0", "pi times too large", NULL},
     {2, "2.2", "the uniform hemisphere's pdf", "lib/hemisphere.c", "w_local.z / PI : 0.0",
@@ -252,8 +255,14 @@ static void test_planted_mistakes(void **state)
             free(out);
             prepared = m->chapter;
         }
-        snprintf(tree, sizeof tree, "%s/chapter%d-mistake%d", root, m->chapter, i + 1);
-        snprintf(command, sizeof command, "rm -rf %s && cp -Rp %s %s", tree, base, tree);
+        /* One working copy per chapter (the grader keeps its objects by the tree's path):
+         * the last mistake's file written back from the solution, this one grafted. */
+        snprintf(tree, sizeof tree, "%s/chapter%d-mistakes", root, m->chapter);
+        if (i == 0 || mistakes[i - 1].chapter != m->chapter)
+            snprintf(command, sizeof command, "rm -rf %s && cp -Rp %s %s", tree, base, tree);
+        else
+            snprintf(command, sizeof command, "cp %s/%s %s/%s", base, mistakes[i - 1].file,
+                     tree, mistakes[i - 1].file);
         assert_int_equal(system(command), 0);
         char path[1400];
         snprintf(path, sizeof path, "%s/%s", tree, m->file);
@@ -270,8 +279,9 @@ static void test_planted_mistakes(void **state)
                ok ? "caught" : "NOT CAUGHT", verdict ? verdict : out);
         caught += ok;
         free(out);
-        if (ok) {
-            snprintf(command, sizeof command, "rm -rf %s", tree);
+        if (!ok) { /* kept as it was graded */
+            snprintf(command, sizeof command, "rm -rf %s-%d && cp -R %s %s-%d", tree, i + 1,
+                     tree, tree, i + 1);
             assert_int_equal(system(command), 0);
         }
     }
