@@ -114,8 +114,8 @@ $(DEPS_OK):
 # lib/ files, the new ones first, then the lines it changes in earlier ones; each group as
 # chapter 1 reads, from what the program calls to what that rests on (the estimator,
 # Whitted's, and the optics it uses; one sample and the loop over the image; the scene; the
-# camera, the materials and the shapes; the tree; rays and the offsets that keep them off
-# their surfaces; vectors), then by name, a header before its source.
+# camera, the materials and the shapes; chapter 2's tree; rays and the offsets that keep
+# them off their surfaces; vectors), then by name, a header before its source.
 READING_ORDER := whitted mirror snell schlick render scene camera material sphere triangle bvh ray vec
 
 # $(1): the chapter. Tests of chapter K are built in chapter K and in the final chapter,

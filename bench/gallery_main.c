@@ -94,7 +94,7 @@ static const GalleryChapter CHAPTERS[] = {
      "ch08_error_plot chapter=7&b.chapter=8&fairness=time"},
     {9, "Fast",
      "The same images, faster: how many rays a second one core traces when every ray tests "
-     "every primitive, with chapter 1's binary tree of double boxes, and with a tree of four "
+     "every primitive, with chapter 2's binary tree of double boxes, and with a tree of four "
      "float boxes a node, rounded outward so that it never loses a hit; then on every core. "
      "Each stage must render the same image bit for bit. On the room a tree buys little (40 "
      "primitives); with a knot of 200,000 triangles it is everything.",

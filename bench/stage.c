@@ -8,7 +8,7 @@
 
 const Stage QUERY_STAGES[QUERY_STAGE_COUNT] = {
     {"every primitive", QUERY_EVERY_PRIMITIVE, 1},
-    {"chapter 1's binary tree", QUERY_BINARY_TREE, 1},
+    {"chapter 2's binary tree", QUERY_BINARY_TREE, 1},
     {"the four-wide float tree", QUERY_WIDE_TREE, 1},
 };
 

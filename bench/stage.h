@@ -1,6 +1,6 @@
 /* stage.h (bench, chapter 9): one stage of chapter 9's speed measurement.
  *
- * A stage is a way of answering the ray queries (every primitive, chapter 1's tree, the
+ * A stage is a way of answering the ray queries (every primitive, chapter 2's tree, the
  * four-wide tree) on a number of threads. It renders the same image again and again
  * until it has used `seconds` of processor time and of wall time, so that a fast stage
  * is timed over long enough to be measured; rays per CPU second then compare the ways
@@ -28,7 +28,7 @@ typedef struct {
 } StageResult;
 
 /* The stages of querying that chapter 9 compares, on one thread: every primitive tested,
- * chapter 1's binary tree, the four-wide tree (in that order). */
+ * chapter 2's binary tree, the four-wide tree (in that order). */
 enum {
     QUERY_STAGE_COUNT = 3
 };

@@ -1,10 +1,10 @@
 /* ch09_fast.c (chapter 9): what makes a ray tracer fast (beyond the report; its
  * "multithreading" future work), each stage measured.
  *
- * New concepts (lib/): wide_bvh (chapter 1's tree made four-wide: four float boxes
+ * New concepts (lib/): wide_bvh (chapter 2's tree made four-wide: four float boxes
  * tested at once, rounded outward in the tree's own frame), and the scene's choice of
  * how its queries find a hit (scene.h), so that the same renders can be timed with
- * every primitive tested, with chapter 1's tree and with the four-wide one.
+ * every primitive tested, with chapter 2's tree and with the four-wide one.
  *
  * The experiment: Table 1's first row's estimator (1 shadow ray, roulette alpha 0.25)
  * on the room and on the room with a torus knot of 2 x 500 x 200 triangles
@@ -74,7 +74,7 @@ int main(int argc, char **argv)
 {
     ProgramInfo info = {
         "Chapter 9, what makes it fast: rays per CPU second with every primitive tested,\n"
-        "chapter 1's tree and the four-wide tree, then on every core.",
+        "chapter 2's tree and the four-wide tree, then on every core.",
         FLAGS_COMMON | FLAG_SPP,
         {.scene = "scenes/room.scene",
          .size = 200,

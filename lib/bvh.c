@@ -1,4 +1,4 @@
-/* bvh.c (chapter 1): building and traversing the hierarchy. See bvh.h. */
+/* bvh.c (chapter 2): building and traversing the hierarchy. See bvh.h. */
 #include "bvh.h"
 
 #include <stdlib.h>

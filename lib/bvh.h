@@ -1,4 +1,4 @@
-/* bvh.h (chapter 1): a bounding volume hierarchy, so a ray tests a few primitives, not all.
+/* bvh.h (chapter 2): a bounding volume hierarchy, so a ray tests a few primitives, not all.
  *
  * A binary tree of boxes, each holding its node's primitives, split in two by the surface
  * area heuristic. A ray visits a node only if it meets its box, the nearer child first,

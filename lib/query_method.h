@@ -1,9 +1,9 @@
 /* query_method.h (chapter 9): how the scene's ray queries find their hit.
  *
  * Chapter 9 measures each way on the same renders (scene.h, Scene.query): every
- * primitive tested, chapter 1's binary tree (bvh.h), or the same tree made four-wide
+ * primitive tested, chapter 2's binary tree (bvh.h), or the same tree made four-wide
  * (wide_bvh.h), the default from this chapter on. scene.c calls these in place of
- * chapter 1's tree alone; each answers every query as testing every primitive does.
+ * chapter 2's tree alone; each answers every query as testing every primitive does.
  */
 #ifndef QUERY_METHOD_H
 #define QUERY_METHOD_H

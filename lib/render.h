@@ -24,8 +24,7 @@ typedef struct {
 } RayCounts;
 
 #if CHAPTER >= 2
-/* Sample s of pixel p draws its random numbers from its own generator,
- * rng_for_sample(seed, p, s). */
+/* rng: the sample's own generator, rng_for_sample(seed, pixel, sample). */
 typedef Vec3 (*Estimator)(const Scene *scene, Ray ray, Rng *rng, const void *settings,
                           RayCounts *counts);
 #else

@@ -6,12 +6,8 @@
 
 #if CHAPTER >= 9
 #include "query_method.h" /* the queries as scene->query says */
-#else
-/* The queries go through the tree (bvh.h). */
-static int queries_prepare(Scene *scene)
-{
-    return bvh_build(&scene->bvh, scene_primitives(scene));
-}
+#elif CHAPTER >= 2
+static int queries_prepare(Scene *s) { return bvh_build(&s->bvh, scene_primitives(s)); }
 static void queries_free(Scene *scene) { bvh_free(&scene->bvh); }
 static int queries_nearest(const Scene *scene, Ray ray, double *tmax)
 {
@@ -20,6 +16,26 @@ static int queries_nearest(const Scene *scene, Ray ray, double *tmax)
 static int queries_any(const Scene *scene, Ray ray, double tmax)
 {
     return bvh_occluded(&scene->bvh, scene_primitives(scene), ray, tmax);
+}
+#else
+/* The queries test every primitive, in increasing number (scene.h): nothing is built. */
+static int queries_prepare(Scene *scene) { return 0; }
+static void queries_free(Scene *scene) {}
+static int queries_nearest(const Scene *scene, Ray ray, double *tmax)
+{
+    int nearest = -1, n = scene->triangle_count;
+    for (int i = 0; i < n + scene->sphere_count; i++) {
+        double t = i < n ? triangle_intersect(&scene->triangles[i], ray, 0.0, *tmax)
+                         : sphere_intersect(&scene->spheres[i - n], ray, 0.0, *tmax);
+        if (t < *tmax)
+            nearest = i;
+        *tmax = min2(t, *tmax);
+    }
+    return nearest;
+}
+static int queries_any(const Scene *scene, Ray ray, double tmax)
+{
+    return queries_nearest(scene, ray, &tmax) >= 0;
 }
 #endif
 

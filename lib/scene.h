@@ -2,14 +2,15 @@
  *
  * A scene is flat arrays of materials, triangles, spheres and point lights, with no
  * scene graph and no transforms: the scene file's quads, boxes and tetrahedra are split
- * into triangles when it is read. Add
- * the elements (scene_add_*), then call scene_prepare() once before the first query:
- * it builds the bounding volume hierarchy (bvh.h) through which every query goes.
+ * into triangles when it is read. Add the elements (scene_add_*), then call
+ * scene_prepare() once before the first query.
  */
 #ifndef SCENE_H
 #define SCENE_H
 
+#if CHAPTER >= 2
 #include "bvh.h"
+#endif
 #if CHAPTER >= 9
 #include "wide_bvh.h"
 
@@ -40,7 +41,9 @@ typedef struct {
     int sphere_count;
     PointLight *point_lights;
     int point_light_count;
+#if CHAPTER >= 2
     Bvh bvh; /* the tree over all triangles and spheres, built by scene_prepare() */
+#endif
 #if CHAPTER >= 3
     int *light_triangles;     /* indices of the emitting triangles */
     double *light_cumulative; /* running sum of their areas, for choosing one by area */
@@ -63,13 +66,14 @@ typedef struct {
     double scale; /* the magnitude of the surface's numbers the point came from (ray.h) */
 } Hit;
 
+#if CHAPTER >= 2
 /* The primitives the hierarchy is built over (bvh.h). */
 static inline BvhPrimitives scene_primitives(const Scene *scene)
 {
-    BvhPrimitives p = {scene->triangles, scene->triangle_count, scene->spheres,
-                       scene->sphere_count};
-    return p;
+    return (BvhPrimitives){scene->triangles, scene->triangle_count, scene->spheres,
+                           scene->sphere_count};
 }
+#endif
 
 void scene_init(Scene *scene);
 void scene_free(Scene *scene);
@@ -83,7 +87,9 @@ int scene_add_point_light(Scene *scene, PointLight light);
 /* Build what the queries need. Returns 0, or -1 when memory runs out. */
 int scene_prepare(Scene *scene);
 
-/* The nearest hit with t in (0, tmax). Returns 1 and fills *hit, or 0 for a miss. */
+/* The nearest hit with t in (0, tmax). Returns 1 and fills *hit, or 0 for a miss. Of
+ * primitives hit at the same t, the lower number wins (the triangles are numbered first,
+ * then the spheres). */
 int scene_intersect(const Scene *scene, Ray ray, double tmax, Hit *hit);
 
 /* Whether anything blocks the segment from surface point `from` (normal from_normal)

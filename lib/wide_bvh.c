@@ -1,4 +1,4 @@
-/* wide_bvh.c (chapter 9): making chapter 1's tree four-wide, and traversing it. See
+/* wide_bvh.c (chapter 9): making chapter 2's tree four-wide, and traversing it. See
  * wide_bvh.h. */
 #include "wide_bvh.h"
 
@@ -188,7 +188,7 @@ static void children_entry(const WideBvhNode *node, const BoxRay *r, float limit
         entry[k] = near[k] <= far[k] ? near[k] : INFINITY;
 }
 
-/* The same test in double for one leaf's box, as chapter 1's tree tests its boxes. */
+/* The same test in double for one leaf's box, as chapter 2's tree tests its boxes. */
 static int leaf_hit(const WideBvhLeaf *leaf, const BoxRay *r, double tmax)
 {
     double near = 0.0, far = tmax;

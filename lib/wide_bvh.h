@@ -1,4 +1,4 @@
-/* wide_bvh.h (chapter 9): chapter 1's tree made four-wide, with float boxes.
+/* wide_bvh.h (chapter 9): chapter 2's tree made four-wide, with float boxes.
  *
  * Every node of the binary tree (bvh.h) adopts grandchildren until it has four
  * children, so a ray tests four boxes in one pass of four-wide float arithmetic and

@@ -1,4 +1,4 @@
-/* test_bvh.c (chapter 1): Tests of the bounding volume hierarchy (lib/bvh.c).
+/* test_bvh.c (chapter 2): Tests of the bounding volume hierarchy (lib/bvh.c).
  *
  * The hierarchy may change only how fast the nearest hit is found, never which hit:
  * for every ray, the BVH's nearest t and primitive must equal exactly what testing every
@@ -47,7 +47,7 @@ static int brute_force(BvhPrimitives p, Ray ray, double *tmax)
     return nearest;
 }
 
-/* The trees under test: chapter 1's, and from chapter 9 on the same made four-wide. */
+/* The trees under test: chapter 2's, and from chapter 9 on the same made four-wide. */
 typedef struct {
     const char *name;
     int (*intersect)(const Scene *scene, Ray ray, double *tmax);

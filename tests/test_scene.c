@@ -1,11 +1,11 @@
 /* test_scene.c (chapter 1): ray queries against a whole scene (scene.h, chapter 1).
  *
- * Scenes are built in code with scene_add_*. Beyond "the nearest hit wins" this is
- * where rays start on surfaces, so it is where the acne and near-hit cases live:
- * a ray re-launched from a hit point with ray_spawn must never find the surface it
- * left at t ~ 0, must still find a surface a hair away, and a shadow ray between two
- * surface points must not be blocked by either end's own surface. All of it at scene
- * scales from 1e-45 to 1e45.
+ * Scenes are built in code with scene_add_*. Beyond "the nearest hit wins" (and of two
+ * at the same t, the lower-numbered) this is where rays start on surfaces, so it is where the
+ * acne and near-hit cases live: a ray re-launched from a hit point with ray_spawn must never
+ * find the surface it left at t ~ 0, must still find a surface a hair away, and a shadow ray
+ * between two surface points must not be blocked by either end's own surface. All of it at
+ * scene scales from 1e-45 to 1e45.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -113,6 +113,39 @@ static void test_nearest_hit(void **state)
     Ray away = {vec3(0, 0, 0), vec3(0, 0, -1)};
     assert_false(scene_intersect(&scene, away, INFINITY, &hit));
     scene_free(&scene);
+}
+
+/* Two copies of one square in the plane z = 0, of two materials: every ray down onto it
+ * hits both at the same t, and the lower-numbered triangle wins, whichever copy was added
+ * first. */
+static void test_tie_goes_to_the_lower_number(void **state)
+{
+    for (int order = 0; order < 2; order++) {
+        Scene scene;
+        scene_init(&scene);
+        int grey = add_material(&scene, MATERIAL_LAMBERT, 0);
+        int lamp = add_material(&scene, MATERIAL_LIGHT, 1);
+        int first = order == 0 ? grey : lamp, second = order == 0 ? lamp : grey;
+        add_square(&scene, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), 1, first);
+        add_square(&scene, vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), 1, second);
+        assert_int_equal(scene_prepare(&scene), 0);
+        for (int i = 0; i < 1000; i++) {
+            TestRandom rng = test_random(31, (uint64_t)order, (uint64_t)i);
+            Vec3 target =
+                vec3(1.8 * test_uniform(&rng) - 0.9, 1.8 * test_uniform(&rng) - 0.9, 0);
+            Vec3 origin =
+                vec3_add(target, vec3(test_uniform(&rng) - 0.5, test_uniform(&rng) - 0.5,
+                                      1 + test_uniform(&rng)));
+            Ray ray = {origin, vec3_normalize(vec3_sub(target, origin))};
+            Hit hit;
+            assert_true(scene_intersect(&scene, ray, INFINITY, &hit));
+            if (hit.triangle > 1 || hit.material != first)
+                fail_msg(
+                    "order %d, ray %d: triangle %d (material %d) hit, not the first copy's",
+                    order, i, hit.triangle, hit.material);
+        }
+        scene_free(&scene);
+    }
 }
 
 /* From inside a sphere the hit is its far side and the normal still points out,
@@ -619,6 +652,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_nearest_hit),
+        cmocka_unit_test(test_tie_goes_to_the_lower_number),
         cmocka_unit_test(test_hit_from_inside_sphere),
         cmocka_unit_test(test_no_acne_on_triangles),
         cmocka_unit_test(test_no_acne_on_spheres),

@@ -1,6 +1,6 @@
 /* test_wide_bvh.c (chapter 9): Tests of the four-wide tree (lib/wide_bvh.c).
  *
- * Which hits it finds is checked with chapter 1's tree, ray by ray, against testing
+ * Which hits it finds is checked with chapter 2's tree, ray by ray, against testing
  * every primitive (tests/test_bvh.c runs its rays through both trees from chapter 9
  * on). Here: its float boxes enclose what they bound, rounded outward in the tree's
  * frame (one rounded to nearest instead encloses its primitive only about half the

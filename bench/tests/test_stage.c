@@ -3,7 +3,7 @@
  *
  * Two triangles (a square, among 100 small ones elsewhere) are moved far away after the
  * scene's structures are built: testing every primitive sees them where they are now;
- * chapter 1's tree, whose boxes are where they were, turns the ray to their new place
+ * chapter 2's tree, whose boxes are where they were, turns the ray to their new place
  * away and finds nothing at the old one; the four-wide tree keeps copies of its
  * triangles and sees them where they were. A render of each place through stage_measure
  * shows which answered.
