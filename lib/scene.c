@@ -7,7 +7,11 @@
 #if CHAPTER >= 9
 #include "query_method.h" /* the queries as scene->query says */
 #elif CHAPTER >= 2
-static int queries_prepare(Scene *s) { return bvh_build(&s->bvh, scene_primitives(s)); }
+/* The queries go through the tree (bvh.h), built over every primitive. */
+static int queries_prepare(Scene *scene)
+{
+    return bvh_build(&scene->bvh, scene_primitives(scene));
+}
 static void queries_free(Scene *scene) { bvh_free(&scene->bvh); }
 static int queries_nearest(const Scene *scene, Ray ray, double *tmax)
 {
@@ -27,9 +31,10 @@ static int queries_nearest(const Scene *scene, Ray ray, double *tmax)
     for (int i = 0; i < n + scene->sphere_count; i++) {
         double t = i < n ? triangle_intersect(&scene->triangles[i], ray, 0.0, *tmax)
                          : sphere_intersect(&scene->spheres[i - n], ray, 0.0, *tmax);
-        if (t < *tmax)
+        if (t < *tmax) {
+            *tmax = t;
             nearest = i;
-        *tmax = min2(t, *tmax);
+        }
     }
     return nearest;
 }

@@ -38,10 +38,13 @@ static inline Vec3 vec3_add_scaled(Vec3 a, Vec3 b, double s)
 {
     return vec3(a.x + s * b.x, a.y + s * b.y, a.z + s * b.z);
 }
-/* Larger and smaller of two numbers, written out: fmax() and fmin() must honour NaN
- * rules and are library calls in the renderer's inner loops. */
+/* The larger of two numbers, written out: fmax() must honour NaN rules and is a library
+ * call in the renderer's inner loops. */
 static inline double max2(double a, double b) { return a > b ? a : b; }
+#if CHAPTER >= 2
+/* The smaller of two numbers, written out as max2 is. */
 static inline double min2(double a, double b) { return a < b ? a : b; }
+#endif
 static inline double vec3_max_abs(Vec3 a)
 {
     return max2(fabs(a.x), max2(fabs(a.y), fabs(a.z)));
