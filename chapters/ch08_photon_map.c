@@ -285,9 +285,8 @@ int main(int argc, char **argv)
 {
     ProgramInfo info = {
         "Chapter 8, caustics from a photon map: chapter 7's final estimator against the same\n"
-        "estimator with progressive photon-mapped caustics at equal time, and their error "
-        "against\n"
-        "time. Both use roulette with bounded weights unless --rr is given.",
+        "estimator with progressive photon-mapped caustics at equal time, and their error\n"
+        "against time. Both use roulette with bounded weights unless --rr is given.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_RR | FLAG_DEPTH | FLAG_FRESNEL |
             FLAG_REFERENCE_SPP,
         {.scene = "scenes/room.scene",
