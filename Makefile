@@ -28,7 +28,7 @@
 #                         line of its lib/ in listings (book-test: in headless Chromium)
 #   make lab              the lab: build/lab/index.html, every chapter live in the browser
 #                         (docs/lab.md); lab-test (in headless Chromium), lab-bench,
-#                         lab-references (the page's references, from the cache)
+#                         lab-references (its references also at the figures' width)
 #   make clean
 #
 # The lesson and the bench. lib/ is the lesson: what the chapters teach. bench/ measures

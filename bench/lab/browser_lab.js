@@ -24,7 +24,10 @@
  *      error, a refused address) in OUT_DIR, for a person to look at;
  *   7. the address, the controls and the limits (browser_address.js): the command line's
  *      words for the same values, every range's ends, hostile addresses, later changes
- *      and history, the inspector's and the editor's limits, equal time, the book's link.
+ *      and history, the inspector's and the editor's limits, equal time, the book's link;
+ *   8. (first, on the page as make lab built it) every comparison the page offers and every
+ *      chapter's own render show each panel's error against a reference, and a panel
+ *      with no reference names the biases its standard error leaves out.
  * The agreement test (after Mitsuba's render tests): where two values differ, z = |a - b|
  * / (sqrt(2) se), se the page's per-pixel standard error (the same estimator and samples
  * on both sides), must not reject at the Sidak-corrected level 0.01 over all values.
@@ -396,7 +399,14 @@ async function checkPageReferences(browser, labUrl, chapters) {
         return ["chapter=" + n, "chapter " + n + "'s own render"];
     }));
     for (const [fragment, name] of cases) {
-        const panels = await panelsShown(fragment);
+        let panels = await panelsShown(fragment);
+        if (presets.some(function (p) { return p[0] === fragment; })) { /* a screenshot after two steps */
+            await browser.until("labTest.state().panels.every(p => p.error || p.done >= 2)", 300, fragment + "'s second step");
+            await browser.evaluate("new Promise(r => setTimeout(r, 600))");
+            panels = (await browser.evaluate("labTest.state()")).panels;
+            await box(browser, "#controls");
+            await browser.screenshot(path.join(outDir, "lab_preset" + presets.findIndex(function (p) { return p[0] === fragment; }) + ".png"));
+        }
         const without = panels.map(function (p, i) { return p.reference && / against the reference \(/.test(p.stats) ? "" : "AB"[i]; })
             .filter(function (n) { return n; });
         report(panels.length > 0 && without.length === 0, "'" + name + "' (#" + fragment + "): " + (without.length
@@ -419,11 +429,11 @@ async function checkPageReferences(browser, labUrl, chapters) {
                "no reference at #" + c.fragment + ": the panel names its biases (" + c.has.join(", ") + (c.not.length ? "; not " + c.not.join(", ") : "") + "): '" + line + "'");
     }
     /* An edited scene: its hash has no reference. */
-    await panelsShown("chapter=8&passes=2");
+    await panelsShown("chapter=8&passes=3");
     const room = await browser.evaluate("LAB_SCENES[\"room.scene\"]");
     const refused = await browser.evaluate("labTest.editScene(\"room.scene\", " + JSON.stringify(room + "# edited\n") + ")", 60);
-    await browser.until("!labTest.state().restarting && labTest.state().panels.every(p => p.error || p.done > 0)", 300,
-                        "the edited scene's first pass");
+    await browser.until("!labTest.state().restarting && labTest.state().panels.every(p => p.error || p.complete)", 300,
+                        "the edited scene's render");
     await browser.evaluate("new Promise(r => setTimeout(r, 600))");
     const edited = (await browser.evaluate("labTest.state()")).panels[0], line = edited.stats.split("\n")[1] || "";
     report(!refused && !edited.reference && line.indexOf(LEAVES_OUT) >= 0 && line.indexOf("photon map") >= 0,
