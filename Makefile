@@ -505,9 +505,9 @@ $(LAB_REFERENCE): $(BUILD)/chapter$(FINAL)/bench/lab/lab_reference.o $(BUILD)/ch
 # 8 (chapters 2-4 and 1 against 30 shadow rays, Schlick's; Schlick against exact Fresnel,
 # the exact one) and 64 (6-8), chapter 5's scene at depth 8, with the samples the chapter
 # programs give them, so that what `make figures` cached is found (a reference not cached
-# is rendered). `make lab` gets them at the page's width, LAB_WIDTH (tens of seconds,
-# once: the reference cache keeps them); lab-references also at the widths LAB_SIZES
-# (default 256 and the figures' width, 800, or 200 with QUICK=1; minutes at 800 pixels).
+# is rendered). `make lab` gets them at the page's width, LAB_WIDTH (rendered once: the
+# reference cache keeps them); lab-references also at the widths LAB_SIZES (default 256
+# and the figures' width, 800, or 200 with QUICK=1; minutes at 800 pixels).
 LAB_WIDTH := 256
 LAB_SIZES ?= $(LAB_WIDTH) $(if $(QUICK),200,800)
 LAB_REFERENCE_SETTINGS := "--depth 8 --reference-spp 64" "--depth 8 --fresnel exact --reference-spp 128" \
