@@ -347,7 +347,8 @@ function drawPlot() {
     const series = activePanels().filter(function (p) { return p.render; }).map(function (panel) {
         const s = panel.render.info.settings;
         return {label: panel.name.toUpperCase() + ": " + settingsText(panel).replace(/ program=\S+/, "") +
-                       (panel.render.reference ? " (RMSE)" : " (standard error)"),
+                       (panel.render.reference ? " (RMSE)" : panel.render.info.biases.length
+                                                   ? " (standard error, bias left out)" : " (standard error)"),
                 colour: PANEL_COLOURS[panel.name],
                 points: panel.render.history.map(function (h) { return [h[0], h[2]]; })};
     });
