@@ -306,13 +306,13 @@ function currentError(panel) {
         const error = render.referenceError(), r = render.reference;
         return {value: error.rmse, rmse: error.rmse, relMse: error.relMse, text: "RMSE " + number(error.rmse, 4) + ", relative MSE " +
                 number(error.relMse, 4) + " against the reference (depth " + r.depth + ", " +
-                (r.fresnel === "exact" ? "exact Fresnel" : "Schlick") + ", " + r.spp + " spp)"};
+                (r.fresnel === "exact" ? "exact Fresnel" : "Schlick's Fresnel") + ", " + r.spp + " spp)"};
     }
     const biases = render.info.biases, leftOut = biases.length
         ? "; it leaves out the estimator's bias: " + biases.join("; ") : "";
     if (render.info.settings.chapter === 1)
-        return {value: NaN, text: "Whitted's image is deterministic: no noise to measure, its error is all bias" +
-                                  (biases.length ? ": " + biases.join("; ") : "")};
+        return {value: NaN, text: "Whitted's image is deterministic: no noise to measure; its error is all bias" +
+                                  (biases.length ? ": it leaves out " + biases.join("; ") : "")};
     const se = render.standardError();
     return {value: se, text: (isNaN(se) ? "error: waiting for two samples in every pixel"
                                         : "standard error " + number(se, 4) + " from the samples (no reference for these settings)") + leftOut};
