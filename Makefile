@@ -503,9 +503,9 @@ $(LAB_REFERENCE): $(BUILD)/chapter$(FINAL)/bench/lab/lab_reference.o $(BUILD)/ch
 # References for the page (bench/lab/lab_reference.c), one for each comparison the page
 # offers (lab.js's PRESETS) and each chapter's own render (docs/lab.md): the room at depth
 # 8 (chapters 2-4 and 1 against 30 shadow rays, Schlick's; Schlick against exact Fresnel,
-# the exact one) and 64 (6-8), chapter 5's scene at depth 8, with the samples the chapter
-# programs give them, so that what `make figures` cached is found (a reference not cached
-# is rendered). `make lab` gets them at the page's width, LAB_WIDTH (rendered once: the
+# the exact one) and 64 (6-8), with the samples the chapter programs give them, so that
+# what `make figures` cached is found (a reference not cached is rendered), and chapter 5's
+# scene at depth 8 as the scene has it (chapter 5's figure sets a roughness: not shared). `make lab` gets them at the page's width, LAB_WIDTH (rendered once: the
 # reference cache keeps them); lab-references also at the widths LAB_SIZES (default 256
 # and the figures' width, 800, or 200 with QUICK=1; minutes at 800 pixels).
 LAB_WIDTH := 256
