@@ -28,7 +28,7 @@
 #                         line of its lib/ in listings (book-test: in headless Chromium)
 #   make lab              the lab: build/lab/index.html, every chapter live in the browser
 #                         (docs/lab.md); lab-test (in headless Chromium), lab-bench,
-#                         lab-references (the page's references, from the cache)
+#                         lab-references (its references also at the figures' width)
 #   make clean
 #
 # The lesson and the bench. lib/ is the lesson: what the chapters teach. bench/ measures
@@ -491,8 +491,7 @@ $(LAB)/%: bench/lab/%
 	@mkdir -p $(@D)
 	cp $< $@
 
-lab: $(LAB_PAGE) $(LAB)/lab_data.js $(LAB)/lab_worker.js $(LAB_NATIVE)
-	@mkdir -p $(LAB)/references
+lab: $(LAB_PAGE) $(LAB)/lab_data.js $(LAB)/lab_worker.js $(LAB_NATIVE) $(LAB)/references/settings.txt
 	@{ printf 'var LAB_REFERENCES = ['; for f in $(LAB)/references/*-*.js; do \
 	      [ -e "$$f" ] && printf '"%s",' "$$(basename $$f)"; done; printf '];\n'; } \
 	    > $(LAB)/references/index.js
@@ -501,13 +500,26 @@ lab: $(LAB_PAGE) $(LAB)/lab_data.js $(LAB)/lab_worker.js $(LAB_NATIVE)
 $(LAB_REFERENCE): $(BUILD)/chapter$(FINAL)/bench/lab/lab_reference.o $(BUILD)/chapter$(FINAL)/libmc.a
 	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
 
-# References for the page (bench/lab/lab_reference.c): the room at depth 8 (chapters 2-5,
-# Schlick's and the exact Fresnel) and 64 (6-8), each at the widths LAB_SIZES, with the
-# samples the chapter programs give them, so that what `make figures` cached is found
-# (a reference not cached is rendered: minutes at 800 pixels).
-LAB_SIZES ?= 256 $(if $(QUICK),200,800)
+# References for the page (bench/lab/lab_reference.c), one for each comparison the page
+# offers (lab.js's PRESETS) and each chapter's own render (docs/lab.md): the room at depth
+# 8 (chapters 2-4 and 1 against 30 shadow rays, Schlick's; Schlick against exact Fresnel,
+# the exact one) and 64 (6-8), with the samples the chapter programs give them, so that
+# what `make figures` cached is found (a reference not cached is rendered), and chapter 5's
+# scene at depth 8 as the scene has it (chapter 5's figure sets a roughness: not shared). `make lab` gets them at the page's width, LAB_WIDTH (rendered once: the
+# reference cache keeps them); lab-references also at the widths LAB_SIZES (default 256
+# and the figures' width, 800, or 200 with QUICK=1; minutes at 800 pixels).
+LAB_WIDTH := 256
+LAB_SIZES ?= $(LAB_WIDTH) $(if $(QUICK),200,800)
 LAB_REFERENCE_SETTINGS := "--depth 8 --reference-spp 64" "--depth 8 --fresnel exact --reference-spp 128" \
-                          "--depth 64 --reference-spp 128"
+                          "--depth 64 --reference-spp 128" \
+                          "--scene scenes/oren_nayar.scene --depth 8 --reference-spp 128"
+# The settings rendered, as the stamp of what is there (the cache finds any rendered before).
+$(LAB)/references/settings.txt: $(LAB_REFERENCE) $(REFERENCE_BIN) $(wildcard scenes/*.scene) Makefile
+	@mkdir -p $(@D)
+	@for settings in $(LAB_REFERENCE_SETTINGS); do \
+	    $(LAB_REFERENCE) --quiet --size $(LAB_WIDTH) $$settings --out $(@D) || exit 1; \
+	done
+	@printf '%s\n' $(LAB_REFERENCE_SETTINGS) > $@.tmp && mv $@.tmp $@
 lab-references: $(LAB_REFERENCE) $(REFERENCE_BIN)
 	@for size in $(LAB_SIZES); do for settings in $(LAB_REFERENCE_SETTINGS); do \
 	    $(LAB_REFERENCE) --quiet --size $$size $$settings --out $(LAB)/references || exit 1; \

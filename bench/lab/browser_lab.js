@@ -24,7 +24,10 @@
  *      error, a refused address) in OUT_DIR, for a person to look at;
  *   7. the address, the controls and the limits (browser_address.js): the command line's
  *      words for the same values, every range's ends, hostile addresses, later changes
- *      and history, the inspector's and the editor's limits, equal time, the book's link.
+ *      and history, the inspector's and the editor's limits, equal time, the book's link;
+ *   8. (first, on the page as make lab built it) every comparison the page offers and every
+ *      chapter's own render show each panel's error against a reference, and a panel
+ *      with no reference names the biases its standard error leaves out.
  * The agreement test (after Mitsuba's render tests): where two values differ, z = |a - b|
  * / (sqrt(2) se), se the page's per-pixel standard error (the same estimator and samples
  * on both sides), must not reject at the Sidak-corrected level 0.01 over all values.
@@ -177,7 +180,8 @@ function program(number) {
 function lastChapter() {
     const data = fs.readFileSync(path.join(labDir, "lab_data.js"), "utf8");
     const all = Array.from(data.matchAll(/"number": (\d+), "program": "([^"]+)"/g));
-    return {number: Number(all[all.length - 1][1]), program: all[all.length - 1][2]};
+    return {number: Number(all[all.length - 1][1]), program: all[all.length - 1][2],
+            all: all.map(function (m) { return Number(m[1]); })};
 }
 
 /* The page's copy, with only its own files and references. */
@@ -377,12 +381,75 @@ async function screenshots(browser, url) {
     await browser.screenshot(path.join(outDir, "lab_two_panels.png"));
 }
 
+/* The page as `make lab` built it, with its references: every comparison the page offers
+ * and every chapter's own render (chapter 1's, deterministic, apart) has, in each panel,
+ * its error against a reference; a panel with none (a width with no reference, an edited
+ * scene) names its estimator's biases, which its standard error leaves out, and only
+ * those its settings have (lab_biases). */
+async function checkPageReferences(browser, labUrl, chapters) {
+    const panelsShown = async function (fragment) {
+        await browser.navigate(labUrl + "#" + fragment, 30);
+        await browser.until("labTest.state().panels.every(p => p.error || p.done > 0)", 300, fragment + "'s first step");
+        await browser.evaluate("new Promise(r => setTimeout(r, 600))"); /* the stats shown after it */
+        return (await browser.evaluate("labTest.state()")).panels;
+    };
+    await browser.navigate(labUrl + "#chapter=2&size=16", 30);
+    const presets = await browser.evaluate("labTest.presets()");
+    const cases = presets.concat(chapters.filter(function (n) { return n > 1; }).map(function (n) {
+        return ["chapter=" + n, "chapter " + n + "'s own render"];
+    }));
+    for (const [fragment, name] of cases) {
+        let panels = await panelsShown(fragment);
+        if (presets.some(function (p) { return p[0] === fragment; })) { /* a screenshot after two steps */
+            await browser.until("labTest.state().panels.every(p => p.error || p.done >= 2)", 300, fragment + "'s second step");
+            await browser.evaluate("new Promise(r => setTimeout(r, 600))");
+            panels = (await browser.evaluate("labTest.state()")).panels;
+            await box(browser, "#controls");
+            await browser.screenshot(path.join(outDir, "lab_preset" + presets.findIndex(function (p) { return p[0] === fragment; }) + ".png"));
+        }
+        const without = panels.map(function (p, i) { return p.reference && / against the reference \(/.test(p.stats) ? "" : "AB"[i]; })
+            .filter(function (n) { return n; });
+        report(panels.length > 0 && without.length === 0, "'" + name + "' (#" + fragment + "): " + (without.length
+            ? "no reference for panel " + without.join(" and ") + " after make lab: " + panels.map(function (p) { return p.error || p.stats.split("\n")[1]; }).join(" | ")
+            : "every panel's error against a reference: " + panels.map(function (p) { return p.stats.split("\n")[1]; }).join(" | ")));
+    }
+    const BIASED = [
+        {fragment: "chapter=8&size=64&passes=4", has: ["photon map", "longer than 64 segments", "Schlick"], not: []},
+        {fragment: "chapter=8&size=64&passes=4&fresnel=exact", has: ["photon map", "longer than 64 segments"], not: ["Schlick"]},
+        {fragment: "chapter=4&size=64&fresnel=schlick", has: ["Schlick", "longer than 8 segments"], not: ["photon map"]},
+        {fragment: "chapter=4&size=64&fresnel=exact", has: ["longer than 8 segments"], not: ["Schlick", "photon map"]},
+        {fragment: "chapter=1&size=64", has: ["all bias", "diffuse surfaces"], not: ["segments"]},
+    ];
+    const LEAVES_OUT = "it leaves out the estimator's bias: ";
+    for (const c of BIASED) {
+        const panel = (await panelsShown(c.fragment))[0], line = panel.stats.split("\n")[1] || "";
+        const named = c.has.every(function (w) { return line.indexOf(w) >= 0; }) &&
+                      !c.not.some(function (w) { return line.indexOf(w) >= 0; });
+        report(!panel.reference && (c.fragment.indexOf("chapter=1&") === 0 || line.indexOf(LEAVES_OUT) >= 0) && named,
+               "no reference at #" + c.fragment + ": the panel names its biases (" + c.has.join(", ") + (c.not.length ? "; not " + c.not.join(", ") : "") + "): '" + line + "'");
+    }
+    /* An edited scene: its hash has no reference. */
+    await panelsShown("chapter=8&passes=3");
+    const room = await browser.evaluate("LAB_SCENES[\"room.scene\"]");
+    const refused = await browser.evaluate("labTest.editScene(\"room.scene\", " + JSON.stringify(room + "# edited\n") + ")", 60);
+    await browser.until("!labTest.state().restarting && labTest.state().panels.every(p => p.error || p.complete)", 300,
+                        "the edited scene's render");
+    await browser.evaluate("new Promise(r => setTimeout(r, 600))");
+    const edited = (await browser.evaluate("labTest.state()")).panels[0], line = edited.stats.split("\n")[1] || "";
+    report(!refused && !edited.reference && line.indexOf(LEAVES_OUT) >= 0 && line.indexOf("photon map") >= 0,
+           "an edited scene (no reference) in chapter 8: '" + line + "'");
+    await box(browser, "#panel-a");
+    await browser.screenshot(path.join(outDir, "lab_no_reference.png"));
+}
+
 (async function main() {
     fs.mkdirSync(outDir, {recursive: true});
     const last = prepareNative();
     const browser = await Chromium.open(1400, 1400);
     const url = fileUrl(path.join(pageDir, "index.html"));
     try {
+        await checkPageReferences(browser, fileUrl(path.join(labDir, "index.html")),
+                                  lastChapter().all);
         await checkConsole(browser, url);
         await checkImages(browser);
         await checkRecords(browser);

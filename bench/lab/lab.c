@@ -655,6 +655,43 @@ const char *lab_settings(Lab *lab)
     return json->failed ? (fail(lab, "out of memory"), NULL) : json->text;
 }
 
+static int scene_has_glass(const Scene *scene)
+{
+    for (int i = 0; i < scene->material_count; i++)
+        if (scene->materials[i].kind == MATERIAL_GLASS)
+            return 1;
+    return 0;
+}
+
+const char *lab_biases(Lab *lab)
+{
+    if (!lab->configured)
+        return fail(lab, "not configured"), NULL;
+    const LabSettings *s = &lab->settings;
+    Json *json = &lab->json;
+    json_clear(json);
+    json_text(json, "[");
+    if (s->chapter == 1) {
+        json_string(json, "the light diffuse surfaces send each other (Whitted's ray tree "
+                          "follows mirrors and glass only)");
+    } else {
+        json_text(json, "\"the light of paths longer than %d segments (each is cut there)\"",
+                  s->path.max_depth);
+        if (s->path.fresnel == FRESNEL_SCHLICK && scene_has_glass(&lab->scene)) {
+            json_text(json, ",");
+            json_string(json, "the difference between Schlick's reflectance of the glass and "
+                              "the exact Fresnel one");
+        }
+        if (s->chapter == 8) {
+            json_text(json, ",");
+            json_string(json, "the photon map's blur of the caustics over its radius "
+                              "(consistent: it shrinks with the passes)");
+        }
+    }
+    json_text(json, "]");
+    return json->failed ? (fail(lab, "out of memory"), NULL) : json->text;
+}
+
 int lab_width(const Lab *lab) { return lab->width; }
 
 int lab_height(const Lab *lab) { return lab->height; }

@@ -55,6 +55,14 @@ const char *lab_fragment(Lab *lab, const char *fragment, const char *scenes, int
  * "spp":64,...} with the names and values lab_configure takes. NULL on failure. */
 const char *lab_settings(Lab *lab);
 
+/* The biases of the estimator configured, as a JSON array of phrases, each what its
+ * expectation misses or changes (an unbiased one: []): Whitted's ray tree leaves out
+ * diffuse interreflection; a path cut after its depth, the light of longer paths;
+ * Schlick's reflectance in a scene with glass, the exact Fresnel one's difference; the
+ * photon map (chapter 8), its blur over the radius. The standard error of the samples
+ * leaves these out; the page says so. NULL on failure. Valid until the next call. */
+const char *lab_biases(Lab *lab);
+
 int lab_width(const Lab *lab);
 int lab_height(const Lab *lab);
 

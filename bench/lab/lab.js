@@ -169,8 +169,10 @@ function formChanged(panel, key, value) {
  * little-endian floats, rows from the top. */
 window.labReference = function (meta, data) {
     const bytes = Uint8Array.from(atob(data), function (c) { return c.charCodeAt(0); });
+    const named = /-d(\d+)-(\w+)\.js$/.exec(meta.file);
     references[meta.file] = {image: new Float32Array(bytes.buffer), mse: meta.mse,
-                             relMse: meta.rel_mse, spp: meta.spp};
+                             relMse: meta.rel_mse, spp: meta.spp,
+                             depth: Number(named[1]), fresnel: named[2]};
     (referenceWaiters[meta.file] || []).forEach(function (resolve) { resolve(references[meta.file]); });
 };
 
@@ -296,19 +298,24 @@ function drawBands(panel, all, budget) {
     }
 }
 
-/* The panel's error now: against the reference, or the standard error of its samples. */
+/* The panel's error now: against the reference, or the standard error of its samples,
+ * which leaves out the estimator's biases (lab_biases): the page names them. */
 function currentError(panel) {
     const render = panel.render;
     if (render.reference) {
-        const error = render.referenceError();
+        const error = render.referenceError(), r = render.reference;
         return {value: error.rmse, rmse: error.rmse, relMse: error.relMse, text: "RMSE " + number(error.rmse, 4) + ", relative MSE " +
-                number(error.relMse, 4) + " against the reference (" + render.reference.spp + " spp)"};
+                number(error.relMse, 4) + " against the reference (depth " + r.depth + ", " +
+                (r.fresnel === "exact" ? "exact Fresnel" : "Schlick's Fresnel") + ", " + r.spp + " spp)"};
     }
-    const se = render.standardError();
+    const biases = render.info.biases, leftOut = biases.length
+        ? "; it leaves out the estimator's bias: " + biases.join("; ") : "";
     if (render.info.settings.chapter === 1)
-        return {value: NaN, text: "Whitted's image is deterministic: no noise to measure"};
-    return {value: se, text: isNaN(se) ? "error: waiting for two samples in every pixel"
-                                       : "standard error " + number(se, 4) + " (from the samples: no reference for these settings)"};
+        return {value: NaN, text: "Whitted's image is deterministic: no noise to measure; its error is all bias" +
+                                  (biases.length ? ": it leaves out " + biases.join("; ") : "")};
+    const se = render.standardError();
+    return {value: se, text: (isNaN(se) ? "error: waiting for two samples in every pixel"
+                                        : "standard error " + number(se, 4) + " from the samples (no reference for these settings)") + leftOut};
 }
 
 function showStats(panel) {
@@ -340,7 +347,8 @@ function drawPlot() {
     const series = activePanels().filter(function (p) { return p.render; }).map(function (panel) {
         const s = panel.render.info.settings;
         return {label: panel.name.toUpperCase() + ": " + settingsText(panel).replace(/ program=\S+/, "") +
-                       (panel.render.reference ? " (RMSE)" : " (standard error)"),
+                       (panel.render.reference ? " (RMSE)" : panel.render.info.biases.length
+                                                   ? " (standard error, bias left out)" : " (standard error)"),
                 colour: PANEL_COLOURS[panel.name],
                 points: panel.render.history.map(function (h) { return [h[0], h[2]]; })};
     });
@@ -618,6 +626,8 @@ window.labTest = {
         if (labTest.kept) labTest.kept.setWorkers(0);
         labTest.kept = null;
     },
+    /* The comparisons the page offers: [fragment, name]. */
+    presets: function () { return PRESETS.filter(function (p) { return p[0]; }); },
     inspect: function (panel, col, row) { return inspect(panels[panel], col, row); },
     step: function (by) { inspector.step(by); },
     state: function () {

@@ -71,7 +71,8 @@ function configure(setup) {
     configured = setup.key;
     info = {width: M._lab_width(lab), height: M._lab_height(lab), steps: M._lab_steps(lab),
             hash: M.UTF8ToString(M._lab_scene_hash(lab)),
-            settings: JSON.parse(M.UTF8ToString(M._lab_settings(lab)))};
+            settings: JSON.parse(M.UTF8ToString(M._lab_settings(lab))),
+            biases: JSON.parse(M.UTF8ToString(M._lab_biases(lab)))};
     return info;
 }
 
