@@ -27,7 +27,7 @@ static void grade_sphere(Grading *g)
     double r = sphere.radius;
     int hits = 0, misses = 0, inside = 0, behind = 0;
     for (int i = 0; i < TRIES && !g->failed; i++) {
-        TestRandom rng = test_random(11, 1, (uint64_t)i);
+        TestRandom rng = test_random(grading_stream(g, 11), 1, (uint64_t)i);
         int kind = i % 4; /* 0, 1: from outside; 2: from inside; 3: sphere behind */
         double distance =
             kind == 2 ? 0.6 * r * test_uniform(&rng) : 1.5 + 3.0 * test_uniform(&rng);
@@ -109,7 +109,7 @@ static void grade_triangle(Grading *g)
 {
     int hits = 0, misses = 0;
     for (int i = 0; i < TRIES && !g->failed; i++) {
-        TestRandom rng = test_random(12, 1, (uint64_t)i);
+        TestRandom rng = test_random(grading_stream(g, 12), 1, (uint64_t)i);
         Vec3 v[3];
         for (int k = 0; k < 3; k++)
             v[k] = vec3_scale(random_unit_vector(&rng), 2.0 * test_uniform(&rng) + 0.5);
@@ -179,7 +179,7 @@ static void grade_camera(Grading *g)
     const int width = 40, height = 30;
     int tried = 0;
     for (int i = 0; i < TRIES && !g->failed; i++, tried++) {
-        TestRandom rng = test_random(13, 1, (uint64_t)i);
+        TestRandom rng = test_random(grading_stream(g, 13), 1, (uint64_t)i);
         int col = (int)(test_uniform(&rng) * width), row = (int)(test_uniform(&rng) * height);
         double u = test_uniform(&rng), v = test_uniform(&rng);
         Ray ray = {vec3(0, 0, 0), vec3(0, 0, 0)};
@@ -265,7 +265,7 @@ static void grade_mirror(Grading *g)
 {
     int i;
     for (i = 0; i < TRIES && !g->failed; i++) {
-        TestRandom rng = test_random(14, 1, (uint64_t)i);
+        TestRandom rng = test_random(grading_stream(g, 14), 1, (uint64_t)i);
         Vec3 n = random_unit_vector(&rng), d = random_unit_vector(&rng);
         Vec3 r = ASK_VEC3(g, mirror_reflect(d, n));
         double length = vec3_length(r), dn = vec3_dot(d, n);
@@ -300,7 +300,7 @@ static void grade_snell(Grading *g)
     const double indices[4][2] = {{1.0, 1.5}, {1.5, 1.0}, {1.0, 1.33}, {1.6, 1.2}};
     int refracted = 0, reflected = 0;
     for (int i = 0; i < TRIES && !g->failed; i++) {
-        TestRandom rng = test_random(15, 1, (uint64_t)i);
+        TestRandom rng = test_random(grading_stream(g, 15), 1, (uint64_t)i);
         double n_i = indices[i % 4][0], n_t = indices[i % 4][1];
         Vec3 n = random_unit_vector(&rng), d = random_unit_vector(&rng);
         if (vec3_dot(d, n) > 0.0)

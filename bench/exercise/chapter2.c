@@ -4,7 +4,7 @@
  * heights a < b holds b^2 - a^2 of the samples, a sector 1 / 12); its pdf and the
  * Lambert BRDF against their closed forms, the BRDF also through the white furnace
  * it would make (L = Le / (1 - pi f)); the path tracer by its image against the
- * solution's, pixel by pixel. Fixed seeds; significance level 0.01.
+ * solution's, pixel by pixel. Seeds from GRADE_SEED; the course's level (grading.h).
  */
 #include <math.h>
 #include <stdio.h>
@@ -15,7 +15,7 @@
 #include "path.h"
 #include "render_check.h"
 
-#define LEVEL 0.01
+#define LEVEL grading_level()
 #define RINGS 10
 #define SECTORS 12
 #define WARP_SAMPLES 200000
@@ -29,7 +29,7 @@ static void grade_cosine_sample(Grading *g)
     if (warp_new(g, &warp, RINGS, SECTORS, 4000, labels) != 0)
         return;
     for (long i = 0; i < WARP_SAMPLES; i++) {
-        Rng rng = rng_for_sample(21, 1, (uint64_t)i);
+        Rng rng = rng_for_sample(grading_stream(g, 21), 1, (uint64_t)i);
         double u1, u2;
         rng_pair(&rng, &u1, &u2);
         warp_add_hemisphere(&warp, i, u1, u2, ASK_VEC3(g, hemisphere_sample_cosine(u1, u2)));
@@ -45,7 +45,7 @@ static void grade_cosine_pdf(Grading *g)
 {
     int checked = 0;
     for (int i = 0; i < 2000 && !g->failed; i++, checked++) {
-        TestRandom rng = test_random(22, 1, (uint64_t)i);
+        TestRandom rng = test_random(grading_stream(g, 22), 1, (uint64_t)i);
         Vec3 w = random_unit_vector(&rng);
         double pdf = ASK(g, hemisphere_pdf_cosine(w)), right = w.z > 0.0 ? w.z / PI : 0.0;
         if (grading_not_finite(g, pdf, "the pdf"))
