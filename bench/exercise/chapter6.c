@@ -1,14 +1,12 @@
 /* chapter6.c (bench, chapter 6): chapter 6's exercises and their graders (grading.h).
  *
- * Roulette must keep the expected throughput (docs/chapter6.md, section 1). Over 100,000
- * trials per setting (4,200,000 for alpha = 0.6, 500,000
- * for bounded weights' q = 0.5): every survivor's throughput must be exactly the
- * one before divided by the survival probability (a closed form per survivor: known wrong ones
- * named), and the share of paths that go on must be the survival probability, tested twice at
- * the course's level (grading.h): paired with the solution's decision from the same random
- * number (any other use of it shows at once), and as a binomial share (any valid way of
- * drawing). With roulette off, or before bounded weights start, nothing changes. The
- * survival probability against min(1, max component), known wrong ones named.
+ * Roulette keeps the expected throughput (docs/chapter6.md, section 1): over 100,000 to
+ * 4,200,000 trials per setting, every survivor carries exactly the throughput before / q
+ * (known wrong forms named), and the share going on is q, at the course's level
+ * (grading.h) both paired with the solution's decision from the same random number and as
+ * a binomial share (any valid drawing); with roulette off, or before bounded weights
+ * start, nothing changes. The survival probability against min(1, max component), with a
+ * catalogue of known wrong ones.
  */
 #include <math.h>
 #include <stdio.h>

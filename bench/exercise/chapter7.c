@@ -1,14 +1,11 @@
 /* chapter7.c (bench, chapter 7): chapter 7's exercises and their graders (grading.h).
  *
- * The power heuristic against its closed form at 2,000 random counts and densities, with
- * a catalogue of known wrong weights; then what its weights read from earlier chapters,
- * each against its closed form (area_light_pdf, the shadow ray's pdf, the bounce's
- * cos / pi), and the light at a floor point by MIS (a shadow ray and a bounce, weighted)
- * against the exact integral over the lamp, paired with the solution's on the same random
- * numbers. The lamp's mirror image (docs/chapter7.md, section 3): each shadow ray against
- * the solution's from the same lamp point, its known wrong variants named, then the mean
- * light paired with the solution's; a lamp facing the mirror and one tilted beside it.
- * The course's level (grading.h).
+ * The power heuristic against its closed form (a catalogue of known wrong weights); what
+ * its weights read from chapters 2 and 3 against their closed forms; the light at a floor
+ * point by MIS against the exact integral over the lamp, and paired with the solution's on
+ * the same numbers. The lamp's mirror image (docs/chapter7.md, section 3): each shadow ray
+ * against the solution's from the same lamp point (known wrong variants named), then the
+ * mean paired; a lamp facing the mirror and one tilted in mid-air. The course's level.
  */
 #include <math.h>
 #include <stdio.h>
