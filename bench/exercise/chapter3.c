@@ -10,6 +10,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "area_light.h"
 #include "grading.h"
@@ -153,79 +154,128 @@ static const char *const room_point_names[] = {"the floor",
                                                "the red wall"};
 #define ROOM_POINTS 3
 #define DIRECT_TRIALS 50
+#define MOST_RAYS 30
+/* A trial's inputs for the catalogue: M, then the values of M + 1 shadow rays drawn in
+ * turn from the trial's generator (one channel). */
+#define DIRECT_ARITY (MOST_RAYS + 2)
 
-/* The first L_D with M shadow rays that differs from the mean of its shadow rays. */
-typedef struct {
-    int m, point; /* point < 0: none differs */
-    double direct, mean;
-} DirectCheck;
-
-static int times_m(const DirectCheck *c)
+static double mean_of(const double *in, int count)
 {
-    return c->m > 1 && fabs(c->direct - c->m * c->mean) <= 1e-9 * fabs(c->m * c->mean);
+    double sum = 0.0;
+    for (int k = 0; k < count; k++)
+        sum += in[1 + k];
+    return sum / in[0];
 }
 
-/* What L_D does wrong where it first differs (c->point >= 0). */
-static void fail_direct(Grading *g, const DirectCheck *c)
+static double direct_right(const double *in) { return mean_of(in, (int)in[0]); }
+static double direct_sum(const double *in) { return mean_of(in, (int)in[0]) * in[0]; }
+static double direct_one_more(const double *in) { return mean_of(in, (int)in[0] + 1); }
+static double direct_one_fewer(const double *in) { return mean_of(in, (int)in[0] - 1); }
+static double direct_first(const double *in) { return in[1]; }
+static double direct_last(const double *in) { return in[(int)in[0]]; }
+static double direct_over_more(const double *in)
 {
-    int decimals = grading_decimals(c->direct, c->mean);
-    const char *where = room_point_names[c->point];
-    if (times_m(c))
-        grading_fail(g,
-                     "the sum of M terms is not divided by M: with M = %d the light is %d "
-                     "times too bright (L_D = %.4f on %s, where the mean of its %d shadow rays "
-                     "is %.4f; eq. 21: A / M times the sum)",
-                     c->m, c->m, c->direct, where, c->m, c->mean);
-    else if (c->m > 1 && c->direct == 0.0)
-        grading_fail(g,
-                     "L_D is 0 with M = %d on %s, where the mean of its %d shadow rays is "
-                     "%.4f (and right with M = 1): is 1 / M computed with whole numbers? 1 / M "
-                     "is 0 for M > 1; 1.0 / M is not",
-                     c->m, where, c->m, c->mean);
-    else
-        grading_fail(g,
-                     "with M = %d on %s, L_D = %.*f where the mean of the M shadow rays "
-                     "area_light_shadow_ray draws from the same generator is %.*f: L_D is the "
-                     "sum of their values divided by M (eq. 21)",
-                     c->m, where, decimals, c->direct, decimals, c->mean);
+    return mean_of(in, (int)in[0] + 1) * in[0] / (in[0] + 1.0);
+}
+static double direct_integer(const double *in) { return in[0] > 1.0 ? 0.0 : in[1]; }
+/* The sum kept in a float, then divided by M in double or in float. */
+static double direct_float(const double *in)
+{
+    float sum = 0.0f;
+    for (int k = 0; k < (int)in[0]; k++)
+        sum = (float)((double)sum + in[1 + k]); /* sum += value, sum a float */
+    return sum / in[0];
+}
+static double direct_float_divided(const double *in)
+{
+    float sum = 0.0f;
+    for (int k = 0; k < (int)in[0]; k++)
+        sum = (float)((double)sum + in[1 + k]); /* sum += value, sum a float */
+    return (double)(sum / (float)in[0]);
 }
 
-/* L_D with M shadow rays at the room's points, DIRECT_TRIALS times each, against the mean
- * of the same M shadow rays drawn again from the same generator; the first that differs
- * in *first. Returns 0, or -1 after failing on a NaN. */
-static int direct_trials(Grading *g, const Scene *scene, int m, DirectCheck *first)
+static double direct_rounded(const double *in) { return (float)direct_right(in); }
+
+static const WrongAnswer wrong_direct[] = {
+    {"the sum of the M shadow rays, not divided by M",
+     "eq. 21 takes their mean, (1 / M) times the sum: with M rays the light is M times too "
+     "bright",
+     direct_sum},
+    {"the sum of M + 1 shadow rays divided by M (the loop runs once too often: k <= M)",
+     "eq. 21 takes M shadow rays, for (k = 0; k < M; k++), and divides their sum by M",
+     direct_one_more},
+    {"the sum of M - 1 shadow rays divided by M (the loop runs once too few: k from 1 to "
+     "M - 1)",
+     "eq. 21 takes M shadow rays, for (k = 0; k < M; k++), and divides their sum by M",
+     direct_one_fewer},
+    {"the sum of M + 1 shadow rays divided by M + 1 where M were asked for",
+     "shadow_rays is M: for (k = 0; k < M; k++)", direct_over_more},
+    {"(1 / M) times the sum with 1 / M computed in whole numbers: 0 for M > 1",
+     "1 / M divides two ints; 1.0 / M does not", direct_integer},
+    {"the first shadow ray's value alone", "eq. 21 averages all M of them", direct_first},
+    {"the last shadow ray's value alone (the sum overwritten, = where += belongs)",
+     "eq. 21 adds all M of them, sum += value, then divides by M", direct_last},
+    {"the sum kept in a float, then divided by M",
+     "a float keeps 7 digits: the sum and the light lose the rest; keep it in a double (a "
+     "Vec3)",
+     direct_float},
+    {"the sum kept in a float and divided by M in float",
+     "a float keeps 7 digits: keep the sum and the mean in doubles (a Vec3)",
+     direct_float_divided},
+    {"the mean of the M shadow rays rounded to a float on the way",
+     "a float keeps 7 digits: keep the sum and the mean in doubles (a Vec3)", direct_rounded},
+};
+#define WRONG_DIRECT (int)(sizeof wrong_direct / sizeof wrong_direct[0])
+
+/* L_D with M shadow rays at the room's points, DIRECT_TRIALS times each, against the
+ * M + 1 shadow rays drawn again from the same generator: each trial's inputs (M and the
+ * terms of one channel) and L_D in that channel, for every channel, into in[] and got[];
+ * the number of trials where L_D is not the mean of M. Returns -1 after failing on a
+ * NaN. */
+static int direct_trials(Grading *g, const Scene *scene, int m, double *in, double *got,
+                         int *first_wrong)
 {
     Material white = {
-        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.7, 0.7)};
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.5, 0.3)};
     RayCounts counts = {0};
-    double sum_direct = 0.0, sum_mean = 0.0;
-    *first = (DirectCheck){m, -1, 0.0, 0.0};
+    int wrong = 0;
+    *first_wrong = -1;
     for (int p = 0; p < ROOM_POINTS; p++)
         for (int t = 0; t < DIRECT_TRIALS; t++) {
             Vec3 x = room_points[p][0], n = room_points[p][1];
             Rng rng = rng_for_sample(grading_stream(g, 34), (uint64_t)m,
                                      (uint64_t)(p * DIRECT_TRIALS + t));
             Rng again = rng;
-            double direct =
-                ASK(g, area_light_direct(scene, x, n, n, &white, m, &rng, &counts).y);
-            double terms = 0.0;
-            for (int i = 0; i < m && grading_probing(g); i++)
-                terms += area_light_shadow_ray(scene, x, n, n, &white, &again, &counts).value.y;
-            double mean = ASK(g, terms / m);
-            if (grading_not_finite(g, direct, "L_D"))
-                return -1;
-            sum_direct += direct;
-            sum_mean += mean;
-            if (first->point < 0 && fabs(direct - mean) > 1e-12 + 1e-9 * fabs(mean))
-                *first = (DirectCheck){m, p, direct, mean};
+            Vec3 direct =
+                ASK_VEC3(g, area_light_direct(scene, x, n, n, &white, m, &rng, &counts));
+            int trial = p * DIRECT_TRIALS + t;
+            double *row[3];
+            for (int c = 0; c < 3; c++) {
+                row[c] = in + (long)(3 * trial + c) * DIRECT_ARITY;
+                row[c][0] = m;
+            }
+            for (int k = 0; k <= m; k++) {
+                Vec3 v = ASK_VEC3(
+                    g, area_light_shadow_ray(scene, x, n, n, &white, &again, &counts).value);
+                row[0][1 + k] = v.x, row[1][1 + k] = v.y, row[2][1 + k] = v.z;
+            }
+            got[3 * trial] = direct.x, got[3 * trial + 1] = direct.y,
+                    got[3 * trial + 2] = direct.z;
+            for (int c = 0; c < 3; c++) {
+                if (grading_not_finite(g, got[3 * trial + c], "L_D"))
+                    return -1;
+                double right = direct_right(row[c]);
+                if (fabs(got[3 * trial + c] - right) > 1e-12 + 1e-9 * fabs(right)) {
+                    wrong++;
+                    if (*first_wrong < 0)
+                        *first_wrong = 3 * trial + c;
+                }
+            }
         }
-    grading_note(g,
-                 "M = %d: L_D averages %.4f over %d trials at %d points; the means of their "
-                 "shadow rays %.4f",
-                 m, sum_direct / (ROOM_POINTS * DIRECT_TRIALS), DIRECT_TRIALS, ROOM_POINTS,
-                 sum_mean / (ROOM_POINTS * DIRECT_TRIALS));
-    return 0;
+    return wrong;
 }
+
+#define DIRECT_VALUES (3 * ROOM_POINTS * DIRECT_TRIALS)
 
 static void grade_direct(Grading *g)
 {
@@ -233,26 +283,74 @@ static void grade_direct(Grading *g)
     if (grading_scene(g, render_check_room, &scene) != 0)
         return;
     static const int shadow_rays[] = {1, 2, 4, 30};
-    DirectCheck checks[4];
-    int wrong = 0, unscaled = 0;
+    static double in[4 * DIRECT_VALUES * DIRECT_ARITY], got[4 * DIRECT_VALUES];
+    static double wrong_in[4 * DIRECT_VALUES * DIRECT_ARITY], wrong_got[4 * DIRECT_VALUES];
+    int wrong = 0, first[4];
     for (int k = 0; k < 4; k++) {
-        if (direct_trials(g, &scene, shadow_rays[k], &checks[k]) != 0) {
+        int found = direct_trials(g, &scene, shadow_rays[k],
+                                  in + (long)k * DIRECT_VALUES * DIRECT_ARITY,
+                                  got + k * DIRECT_VALUES, &first[k]);
+        if (found < 0) {
             scene_free(&scene);
             return;
         }
-        wrong += checks[k].point >= 0;
-        unscaled += checks[k].point >= 0 && times_m(&checks[k]);
+        grading_note(g, "M = %d: L_D is the mean of its M shadow rays in %d of %d values",
+                     shadow_rays[k], DIRECT_VALUES - found, DIRECT_VALUES);
+        wrong += found;
     }
     scene_free(&scene);
-    if (wrong == 3 && unscaled == 3)
+    if (wrong == 0)
+        return;
+    /* The catalogue, at every value that is not the mean of M. */
+    int count = 0;
+    for (int i = 0; i < 4 * DIRECT_VALUES; i++) {
+        const double *row = in + (long)i * DIRECT_ARITY;
+        double right = direct_right(row);
+        if (fabs(got[i] - right) <= 1e-12 + 1e-9 * fabs(right))
+            continue;
+        memcpy(wrong_in + (long)count * DIRECT_ARITY, row, sizeof(double) * DIRECT_ARITY);
+        wrong_got[count++] = got[i];
+    }
+    const WrongAnswer *known = grading_known_wrong(wrong_direct, WRONG_DIRECT, wrong_in,
+                                                   DIRECT_ARITY, wrong_got, count);
+    if (known) {
+        grading_fail_known(g, "L_D", known, count);
+        return;
+    }
+    /* Right to a float's 7 digits, and no more: a float on the way. */
+    double largest = 0.0;
+    for (int q = 0; q < count; q++) {
+        double right = direct_right(wrong_in + (long)q * DIRECT_ARITY);
+        largest = fmax(largest, fabs(wrong_got[q] - right) / fmax(fabs(right), 1e-300));
+    }
+    if (largest <= 4e-6) {
         grading_fail(g,
-                     "the sum of M terms is not divided by M: with M = 2, 4 and 30 the light "
-                     "is 2, 4 and 30 times too bright (with M = 4 on %s, L_D = %.4f where the "
-                     "mean of its 4 shadow rays is %.4f; eq. 21: A / M times the sum)",
-                     room_point_names[checks[2].point], checks[2].direct, checks[2].mean);
-    for (int k = 0; k < 4 && !g->failed; k++)
-        if (checks[k].point >= 0)
-            fail_direct(g, &checks[k]);
+                     "L_D agrees with the mean of its M shadow rays to about 7 digits only (at "
+                     "%d of %d values it differs, by %.2g relative at most, where rounding in "
+                     "doubles stays within 1e-9): a sum or a mean kept in a float on the way; "
+                     "keep them in doubles (a Vec3)",
+                     count, 4 * DIRECT_VALUES, largest);
+        return;
+    }
+    for (int k = 0; k < 4; k++) {
+        if (first[k] < 0)
+            continue;
+        int i = first[k], trial = i / 3;
+        const double *row = in + ((long)k * DIRECT_VALUES + i) * DIRECT_ARITY;
+        double value = got[k * DIRECT_VALUES + i], right = direct_right(row);
+        int decimals = grading_decimals(value, right);
+        grading_fail(
+            g,
+            "with M = %d on %s (channel %d), L_D = %.*f where the mean of the M shadow "
+            "rays area_light_shadow_ray draws in turn from the same generator is "
+            "%.*f (a ratio of %.6g; their sum %.6g; %d of the %d values at M = 1, 2, "
+            "4, 30 differ): matches no known mistake; look at how the M values are "
+            "drawn, summed and divided (eq. 21)",
+            shadow_rays[k], room_point_names[trial / DIRECT_TRIALS], i % 3, decimals, value,
+            decimals, right, right != 0.0 ? value / right : NAN, direct_sum(row), wrong,
+            4 * DIRECT_VALUES);
+        return;
+    }
 }
 
 const Exercise exercises[] = {
