@@ -134,8 +134,329 @@ static Vec3 first_hit_direct(const Scene *scene, Ray ray, Rng *rng, const void *
 static const RenderCheck direct_check = {
     render_check_room, first_hit_direct, NULL, 24, 32, 1024};
 
+/* A lamp in mid-air, facing down, between a floor and a ceiling: the floor sees its
+ * front, the ceiling its back (from which nothing comes). */
+static const char mid_air[] = "camera 0 -3 0   -1 -2 -1   1 -2 -1   -1 -2 1\n"
+                              "material white lambert 0.7 0.5 0.3\n"
+                              "material lamp light 4 3 2\n"
+                              "quad lamp -0.5 -0.5 0   -0.5 0.5 0   0.5 0.5 0   0.5 -0.5 0\n"
+                              "quad white -5 -5 -1   5 -5 -1   5 5 -1   -5 5 -1\n"
+                              "quad white -5 -5 1   -5 5 1   5 5 1   5 -5 1\n";
+
+/* Where the shadow rays start: the first hits of rays from `from` towards `to`, as a
+ * path's vertex is found (a hit point off its surface by a few ulps, the normal facing
+ * the ray): on the room's floor, walls and sphere (near its rim too, grazing the
+ * lamp's light), and under and over the lamp in mid-air, near it and far (grazing). */
+typedef struct {
+    const char *scene, *where;
+    Vec3 from, to;
+} ShadowStart;
+
+static const ShadowStart shadow_starts[] = {
+    {render_check_room, "the room's floor", {0, -3, 0}, {0.3, -0.8, -1.5}},
+    {render_check_room,
+     "the room's floor in the sphere's half-shadow",
+     {0, -3, 0},
+     {0.95, 0.3, -1.5}},
+    {render_check_room, "the room's red wall", {0, -3, 0}, {-1.5, -0.5, 0.2}},
+    {render_check_room, "the top of the room's sphere", {0, -3, 1}, {0.3, 0, -0.3}},
+    {render_check_room,
+     "the rim of the room's sphere, grazing the lamp's light",
+     {0, -3, -0.9},
+     {0.9, 0, -0.85}},
+    {render_check_room,
+     "the room's floor far from the lamp, at a grazing angle",
+     {0, -3, 0},
+     {1.4, -3.3, -1.5}},
+    {mid_air, "the floor under the lamp in mid-air", {0, -3, -0.5}, {0.2, 0.1, -1}},
+    {mid_air, "the floor far from the lamp in mid-air, grazing", {0, -3, -0.5}, {4.5, 0.3, -1}},
+    {mid_air,
+     "the ceiling over the lamp in mid-air (which sees its back)",
+     {0, -3, 0.5},
+     {0.1, -0.2, 1}},
+    {mid_air, "the ceiling far from the lamp in mid-air", {0, -3, 0.5}, {3.5, 2, 1}},
+};
+#define SHADOW_STARTS (int)(sizeof shadow_starts / sizeof shadow_starts[0])
+#define SHADOW_TRIALS 800
+
+/* Why the solution's shadow ray is 0, or what it finds. */
+enum {
+    LIT,
+    BELOW_SURFACE,
+    LAMP_BACK,
+    BLOCKED,
+    KINDS
+};
+
+typedef struct {
+    int trials, wrong[KINDS], student_zero[KINDS], student_lit[KINDS];
+    int wi_wrong, wi_reversed, wi_not_unit, pdf_wrong, value_wrong, other_point;
+    double sum_student, sum_right, sum_difference, sum_difference2;
+    const char *first_value;
+    double ratio_low, ratio_high, got, want;
+    int unlike[8]; /* lit values wrong that the catalogue's entry does not match */
+} ShadowTally;
+
+/* Known wrong values of a lit shadow ray, from the right one and its geometry. */
+static const struct {
+    const char *wrong, *right;
+} value_mistakes[] = {
+    {"Le f cos(alpha) A / d^2: the cosine at the lamp, cos(beta), is missing",
+     "a lamp seen edge-on covers a smaller solid angle: times cos(beta) = -n_y . wi"},
+    {"Le f cos(beta) A / d^2: the cosine at x, cos(alpha), is missing",
+     "light arriving at a slant spreads over more area: times cos(alpha) = n . wi"},
+    {"Le f cos(alpha) cos(beta) A / d: d where d^2 belongs",
+     "the solid angle falls as 1 / d^2"},
+    {"Le f cos(alpha) cos(beta) / d^2: the factor A, 1 / the density 1 / A, is missing",
+     "a point drawn with density 1 / A is weighted by A = scene->light_area"},
+    {"Le rho cos(alpha) cos(beta) A / d^2: rho where f = rho / pi belongs",
+     "f is diffuse_brdf(m, n, wi, wo), rho / pi for a Lambertian surface"},
+    {"the right value divided by pi once more", "f = rho / pi has one pi, in diffuse_brdf"},
+    {"Le f cos(alpha) cos(beta) A^2 / d^2: A twice", "one factor A (eq. 21)"},
+};
+#define VALUE_MISTAKES (int)(sizeof value_mistakes / sizeof value_mistakes[0])
+
+static void tally_init(ShadowTally *t)
+{
+    memset(t, 0, sizeof *t);
+    t->ratio_low = INFINITY;
+    t->ratio_high = -INFINITY;
+}
+
+/* The solution's shadow ray from x with the generator `rng`, and why it is what it is. */
+static ShadowRay solution_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, const Material *m,
+                                     Rng rng, int *kind, double *cos_beta, double *distance)
+{
+    Rng replay = rng;
+    RayCounts counts = {0};
+    ShadowRay right = area_light_shadow_ray(scene, x, n, n, m, &rng, &counts);
+    double u_select = rng_uniform(&replay), u1, u2;
+    rng_pair(&replay, &u1, &u2);
+    LightSample y = area_light_sample(scene, u_select, u1, u2);
+    Vec3 to = vec3_sub(y.point, x);
+    *distance = vec3_length(to);
+    Vec3 wi = vec3_scale(to, 1.0 / *distance);
+    *cos_beta = -vec3_dot(y.normal, wi);
+    *kind = vec3_dot(n, wi) <= 0.0                           ? BELOW_SURFACE
+            : *cos_beta <= 0.0                               ? LAMP_BACK
+            : scene_occluded(scene, x, n, y.point, y.normal) ? BLOCKED
+                                                             : LIT;
+    return right;
+}
+
+static int same(double a, double b) { return fabs(a - b) <= 1e-12 + 1e-9 * fabs(b); }
+static int same_vec(Vec3 a, Vec3 b)
+{
+    return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
+}
+
+/* The judge's comparison of one trial with the solution's. */
+static void tally_trial(ShadowTally *t, const Scene *scene, Vec3 x, Vec3 n, const Material *m,
+                        Rng rng, ShadowRay got)
+{
+    int kind;
+    double cos_beta, distance;
+    ShadowRay right = solution_shadow_ray(scene, x, n, m, rng, &kind, &cos_beta, &distance);
+    t->trials++;
+    t->sum_student += got.value.y;
+    t->sum_right += right.value.y;
+    double difference = got.value.y - right.value.y;
+    t->sum_difference += difference;
+    t->sum_difference2 += difference * difference;
+    int zero = got.value.x == 0.0 && got.value.y == 0.0 && got.value.z == 0.0;
+    if (!same_vec(got.value, right.value)) {
+        t->wrong[kind]++;
+        t->student_zero[kind] += zero;
+        t->student_lit[kind] += !zero;
+        if (kind == LIT && !zero) {
+            double ratio = got.value.y / right.value.y;
+            t->ratio_low = fmin(t->ratio_low, ratio);
+            t->ratio_high = fmax(t->ratio_high, ratio);
+            if (!t->value_wrong++)
+                t->got = got.value.y, t->want = right.value.y;
+            double cos_alpha = vec3_dot(n, right.wi), area = scene->light_area;
+            const double candidates[VALUE_MISTAKES] = {
+                1.0 / cos_beta, 1.0 / cos_alpha, distance, 1.0 / area, PI, 1.0 / PI, area};
+            for (int c = 0; c < VALUE_MISTAKES; c++)
+                t->unlike[c] += !same(got.value.y, right.value.y * candidates[c]);
+        }
+    }
+    if (kind != LIT || zero)
+        return;
+    if (!same_vec(got.wi, right.wi)) {
+        t->wi_wrong++;
+        t->wi_reversed += same_vec(vec3_neg(got.wi), right.wi);
+        t->wi_not_unit += fabs(vec3_length(got.wi) - 1.0) > 1e-9;
+        t->other_point += fabs(vec3_length(got.wi) - 1.0) <= 1e-9 &&
+                          vec3_length(vec3_sub(got.wi, right.wi)) > 1e-6 &&
+                          !same_vec(vec3_neg(got.wi), right.wi);
+    }
+    if (!same(got.pdf, right.pdf) && same_vec(got.wi, right.wi))
+        t->pdf_wrong++;
+}
+
+/* The verdict from one start's tally; returns 1 when it failed. */
+static int shadow_verdict(Grading *g, const ShadowTally *t, const char *where)
+{
+    int n = t->trials;
+    if (t->other_point > n / 10) {
+        /* Another order of the random numbers: only the means can be compared. */
+        double mean = t->sum_difference / n;
+        double se = sqrt(fmax(0.0, t->sum_difference2 / n - mean * mean) / (n - 1));
+        double z = se > 0.0 ? mean / se : (mean == 0.0 ? 0.0 : INFINITY);
+        grading_note(g,
+                     "%s: your lamp points differ from those the solution draws from the same "
+                     "numbers (rng_uniform, then rng_pair, for area_light_sample); the means "
+                     "compared: %.5f and %.5f (z = %+.1f, detectable bias %.2g)",
+                     where, t->sum_student / n, t->sum_right / n, z, grading_detectable(se));
+        if (fabs(z) > grading_z(grading_level()))
+            return grading_fail(g,
+                                "at %s the mean of your shadow rays is %.5f where the "
+                                "solution's is %.5f (z = %+.1f over %d trials, drawn in "
+                                "another order than the task's): eq. 21's term is Le f "
+                                "cos(alpha) cos(beta) A / d^2",
+                                where, t->sum_student / n, t->sum_right / n, z, n),
+                   1;
+        return 0;
+    }
+    if (t->student_lit[LAMP_BACK])
+        return grading_fail(g,
+                            "light from the back of the lamp: at %s, where the lamp turns its "
+                            "back (cos(beta) = -n_y . wi <= 0), your value is not 0 in %d of "
+                            "%d trials: a lamp emits from its front only",
+                            where, t->student_lit[LAMP_BACK], n),
+               1;
+    if (t->student_lit[BELOW_SURFACE])
+        return grading_fail(g,
+                            "light from below the surface: at %s, for lamp points behind the "
+                            "surface (cos(alpha) = n . wi <= 0) your value is not 0 in %d of "
+                            "%d trials",
+                            where, t->student_lit[BELOW_SURFACE], n),
+               1;
+    if (t->student_lit[BLOCKED])
+        return grading_fail(g,
+                            "light through the scene: at %s, %d of %d shadow rays that "
+                            "something blocks still bring light (scene_occluded(scene, x, n, "
+                            "y, n_y) says whether the segment is blocked)",
+                            where, t->student_lit[BLOCKED], n),
+               1;
+    if (t->student_zero[LIT])
+        return grading_fail(g,
+                            "too dark: at %s, %d of %d lamp points in plain sight give 0, as "
+                            "if blocked: a shadow ray started exactly at x hits x's own "
+                            "surface (acne; worst at grazing angles): scene_occluded(scene, x, "
+                            "n, y, n_y) moves both ends off their surfaces",
+                            where, t->student_zero[LIT], n),
+               1;
+    for (int c = 0; t->value_wrong && c < VALUE_MISTAKES; c++)
+        if (t->unlike[c] == 0)
+            return grading_fail(g,
+                                "your value equals %s, at each of the %d lit shadow rays from "
+                                "%s where it is wrong (to 1e-9): %s",
+                                value_mistakes[c].wrong, t->value_wrong, where,
+                                value_mistakes[c].right),
+                   1;
+    if (t->value_wrong) {
+        char shape[200];
+        if (t->ratio_high - t->ratio_low <= 1e-9 * fabs(t->ratio_high))
+            snprintf(shape, sizeof shape,
+                     "%.6g times the right value at every one: a constant factor (A = %s? pi "
+                     "in f = rho / pi?)",
+                     t->ratio_high, "scene->light_area");
+        else
+            snprintf(shape, sizeof shape,
+                     "between %.4g and %.4g times the right value: a factor that changes with "
+                     "the lamp point (cos(alpha), cos(beta), d^2?)",
+                     t->ratio_low, t->ratio_high);
+        return grading_fail(g,
+                            "at %s, the value of %d of %d lit shadow rays is wrong (%.6g where "
+                            "Le f cos(alpha) cos(beta) A / d^2 = %.6g), %s",
+                            where, t->value_wrong, n, t->got, t->want, shape),
+               1;
+    }
+    if (t->wi_wrong)
+        return grading_fail(g,
+                            "at %s, wi is wrong in %d of %d lit shadow rays%s: wi is the unit "
+                            "direction from x to the lamp point",
+                            where, t->wi_wrong, n,
+                            t->wi_reversed == t->wi_wrong ? " (it points from the lamp to x)"
+                            : t->wi_not_unit              ? " (not of unit length)"
+                                                          : ""),
+               1;
+    if (t->pdf_wrong)
+        return grading_fail(g,
+                            "at %s, the pdf is wrong in %d of %d lit shadow rays: it is "
+                            "area_light_pdf(scene, d, cos(beta)), d^2 / (A cos beta), the "
+                            "density of wi in solid angle that multiple importance sampling "
+                            "reads (chapter 7)",
+                            where, t->pdf_wrong, n),
+               1;
+    return 0;
+}
+
+/* Every field of the shadow ray (value, wi, pdf) against the solution's drawn from the
+ * same random numbers, at each start: exact where the task's order of the numbers is kept.
+ */
+static void grade_shadow_ray_paired(Grading *g)
+{
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.5, 0.3)};
+    int trials = 0;
+    for (int k = 0; k < SHADOW_STARTS && !g->failed; k++) {
+        const ShadowStart *start = &shadow_starts[k];
+        Scene scene;
+        if (grading_scene(g, start->scene, &scene) != 0)
+            return;
+        Ray ray = {start->from, vec3_normalize(vec3_sub(start->to, start->from))};
+        Hit hit = {0};
+        int found = grading_probing(g) ? scene_intersect(&scene, ray, INFINITY, &hit) : 0;
+        found = ASK(g, found) != 0.0;
+        Vec3 x = ASK_VEC3(g, hit.point), normal = ASK_VEC3(g, hit.normal);
+        if (!found) {
+            scene_free(&scene);
+            grading_fail(
+                g, "the grader's ray towards %s found nothing: has scene_intersect changed?",
+                start->where);
+            return;
+        }
+        Vec3 n = vec3_dot(normal, ray.dir) < 0.0 ? normal : vec3_neg(normal);
+        ShadowTally tally;
+        tally_init(&tally);
+        RayCounts counts = {0};
+        for (int t = 0; t < SHADOW_TRIALS; t++) {
+            Rng rng = rng_for_sample(grading_stream(g, 33), (uint64_t)k, (uint64_t)t);
+            Rng mine = rng;
+            ShadowRay got = {.value = vec3(0, 0, 0)};
+            if (grading_probing(g))
+                got = area_light_shadow_ray(&scene, x, n, n, &white, &mine, &counts);
+            got.value = ASK_VEC3(g, got.value);
+            got.wi = ASK_VEC3(g, got.wi);
+            got.pdf = ASK(g, got.pdf);
+            if (grading_not_finite(g, got.value.x + got.value.y + got.value.z, "the value") ||
+                (!grading_probing(g) && !(got.value.x == 0.0 && got.value.y == 0.0) &&
+                 grading_not_finite(g, got.pdf, "the pdf")))
+                break;
+            if (!grading_probing(g))
+                tally_trial(&tally, &scene, x, n, &white, rng, got);
+        }
+        scene_free(&scene);
+        trials += tally.trials;
+        if (!grading_probing(g) && !g->failed) {
+            grading_note(g, "%s: %d trials, your mean %.5f, the solution's %.5f", start->where,
+                         tally.trials, tally.sum_student / SHADOW_TRIALS,
+                         tally.sum_right / SHADOW_TRIALS);
+            shadow_verdict(g, &tally, start->where);
+        }
+    }
+    grading_note(g,
+                 "%d shadow rays (value, wi and pdf) against the solution's from the same "
+                 "random numbers at %d points of two scenes",
+                 trials, SHADOW_STARTS);
+}
+
 static void grade_shadow_ray(Grading *g)
 {
+    grade_shadow_ray_paired(g);
     grading_render(
         g, &direct_check, LEVEL,
         "is the value Le f cos(alpha) cos(beta) A / d^2 (eq. 21), 0 when the lamp or "
