@@ -20,59 +20,165 @@
 #define LEVEL grading_level()
 #define COLS 12
 #define ROWS 4
-#define WARP_SAMPLES 200000
 
-/* Two lamps facing down from the plane z = 1: x in [0, 1] and [1, 3], y in [0, 1]. */
+static int same(double a, double b) { return fabs(a - b) <= 1e-12 + 1e-9 * fabs(b); }
+static int same_vec(Vec3 a, Vec3 b)
+{
+    return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
+}
+
+/* Two lamps in the plane z = 1, x in [0, 1] and [1, 3], y in [0, 1]: the small one
+ * facing down with one colour, the large one facing up with another, so that a sample's
+ * normal and emission show which lamp they came from. */
 static const char lamps[] = "camera 0 0 -1   -1 -1 0   1 -1 0   -1 1 0\n"
-                            "material lamp light 1 1 1\n"
+                            "material small light 1 0.5 0.25\n"
+                            "material large light 3 2 1\n"
                             "material white lambert 0.5 0.5 0.5\n"
-                            "quad lamp 0 0 1   0 1 1   1 1 1   1 0 1\n"
-                            "quad lamp 1 0 1   1 1 1   3 1 1   3 0 1\n"
+                            "quad small 0 0 1   0 1 1   1 1 1   1 0 1\n"
+                            "quad large 1 0 1   3 0 1   3 1 1   1 1 1\n"
                             "quad white -5 -5 -1   5 -5 -1   5 5 -1   -5 5 -1\n";
+#define LIGHT_SAMPLES 3000000
+#define LIGHT_WHOLE 100000 /* samples whose normal and emission are checked too */
+
+/* The statistics of the whole sample: where it fell and whether its normal and emission
+ * are its lamp's. */
+typedef struct {
+    long off, wrong_normal, other_normal, wrong_emission, other_emission, identical;
+    double small, x_small, x_large, y, y2;
+    long large;
+} LightTally;
+
+/* A z-test of a mean against its exact value at the course's level: its note (the
+ * detectable bias) and, failing, the verdict. Returns 1 when it passes. */
+static int mean_test(Grading *g, const char *what, double sum, double sum2, long count,
+                     double exact, const char *hint)
+{
+    double mean = sum / count, se = sqrt(fmax(0.0, sum2 / count - mean * mean) / (count - 1));
+    double z = se > 0.0 ? (mean - exact) / se : (mean == exact ? 0.0 : INFINITY);
+    grading_note(g, "%s: %.5f, exactly %.5f (z = %+.1f; a bias of %.2g detected at power %.2f)",
+                 what, mean, exact, z, grading_detectable(se), GRADING_POWER);
+    if (fabs(z) <= grading_z(grading_level()))
+        return 1;
+    return grading_fail(g,
+                        "%s is %.5f where a uniform point over the lamps' area gives %.5f "
+                        "(%+.2f%%, z = %+.1f over %ld samples): %s",
+                        what, mean, exact, 100.0 * (mean / exact - 1.0), z, count, hint);
+}
 
 static void grade_light_sample(Grading *g)
 {
     Scene scene;
     if (grading_scene(g, lamps, &scene) != 0)
         return;
-    const WarpLabels labels = {"row", "the lamps' far edge, y near 1",
-                               "the lamps' near edge, y near 0",
-                               "column (1-4: the small lamp, 5-12: the large one)",
-                               "off the lamps, or with the wrong normal or emission"};
+    const WarpLabels labels = {
+        "row", "the lamps' far edge, y near 1", "the lamps' near edge, y near 0",
+        "column (1-4: the small lamp, 5-12: the large one)", "off the lamps"};
     Warp warp;
     if (warp_new(g, &warp, ROWS, COLS, 4000, labels) != 0) {
         scene_free(&scene);
         return;
     }
-    for (long i = 0; i < WARP_SAMPLES; i++) {
+    const Vec3 normal_of[2] = {{0, 0, -1}, {0, 0, 1}};
+    const Vec3 emission_of[2] = {{1, 0.5, 0.25}, {3, 2, 1}};
+    LightTally t = {0};
+    double sum_small2 = 0.0, sum_x_small2 = 0.0, sum_x_large2 = 0.0;
+    for (long i = 0; i < LIGHT_SAMPLES; i++) {
         Rng rng = rng_for_sample(grading_stream(g, 31), 1, (uint64_t)i);
         double u_select = rng_uniform(&rng), u1, u2;
         rng_pair(&rng, &u1, &u2);
         LightSample s = {vec3(0, 0, 0), vec3(0, 0, 0), vec3(0, 0, 0)};
         if (grading_probing(g))
             s = area_light_sample(&scene, u_select, u1, u2);
+        int whole = i < LIGHT_WHOLE;
         s.point = grading_ask_vec3(g, s.point);
-        s.normal = grading_ask_vec3(g, s.normal);
-        s.emission = grading_ask_vec3(g, s.emission);
+        if (whole) {
+            s.normal = grading_ask_vec3(g, s.normal);
+            s.emission = grading_ask_vec3(g, s.emission);
+        }
+        if (grading_probing(g))
+            continue;
+        LightSample right = area_light_sample(&scene, u_select, u1, u2);
+        t.identical += whole && same_vec(s.point, right.point) &&
+                       same_vec(s.normal, right.normal) && same_vec(s.emission, right.emission);
         Vec3 p = s.point;
-        int on = fabs(p.z - 1.0) < 1e-9 && p.x >= 0.0 && p.x <= 3.0 && p.y >= 0.0 &&
-                 p.y <= 1.0 && fabs(s.normal.z + 1.0) < 1e-9 && s.emission.x == 1.0;
-        if (!on) {
+        if (!(fabs(p.z - 1.0) < 1e-9 && p.x >= 0.0 && p.x <= 3.0 && p.y >= 0.0 && p.y <= 1.0)) {
+            t.off++;
             warp_add(&warp, i, -1, 0, u_select, u1, NAN, NAN);
             continue;
         }
+        int lamp = p.x > 1.0;
+        if (whole && !same_vec(s.normal, normal_of[lamp])) {
+            t.wrong_normal++;
+            t.other_normal += same_vec(s.normal, normal_of[!lamp]);
+        }
+        if (whole && !same_vec(s.emission, emission_of[lamp])) {
+            t.wrong_emission++;
+            t.other_emission += same_vec(s.emission, emission_of[!lamp]);
+        }
+        t.small += !lamp;
+        sum_small2 += !lamp;
+        if (lamp) {
+            t.large++;
+            t.x_large += p.x;
+            sum_x_large2 += p.x * p.x;
+        } else {
+            t.x_small += p.x;
+            sum_x_small2 += p.x * p.x;
+        }
+        t.y += p.y;
+        t.y2 += p.y * p.y;
         int col = (int)(p.x / 3.0 * COLS), row = (int)((1.0 - p.y) * ROWS);
         warp_add(&warp, i, row < ROWS ? row : ROWS - 1, col < COLS ? col : COLS - 1, u_select,
                  u1, p.x / 1.5 - 1.0, (2.0 * p.y - 1.0) / 3.0);
     }
-    for (int c = 0; c < ROWS * COLS; c++)
-        warp.expected[c] = (double)WARP_SAMPLES / (ROWS * COLS);
-    grading_warp(g, &warp, "the two lamps from below", LEVEL, 1,
-                 "is the lamp chosen with probability proportional to its area (the running "
-                 "sums in light_cumulative) and the point on its triangle at barycentric "
-                 "(s (1 - u2), s u2) with s = sqrt(u1) (docs/chapter3.md, section 1)?");
-    warp_free(&warp);
     scene_free(&scene);
+    if (grading_probing(g)) {
+        warp_free(&warp);
+        return;
+    }
+    grading_note(g,
+                 "%ld samples, their points and, of the first %ld, their normals and "
+                 "emissions: %ld of those identical to the solution's from the same numbers; "
+                 "%ld off the lamps, %ld with another normal, %ld with another emission than "
+                 "their lamp's",
+                 (long)LIGHT_SAMPLES, (long)LIGHT_WHOLE, t.identical, t.off, t.wrong_normal,
+                 t.wrong_emission);
+    const char *hint = "is the lamp chosen with probability proportional to its area (the "
+                       "running sums in light_cumulative) and the point on its triangle at "
+                       "barycentric (s (1 - u2), s u2) with s = sqrt(u1) (docs/chapter3.md, "
+                       "section 1)?";
+    long on = LIGHT_SAMPLES - t.off;
+    if (t.wrong_normal)
+        grading_fail(g,
+                     "the normal is not the normal of the lamp the point lies on in %ld of %ld "
+                     "samples%s: the normal and the emission are those of the triangle the "
+                     "point was drawn on",
+                     t.wrong_normal, (long)LIGHT_WHOLE,
+                     t.other_normal == t.wrong_normal ? " (it is the other lamp's)" : "");
+    else if (t.wrong_emission)
+        grading_fail(g,
+                     "the emission is not that of the lamp the point lies on in %ld of %ld "
+                     "samples%s: the emission is the material's of the triangle the point "
+                     "was drawn on",
+                     t.wrong_emission, (long)LIGHT_WHOLE,
+                     t.other_emission == t.wrong_emission ? " (it is the other lamp's)" : "");
+    if (g->failed) {
+        warp_free(&warp);
+        return;
+    }
+    for (int c = 0; c < ROWS * COLS; c++)
+        warp.expected[c] = (double)LIGHT_SAMPLES / (ROWS * COLS);
+    if (grading_warp(g, &warp, "the two lamps from below", LEVEL, 1, hint) && on > 1) {
+        if (mean_test(g, "the share of samples on the small lamp (1 / 3 of the area)", t.small,
+                      sum_small2, on, 1.0 / 3.0, hint) &&
+            mean_test(g, "the mean y", t.y, t.y2, on, 0.5, hint) && on - t.large > 1 &&
+            mean_test(g, "the mean x on the small lamp", t.x_small, sum_x_small2, on - t.large,
+                      0.5, hint) &&
+            t.large > 1)
+            mean_test(g, "the mean x on the large lamp", t.x_large, sum_x_large2, t.large, 2.0,
+                      hint);
+    }
+    warp_free(&warp);
 }
 
 static void grade_light_pdf(Grading *g)
@@ -242,12 +348,6 @@ static ShadowRay solution_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, const M
             : scene_occluded(scene, x, n, y.point, y.normal) ? BLOCKED
                                                              : LIT;
     return right;
-}
-
-static int same(double a, double b) { return fabs(a - b) <= 1e-12 + 1e-9 * fabs(b); }
-static int same_vec(Vec3 a, Vec3 b)
-{
-    return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
 }
 
 /* The judge's comparison of one trial with the solution's. */
