@@ -181,45 +181,94 @@ static void grade_light_sample(Grading *g)
     warp_free(&warp);
 }
 
+/* The pdf's inputs: d, cos(beta) and A. */
+static double pdf_no_cos(const double *in) { return in[0] * in[0] / in[2]; }
+static double pdf_area(const double *in) { return 1.0 / in[2]; }
+static double pdf_inverse(const double *in) { return in[2] * in[1] / (in[0] * in[0]); }
+static double pdf_d(const double *in) { return in[0] / (in[2] * in[1]); }
+static double pdf_cos_up(const double *in) { return in[0] * in[0] * in[1] / in[2]; }
+static double pdf_no_area(const double *in) { return in[0] * in[0] / in[1]; }
+static double pdf_degrees(const double *in)
+{
+    return in[0] * in[0] / (in[2] * cos(in[1])); /* cos(beta) taken for an angle */
+}
+
+static const WrongAnswer wrong_pdf[] = {
+    {"d^2 / A: the cosine at the lamp is missing",
+     "a lamp seen edge-on covers a smaller solid angle: d^2 / (A cos beta)", pdf_no_cos},
+    {"1 / A, the density per unit area",
+     "the density in solid angle is asked for: dA = d^2 dw / cos(beta) turns 1 / A into d^2 "
+     "/ (A cos beta)",
+     pdf_area},
+    {"A cos(beta) / d^2, the inverse of the density",
+     "the density in solid angle is d^2 / (A cos beta), large for a small or distant lamp",
+     pdf_inverse},
+    {"d / (A cos beta): d where d^2 belongs",
+     "the solid angle falls as 1 / d^2: d^2 / (A cos beta)", pdf_d},
+    {"d^2 cos(beta) / A: the cosine multiplies where it divides", "d^2 / (A cos beta)",
+     pdf_cos_up},
+    {"d^2 / cos(beta): the area A is missing",
+     "A = scene->light_area, the lamps' total area: d^2 / (A cos beta)", pdf_no_area},
+    {"d^2 / (A cos(cos beta)): the cosine taken of the cosine",
+     "cos_beta is already the cosine: d^2 / (A cos_beta)", pdf_degrees},
+};
+#define PDF_POINTS 200
+
 static void grade_light_pdf(Grading *g)
 {
     Scene scene;
     if (grading_scene(g, lamps, &scene) != 0)
         return;
-    double area = scene.light_area;
-    int checked = 0;
-    for (int i = 0; i < 200 && !g->failed; i++, checked++) {
+    double area = scene.light_area, in[3 * PDF_POINTS], got[PDF_POINTS];
+    double wrong_in[3 * PDF_POINTS], wrong_got[PDF_POINTS];
+    int wrong = 0, first = -1;
+    for (int i = 0; i < PDF_POINTS; i++) {
         Rng rng = rng_for_sample(grading_stream(g, 32), 1, (uint64_t)i);
         double d = 0.2 + 3.0 * rng_uniform(&rng), cos_beta = 0.05 + 0.95 * rng_uniform(&rng);
-        double pdf = ASK(g, area_light_pdf(&scene, d, cos_beta)),
-               right = d * d / (area * cos_beta);
-        if (grading_not_finite(g, pdf, "the pdf"))
-            break;
-        if (fabs(pdf - right) <= 1e-9 * right)
+        in[3 * i] = d, in[3 * i + 1] = cos_beta, in[3 * i + 2] = area;
+        got[i] = ASK(g, area_light_pdf(&scene, d, cos_beta));
+        if (grading_not_finite(g, got[i], "the pdf")) {
+            scene_free(&scene);
+            return;
+        }
+        double right = d * d / (area * cos_beta);
+        if (fabs(got[i] - right) <= 1e-9 * right)
             continue;
-        if (fabs(pdf - d * d / area) <= 1e-9 * right)
-            grading_fail(g,
-                         "the pdf is %.4f at distance %.2f and cos(beta) = %.2f, where d^2 / "
-                         "(A cos beta) = %.4f: the cosine at the lamp is missing (a lamp seen "
-                         "edge-on covers a smaller solid angle)",
-                         pdf, d, cos_beta, right);
-        else if (fabs(pdf - 1.0 / area) <= 1e-9 * right)
-            grading_fail(g,
-                         "the pdf is 1 / A = %.4f, the density per unit area, where the "
-                         "density in solid angle d^2 / (A cos beta) = %.4f is asked for",
-                         pdf, right);
-        else
-            grading_fail(g,
-                         "the pdf is %.*f at distance %.2f and cos(beta) = %.2f, where d^2 / "
-                         "(A cos beta) = %.*f (A = %.1f)",
-                         grading_decimals(pdf, right), pdf, d, cos_beta,
-                         grading_decimals(pdf, right), right, area);
+        memcpy(wrong_in + 3 * wrong, in + 3 * i, sizeof(double) * 3);
+        wrong_got[wrong++] = got[i];
+        first = first < 0 ? i : first;
     }
+    scene_free(&scene);
     grading_note(g,
                  "%d distances and angles at lamps of total area %.1f against d^2 / (A cos "
-                 "beta)",
-                 checked, area);
-    scene_free(&scene);
+                 "beta): %d wrong",
+                 PDF_POINTS, area, wrong);
+    if (wrong == 0)
+        return;
+    const WrongAnswer *known =
+        grading_known_wrong(wrong_pdf, (int)(sizeof wrong_pdf / sizeof wrong_pdf[0]), wrong_in,
+                            3, wrong_got, wrong);
+    if (known) {
+        grading_fail_known(g, "pdf", known, wrong);
+        return;
+    }
+    /* How the ratio to the right pdf goes with d and cos(beta). */
+    double low = INFINITY, high = -INFINITY;
+    for (int k = 0; k < wrong; k++) {
+        const double *x = wrong_in + 3 * k;
+        double ratio = wrong_got[k] / (x[0] * x[0] / (x[2] * x[1]));
+        low = fmin(low, ratio), high = fmax(high, ratio);
+    }
+    double d = in[3 * first], cos_beta = in[3 * first + 1], right = d * d / (area * cos_beta);
+    int decimals = grading_decimals(got[first], right);
+    grading_fail(
+        g,
+        "the pdf is %.*f at distance %.2f and cos(beta) = %.2f, where d^2 / (A cos "
+        "beta) = %.*f (A = %.1f); wrong at %d of %d inputs, %s",
+        decimals, got[first], d, cos_beta, decimals, right, area, wrong, PDF_POINTS,
+        high - low <= 1e-9 * fabs(high)
+            ? "by one constant factor at all (look at the constants)"
+            : "by a ratio that changes with d and cos(beta) (look at how each enters)");
 }
 
 /* The light at a camera ray's first hit from one shadow ray (eq. 21 with M = 1), or the
