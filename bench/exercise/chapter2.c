@@ -19,7 +19,7 @@
 #define LEVEL grading_level()
 #define RINGS 10
 #define SECTORS 12
-#define WARP_SAMPLES 200000
+#define WARP_SAMPLES 1000000
 
 static void grade_cosine_sample(Grading *g)
 {
@@ -29,17 +29,83 @@ static void grade_cosine_sample(Grading *g)
     Warp warp;
     if (warp_new(g, &warp, RINGS, SECTORS, 4000, labels) != 0)
         return;
+    /* the sums of z, z^2, x, x^2, y, y^2 and x y over the samples */
+    double sums[7] = {0}, squares[7] = {0};
+    long identical = 0;
     for (long i = 0; i < WARP_SAMPLES; i++) {
         Rng rng = rng_for_sample(grading_stream(g, 21), 1, (uint64_t)i);
         double u1, u2;
         rng_pair(&rng, &u1, &u2);
-        warp_add_hemisphere(&warp, i, u1, u2, ASK_VEC3(g, hemisphere_sample_cosine(u1, u2)));
+        Vec3 w = ASK_VEC3(g, hemisphere_sample_cosine(u1, u2));
+        warp_add_hemisphere(&warp, i, u1, u2, w);
+        if (grading_probing(g))
+            continue;
+        identical += vec3_length(vec3_sub(w, hemisphere_sample_cosine(u1, u2))) <= 1e-12;
+        const double values[7] = {w.z, w.z * w.z, w.x, w.x * w.x, w.y, w.y * w.y, w.x * w.y};
+        for (int k = 0; k < 7; k++)
+            sums[k] += values[k], squares[k] += values[k] * values[k];
     }
+    const char *hint = "is cos(theta) = sqrt(1 - u1), sin(theta) = sqrt(u1) and phi = 2 pi u2 "
+                       "(eq. 12, docs/chapter2.md)?";
     warp_expect_cosine(&warp, WARP_SAMPLES);
-    grading_warp(g, &warp, "the hemisphere seen from above", LEVEL, 1,
-                 "is cos(theta) = sqrt(1 - u1), sin(theta) = sqrt(u1) and phi = 2 pi u2 "
-                 "(eq. 12, docs/chapter2.md)?");
+    if (!grading_probing(g))
+        grading_note(g,
+                     "%ld of %ld directions identical to the solution's from the same (u1, u2)",
+                     identical, (long)WARP_SAMPLES);
+    if (grading_warp(g, &warp, "the hemisphere seen from above", LEVEL, 1, hint) &&
+        !grading_probing(g)) {
+        /* Moments of the density cos(theta) / pi: E z = 2/3, E z^2 = 1/2, E x = E y = E x y
+         * = 0, E x^2 = E y^2 = 1/4. */
+        static const char *const names[7] = {
+            "the mean cos(theta)", "the mean cos^2(theta)", "the mean x",  "the mean x^2",
+            "the mean y",          "the mean y^2",          "the mean x y"};
+        static const double exact[7] = {2.0 / 3.0, 0.5, 0.0, 0.25, 0.0, 0.25, 0.0};
+        for (int k = 0; k < 7 && !g->failed; k++)
+            grading_mean_test(g, names[k], sums[k], squares[k], WARP_SAMPLES, exact[k], hint);
+    }
     warp_free(&warp);
+}
+
+/* The pdf at the sampler's own directions (exercise 2.1's): cos(theta) / pi at each, and
+ * the solid angle of the cap cos(theta) > 1/2, pi, as the mean of [cos(theta) > 1/2] /
+ * pdf. */
+#define PDF_SAMPLES 200000
+static void grade_pdf_at_samples(Grading *g)
+{
+    double sum = 0.0, sum2 = 0.0;
+    long wrong = 0;
+    Vec3 first = vec3(0, 0, 0);
+    double first_pdf = 0.0;
+    for (long i = 0; i < PDF_SAMPLES; i++) {
+        Rng rng = rng_for_sample(grading_stream(g, 23), 1, (uint64_t)i);
+        double u1, u2;
+        rng_pair(&rng, &u1, &u2);
+        Vec3 w = ASK_VEC3(g, hemisphere_sample_cosine(u1, u2));
+        double pdf = ASK(g, hemisphere_pdf_cosine(w));
+        if (grading_probing(g))
+            continue;
+        if (fabs(pdf - fmax(w.z, 0.0) / PI) > 1e-9) {
+            if (!wrong++)
+                first = w, first_pdf = pdf;
+        }
+        double term = w.z > 0.5 && pdf > 0.0 ? 1.0 / pdf : 0.0;
+        sum += term, sum2 += term * term;
+    }
+    if (grading_probing(g))
+        return;
+    if (wrong) {
+        grading_fail(g,
+                     "at %ld of the %ld directions the sampler (exercise 2.1) draws, the pdf "
+                     "is not cos(theta) / pi: %.6f at cos(theta) = %.4f, where %.6f is right",
+                     wrong, (long)PDF_SAMPLES, first_pdf, first.z, fmax(first.z, 0.0) / PI);
+        return;
+    }
+    grading_mean_test(g,
+                      "the solid angle of the cap cos(theta) > 1/2 from the sampler's "
+                      "directions, the mean of [cos(theta) > 1/2] / pdf",
+                      sum, sum2, PDF_SAMPLES, PI,
+                      "the pdf must be the density of the sampler's directions in solid "
+                      "angle, cos(theta) / pi");
 }
 
 static void grade_cosine_pdf(Grading *g)
@@ -82,6 +148,7 @@ static void grade_cosine_pdf(Grading *g)
                  "%d random directions over the whole sphere against cos(theta) / pi above "
                  "the surface, 0 below",
                  checked);
+    grade_pdf_at_samples(g);
 }
 
 static void grade_lambert(Grading *g)
@@ -310,7 +377,7 @@ const Exercise exercises[] = {
      "Return the density in solid angle of the cosine sampler at the unit local direction "
      "w_local: cos(theta) / pi (cos(theta) = w_local.z) above the surface, 0 below. See "
      "docs/chapter2.md, section 2.",
-     "return 0.0;", grade_cosine_pdf, NULL, ""},
+     "return 0.0;", grade_cosine_pdf, NULL, "2.1"},
     {"2.3", "lambert_brdf",
      "Return the Lambertian BRDF of reflectance rho, f = rho / pi (eq. 8): the same for every "
      "pair of directions, so that f cos(theta) integrated over the hemisphere is rho. See "

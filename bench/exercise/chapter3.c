@@ -48,23 +48,6 @@ typedef struct {
     long large;
 } LightTally;
 
-/* A z-test of a mean against its exact value at the course's level: its note (the
- * detectable bias) and, failing, the verdict. Returns 1 when it passes. */
-static int mean_test(Grading *g, const char *what, double sum, double sum2, long count,
-                     double exact, const char *hint)
-{
-    double mean = sum / count, se = sqrt(fmax(0.0, sum2 / count - mean * mean) / (count - 1));
-    double z = se > 0.0 ? (mean - exact) / se : (mean == exact ? 0.0 : INFINITY);
-    grading_note(g, "%s: %.5f, exactly %.5f (z = %+.1f; a bias of %.2g detected at power %.2f)",
-                 what, mean, exact, z, grading_detectable(se), GRADING_POWER);
-    if (fabs(z) <= grading_z(grading_level()))
-        return 1;
-    return grading_fail(g,
-                        "%s is %.5f where a uniform point over the lamps' area gives %.5f "
-                        "(%+.2f%%, z = %+.1f over %ld samples): %s",
-                        what, mean, exact, 100.0 * (mean / exact - 1.0), z, count, hint);
-}
-
 static void grade_light_sample(Grading *g)
 {
     Scene scene;
@@ -169,14 +152,14 @@ static void grade_light_sample(Grading *g)
     for (int c = 0; c < ROWS * COLS; c++)
         warp.expected[c] = (double)LIGHT_SAMPLES / (ROWS * COLS);
     if (grading_warp(g, &warp, "the two lamps from below", LEVEL, 1, hint) && on > 1) {
-        if (mean_test(g, "the share of samples on the small lamp (1 / 3 of the area)", t.small,
-                      sum_small2, on, 1.0 / 3.0, hint) &&
-            mean_test(g, "the mean y", t.y, t.y2, on, 0.5, hint) && on - t.large > 1 &&
-            mean_test(g, "the mean x on the small lamp", t.x_small, sum_x_small2, on - t.large,
-                      0.5, hint) &&
+        if (grading_mean_test(g, "the share of samples on the small lamp (1 / 3 of the area)",
+                              t.small, sum_small2, on, 1.0 / 3.0, hint) &&
+            grading_mean_test(g, "the mean y", t.y, t.y2, on, 0.5, hint) && on - t.large > 1 &&
+            grading_mean_test(g, "the mean x on the small lamp", t.x_small, sum_x_small2,
+                              on - t.large, 0.5, hint) &&
             t.large > 1)
-            mean_test(g, "the mean x on the large lamp", t.x_large, sum_x_large2, t.large, 2.0,
-                      hint);
+            grading_mean_test(g, "the mean x on the large lamp", t.x_large, sum_x_large2,
+                              t.large, 2.0, hint);
     }
     warp_free(&warp);
 }
