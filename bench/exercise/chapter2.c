@@ -8,6 +8,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "grading.h"
 #include "hemisphere.h"
@@ -18,7 +19,7 @@
 #define LEVEL grading_level()
 #define RINGS 10
 #define SECTORS 12
-#define WARP_SAMPLES 200000
+#define WARP_SAMPLES 1000000
 
 static void grade_cosine_sample(Grading *g)
 {
@@ -28,17 +29,83 @@ static void grade_cosine_sample(Grading *g)
     Warp warp;
     if (warp_new(g, &warp, RINGS, SECTORS, 4000, labels) != 0)
         return;
+    /* the sums of z, z^2, x, x^2, y, y^2 and x y over the samples */
+    double sums[7] = {0}, squares[7] = {0};
+    long identical = 0;
     for (long i = 0; i < WARP_SAMPLES; i++) {
         Rng rng = rng_for_sample(grading_stream(g, 21), 1, (uint64_t)i);
         double u1, u2;
         rng_pair(&rng, &u1, &u2);
-        warp_add_hemisphere(&warp, i, u1, u2, ASK_VEC3(g, hemisphere_sample_cosine(u1, u2)));
+        Vec3 w = ASK_VEC3(g, hemisphere_sample_cosine(u1, u2));
+        warp_add_hemisphere(&warp, i, u1, u2, w);
+        if (grading_probing(g))
+            continue;
+        identical += vec3_length(vec3_sub(w, hemisphere_sample_cosine(u1, u2))) <= 1e-12;
+        const double values[7] = {w.z, w.z * w.z, w.x, w.x * w.x, w.y, w.y * w.y, w.x * w.y};
+        for (int k = 0; k < 7; k++)
+            sums[k] += values[k], squares[k] += values[k] * values[k];
     }
+    const char *hint = "is cos(theta) = sqrt(1 - u1), sin(theta) = sqrt(u1) and phi = 2 pi u2 "
+                       "(eq. 12, docs/chapter2.md)?";
     warp_expect_cosine(&warp, WARP_SAMPLES);
-    grading_warp(g, &warp, "the hemisphere seen from above", LEVEL, 1,
-                 "is cos(theta) = sqrt(1 - u1), sin(theta) = sqrt(u1) and phi = 2 pi u2 "
-                 "(eq. 12, docs/chapter2.md)?");
+    if (!grading_probing(g))
+        grading_note(g,
+                     "%ld of %ld directions identical to the solution's from the same (u1, u2)",
+                     identical, (long)WARP_SAMPLES);
+    if (grading_warp(g, &warp, "the hemisphere seen from above", LEVEL, 1, hint) &&
+        !grading_probing(g)) {
+        /* Moments of the density cos(theta) / pi: E z = 2/3, E z^2 = 1/2, E x = E y = E x y
+         * = 0, E x^2 = E y^2 = 1/4. */
+        static const char *const names[7] = {
+            "the mean cos(theta)", "the mean cos^2(theta)", "the mean x",  "the mean x^2",
+            "the mean y",          "the mean y^2",          "the mean x y"};
+        static const double exact[7] = {2.0 / 3.0, 0.5, 0.0, 0.25, 0.0, 0.25, 0.0};
+        for (int k = 0; k < 7 && !g->failed; k++)
+            grading_mean_test(g, names[k], sums[k], squares[k], WARP_SAMPLES, exact[k], hint);
+    }
     warp_free(&warp);
+}
+
+/* The pdf at the sampler's own directions (exercise 2.1's): cos(theta) / pi at each, and
+ * the solid angle of the cap cos(theta) > 1/2, pi, as the mean of [cos(theta) > 1/2] /
+ * pdf. */
+#define PDF_SAMPLES 200000
+static void grade_pdf_at_samples(Grading *g)
+{
+    double sum = 0.0, sum2 = 0.0;
+    long wrong = 0;
+    Vec3 first = vec3(0, 0, 0);
+    double first_pdf = 0.0;
+    for (long i = 0; i < PDF_SAMPLES; i++) {
+        Rng rng = rng_for_sample(grading_stream(g, 23), 1, (uint64_t)i);
+        double u1, u2;
+        rng_pair(&rng, &u1, &u2);
+        Vec3 w = ASK_VEC3(g, hemisphere_sample_cosine(u1, u2));
+        double pdf = ASK(g, hemisphere_pdf_cosine(w));
+        if (grading_probing(g))
+            continue;
+        if (fabs(pdf - fmax(w.z, 0.0) / PI) > 1e-9) {
+            if (!wrong++)
+                first = w, first_pdf = pdf;
+        }
+        double term = w.z > 0.5 && pdf > 0.0 ? 1.0 / pdf : 0.0;
+        sum += term, sum2 += term * term;
+    }
+    if (grading_probing(g))
+        return;
+    if (wrong) {
+        grading_fail(g,
+                     "at %ld of the %ld directions the sampler (exercise 2.1) draws, the pdf "
+                     "is not cos(theta) / pi: %.6f at cos(theta) = %.4f, where %.6f is right",
+                     wrong, (long)PDF_SAMPLES, first_pdf, first.z, fmax(first.z, 0.0) / PI);
+        return;
+    }
+    grading_mean_test(g,
+                      "the solid angle of the cap cos(theta) > 1/2 from the sampler's "
+                      "directions, the mean of [cos(theta) > 1/2] / pdf",
+                      sum, sum2, PDF_SAMPLES, PI,
+                      "the pdf must be the density of the sampler's directions in solid "
+                      "angle, cos(theta) / pi");
 }
 
 static void grade_cosine_pdf(Grading *g)
@@ -81,6 +148,7 @@ static void grade_cosine_pdf(Grading *g)
                  "%d random directions over the whole sphere against cos(theta) / pi above "
                  "the surface, 0 below",
                  checked);
+    grade_pdf_at_samples(g);
 }
 
 static void grade_lambert(Grading *g)
@@ -125,8 +193,172 @@ static const PathSettings path_settings = {.max_depth = 4};
 static const RenderCheck path_check = {
     render_check_room, path_radiance, &path_settings, 24, 64, 2048};
 
+/* A lamp in mid-air, facing down, between a floor and a ceiling, seen from above (its
+ * back, and the floor it lights around it), from below (its front) and along the floor
+ * at a grazing angle (the floor a little tilted, so that its hit points lie off it by
+ * rounding, and a sphere); and the room. */
+#define MID_AIR                                                                                \
+    "material white lambert 0.7 0.5 0.3\n"                                                     \
+    "material lamp light 4 3 2\n"                                                              \
+    "quad lamp -0.5 -0.5 0   -0.5 0.5 0   0.5 0.5 0   0.5 -0.5 0\n"                            \
+    "quad white -5 -5 -1.037   5 -5 -0.983   5 5 -0.961   -5 5 -1.015\n"                       \
+    "quad white -5 -5 1   -5 5 1   5 5 1   5 -5 1\n"                                           \
+    "sphere white 1.3 0.9 -0.62 0.37\n"
+
+typedef struct {
+    const char *scene, *name;
+    const char *hint; /* what makes it too bright, or NULL */
+} PathView;
+
+static const PathView path_views[] = {
+    {render_check_room, "the room", NULL},
+    {"camera 0 0 0.8   -0.6 -0.6 0.3   0.6 -0.6 0.3   -0.6 0.6 0.3\n" MID_AIR,
+     "a lamp in mid-air seen from above (its back)",
+     "a lamp emits from its front only: add its emission where the path arrives on the front "
+     "(x.front)"},
+    {"camera 0 0 -0.8   -0.6 -0.6 -0.3   0.6 -0.6 -0.3   -0.6 0.6 -0.3\n" MID_AIR,
+     "a lamp in mid-air seen from below (its front)", NULL},
+    {"camera 0 -4 -0.9   -0.5 -3 -1   0.5 -3 -1   -0.5 -3 -0.7\n" MID_AIR,
+     "a floor seen at a grazing angle under a lamp in mid-air", NULL},
+};
+#define PATH_VIEWS (int)(sizeof path_views / sizeof path_views[0])
+#define PATH_GRID 8
+#define PATH_SAMPLES 256
+
+/* The paired differences of one view: your path minus the solution's from the same
+ * random numbers. */
+typedef struct {
+    long samples, differ, darker, bounces_differ;
+    long unlike_deeper,
+        unlike_shallower; /* paths unlike the solution's with max_depth + 1, - 1 */
+    double yours, solution, difference, difference2;
+} PathPairs;
+
+/* One view's paths, each through a random point of a pixel of a PATH_GRID^2 grid. */
+static void path_pairs(Grading *g, int view, PathPairs *pairs)
+{
+    memset(pairs, 0, sizeof *pairs);
+    Scene scene;
+    if (grading_scene(g, path_views[view].scene, &scene) != 0)
+        return;
+    for (int pixel = 0; pixel < PATH_GRID * PATH_GRID; pixel++)
+        for (int k = 0; k < PATH_SAMPLES; k++) {
+            TestRandom where = test_random(grading_stream(g, 24), (uint64_t)view,
+                                           (uint64_t)(pixel * PATH_SAMPLES + k));
+            double u = test_uniform(&where), v = test_uniform(&where);
+            Ray ray = camera_ray(&scene.camera, PATH_GRID, PATH_GRID, pixel % PATH_GRID,
+                                 pixel / PATH_GRID, u, v);
+            Rng rng = rng_for_sample(grading_stream(g, 25), (uint64_t)(view * 4096 + pixel),
+                                     (uint64_t)k);
+            Rng again = rng, deeper = rng, shallower = rng;
+            RayCounts counts = {0}, right_counts = {0};
+            Vec3 got = vec3(0, 0, 0);
+            if (grading_probing(g))
+                got = path_radiance(&scene, ray, &rng, &path_settings, &counts);
+            got = ASK_VEC3(g, got);
+            double bounces = ASK(g, (double)counts.bounce);
+            if (grading_not_finite(g, got.x + got.y + got.z, "the radiance"))
+                break;
+            if (grading_probing(g))
+                continue;
+            Vec3 right = path_radiance(&scene, ray, &again, &path_settings, &right_counts);
+            double a = got.x + got.y + got.z, b = right.x + right.y + right.z;
+            pairs->samples++;
+            pairs->yours += a;
+            pairs->solution += b;
+            pairs->difference += a - b;
+            pairs->difference2 += (a - b) * (a - b);
+            int differs = fabs(a - b) > 1e-12 + 1e-9 * fabs(b);
+            pairs->differ += differs;
+            pairs->darker += differs && a < b;
+            pairs->bounces_differ += bounces != (double)right_counts.bounce;
+            PathSettings more = path_settings, fewer = path_settings;
+            more.max_depth++, fewer.max_depth--;
+            Vec3 r1 = path_radiance(&scene, ray, &deeper, &more, &right_counts);
+            Vec3 r2 = path_radiance(&scene, ray, &shallower, &fewer, &right_counts);
+            double c1 = r1.x + r1.y + r1.z, c2 = r2.x + r2.y + r2.z;
+            pairs->unlike_deeper += fabs(a - c1) > 1e-12 + 1e-9 * fabs(c1);
+            pairs->unlike_shallower += fabs(a - c2) > 1e-12 + 1e-9 * fabs(c2);
+        }
+    scene_free(&scene);
+}
+
+/* The paths against the solution's, view by view: a paired z-test of the mean radiance at
+ * the course's level, exact where the random numbers are used as the solution uses them. */
+static void grade_path_pairs(Grading *g)
+{
+    PathPairs pairs[PATH_VIEWS];
+    double z[PATH_VIEWS];
+    int worst = -1;
+    for (int view = 0; view < PATH_VIEWS && !g->failed; view++) {
+        PathPairs *p = &pairs[view];
+        path_pairs(g, view, p);
+        if (grading_probing(g) || g->failed || p->samples < 2)
+            continue;
+        long n = p->samples;
+        double mean = p->difference / n;
+        double se = sqrt(fmax(0.0, p->difference2 / n - mean * mean) / (n - 1));
+        z[view] = se > 0.0 ? mean / se : (fabs(mean) <= 1e-12 ? 0.0 : INFINITY);
+        grading_note(g,
+                     "%s: %ld paths, %ld differ from the solution's from the same random "
+                     "numbers; mean radiance %.5f, the solution's %.5f (%+.3f%%, paired z = "
+                     "%+.1f; a bias of %.2g detected at power %.2f)",
+                     path_views[view].name, n, p->differ, p->yours / (3.0 * n),
+                     p->solution / (3.0 * n),
+                     p->solution != 0.0 ? 100.0 * (p->yours / p->solution - 1.0) : 0.0, z[view],
+                     grading_detectable(se) / 3.0, GRADING_POWER);
+        if (fabs(z[view]) > grading_z(grading_level()) &&
+            (worst < 0 || fabs(z[view]) > fabs(z[worst])))
+            worst = view;
+    }
+    if (grading_probing(g) || g->failed)
+        return;
+    if (worst >= 0) {
+        const PathPairs *p = &pairs[worst];
+        long n = p->samples;
+        double relative = p->solution != 0.0 ? p->yours / p->solution - 1.0 : 0.0;
+        const char *hint = relative > 0.0 && path_views[worst].hint
+                               ? path_views[worst].hint
+                               : "does the path add throughput times the emission on the front "
+                                 "of a surface, stop at a light or at max_depth, take each "
+                                 "bounce's weight and start each bounce ray off its surface "
+                                 "(ray_spawn)?";
+        if (p->unlike_deeper == 0)
+            hint = "every path equals the solution's with max_depth + 1 segments: the path "
+                   "makes one segment too many (stop when segment >= s->max_depth, the camera "
+                   "ray being the first)";
+        else if (p->unlike_shallower == 0)
+            hint = "every path equals the solution's with max_depth - 1 segments: the path "
+                   "stops one segment early (the camera ray is segment 1)";
+        else if (p->darker >= 0.9 * p->differ && p->differ < n / 4)
+            hint =
+                "only a few paths differ, nearly all darker: light lost on the way, as when a "
+                "bounce ray started exactly on its surface hits that surface again (acne): "
+                "ray_spawn(x.hit.point, x.normal, direction, x.hit.scale) moves it off";
+        grading_fail(g,
+                     "in %s your paths are %.2f%% too %s (mean %.5f where the solution's "
+                     "paths from the same random numbers give %.5f; %ld of %ld differ, %ld of "
+                     "them darker; paired z = %+.1f): %s",
+                     path_views[worst].name, 100.0 * fabs(relative),
+                     relative < 0.0 ? "dark" : "bright", p->yours / (3.0 * n),
+                     p->solution / (3.0 * n), p->differ, n, p->darker, z[worst], hint);
+        return;
+    }
+    for (int view = 0; view < PATH_VIEWS; view++)
+        if (pairs[view].bounces_differ > 0 && pairs[view].differ == 0) {
+            grading_fail(g,
+                         "in %s the radiance is right but counts->bounce differs from the "
+                         "solution's in %ld of %ld paths: count each bounce once "
+                         "(counts->bounce++), the camera ray not",
+                         path_views[view].name, pairs[view].bounces_differ,
+                         pairs[view].samples);
+            return;
+        }
+}
+
 static void grade_path(Grading *g)
 {
+    grade_path_pairs(g);
     grading_render(
         g, &path_check, LEVEL,
         "does a hit on the front of a light add throughput times its emission, does "
@@ -145,7 +377,7 @@ const Exercise exercises[] = {
      "Return the density in solid angle of the cosine sampler at the unit local direction "
      "w_local: cos(theta) / pi (cos(theta) = w_local.z) above the surface, 0 below. See "
      "docs/chapter2.md, section 2.",
-     "return 0.0;", grade_cosine_pdf, NULL, ""},
+     "return 0.0;", grade_cosine_pdf, NULL, "2.1"},
     {"2.3", "lambert_brdf",
      "Return the Lambertian BRDF of reflectance rho, f = rho / pi (eq. 8): the same for every "
      "pair of directions, so that f cos(theta) integrated over the hemisphere is rho. See "
