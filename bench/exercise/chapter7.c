@@ -272,6 +272,24 @@ static int grade_densities_read(Grading *g, const Scene *scene)
     return 1;
 }
 
+/* One MIS estimate of the light at x (green): a weighted shadow ray and a weighted bounce,
+ * as the final path tracer combines them (direct_light, direct_light_hit_weight). */
+static double mis_estimate(const Scene *scene, const Vertex *x, const PathSettings *settings,
+                           Rng *rng)
+{
+    RayCounts counts = {0};
+    Vec3 direction, direct = direct_light(scene, x, 0, settings, rng, &counts);
+    double bounce_pdf, estimate = direct.y;
+    Vec3 weight = sphere_guide_bounce(scene, x, 0.0, rng, &direction, &bounce_pdf);
+    Vertex y;
+    if (path_vertex(scene, ray_spawn(x->hit.point, x->normal, direction, x->hit.scale), &y) &&
+        y.front && material_emits(y.material))
+        estimate += weight.y * y.material->emission.y *
+                    direct_light_hit_weight(scene, settings, bounce_pdf, y.hit.t,
+                                            vec3_dot(y.wo, y.hit.normal));
+    return estimate;
+}
+
 /* The light at the floor point by MIS, a shadow ray and a bounce each weighted
  * (direct_light and direct_light_hit_weight, as the final path tracer combines them),
  * against the exact (rho / pi) Le times the lamp's projected solid angle, and paired with
@@ -287,22 +305,9 @@ static void grade_mis_estimate(Grading *g, const Scene *scene)
     }
     double exact = 0.5 / PI * 10.0 * lamp_projected_solid_angle();
     double sum = 0.0, sum2 = 0.0, dsum = 0.0, dsum2 = 0.0;
-    RayCounts counts = {0};
     for (long i = 0; i < MIS_SAMPLES; i++) {
         Rng rng = rng_for_sample(grading_stream(g, 74), 1, (uint64_t)i), again = rng;
-        double estimate = 0.0;
-        if (grading_probing(g)) {
-            Vec3 direct = direct_light(scene, &x, 0, &settings, &rng, &counts), direction;
-            double bounce_pdf;
-            Vec3 weight = sphere_guide_bounce(scene, &x, 0.0, &rng, &direction, &bounce_pdf);
-            Vertex y;
-            Ray bounce = ray_spawn(x.hit.point, x.normal, direction, x.hit.scale);
-            estimate = direct.y;
-            if (path_vertex(scene, bounce, &y) && y.front && material_emits(y.material))
-                estimate += weight.y * y.material->emission.y *
-                            direct_light_hit_weight(scene, &settings, bounce_pdf, y.hit.t,
-                                                    vec3_dot(y.wo, y.hit.normal));
-        }
+        double estimate = grading_probing(g) ? mis_estimate(scene, &x, &settings, &rng) : 0.0;
         estimate = ASK(g, estimate);
         if (grading_not_finite(g, estimate, "the MIS estimate"))
             return;
@@ -310,17 +315,7 @@ static void grade_mis_estimate(Grading *g, const Scene *scene)
         sum2 += estimate * estimate;
         if (grading_probing(g))
             continue;
-        /* the solution's estimate on the same numbers */
-        Vec3 direct = direct_light(scene, &x, 0, &settings, &again, &counts), direction;
-        double bounce_pdf, solution;
-        Vec3 weight = sphere_guide_bounce(scene, &x, 0.0, &again, &direction, &bounce_pdf);
-        Vertex y;
-        solution = direct.y;
-        if (path_vertex(scene, ray_spawn(x.hit.point, x.normal, direction, x.hit.scale), &y) &&
-            y.front && material_emits(y.material))
-            solution += weight.y * y.material->emission.y *
-                        direct_light_hit_weight(scene, &settings, bounce_pdf, y.hit.t,
-                                                vec3_dot(y.wo, y.hit.normal));
+        double solution = mis_estimate(scene, &x, &settings, &again); /* the solution's */
         dsum += estimate - solution;
         dsum2 += (estimate - solution) * (estimate - solution);
     }
