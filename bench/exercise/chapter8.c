@@ -332,6 +332,8 @@ static int photons_check(Grading *g, const Scene *scene, Warp *warp, Warp *joint
         PhotonRay photon = {{vec3(0, 0, 0), vec3(0, 0, 0)}, vec3(0, 0, 0)};
         if (grading_probing(g))
             photon = photon_emit(scene, SHOT, u[0], u[1], u[2], u[3], u[4]);
+        /* the lamp point the student's own area_light_sample (chapter 3) gives */
+        Vec3 own = ASK_VEC3(g, area_light_sample(scene, u[0], u[1], u[2]).point);
         photon.ray.origin = grading_ask_vec3(g, photon.ray.origin);
         photon.ray.dir = grading_ask_vec3(g, photon.ray.dir);
         photon.power = grading_ask_vec3(g, photon.power);
@@ -343,13 +345,20 @@ static int photons_check(Grading *g, const Scene *scene, Warp *warp, Warp *joint
         if (grading_not_finite(g, vec3_length(o) + vec3_length(photon.ray.dir) + photon.power.y,
                                "a photon's start, direction or power"))
             return 0;
-        if (vec3_length(vec3_sub(o, y.point)) > 1e-6)
+        if (vec3_length(vec3_sub(o, own)) > 1e-6)
             return grading_fail(
                 g,
                 "photon %ld starts at (%.3f, %.3f, %.3f), where "
                 "area_light_sample(scene, u_select, u1, u2) puts its lamp point "
                 "at (%.3f, %.3f, %.3f)",
-                k, o.x, o.y, o.z, y.point.x, y.point.y, y.point.z);
+                k, o.x, o.y, o.z, own.x, own.y, own.z);
+        if (!(fabs(own.z - y.point.z) <= 1e-9) || !(fabs(own.x) <= 1.0 + 1e-9) ||
+            !(fabs(own.y) <= 1.0 + 1e-9))
+            return grading_fail(g,
+                                "exercise 3.1 (area_light_sample), which photon_emit calls, "
+                                "puts lamp point %ld at (%.3f, %.3f, %.3f), off the lamp (the "
+                                "square |x|, |y| <= 1 at z = %.2f)",
+                                k, own.x, own.y, own.z, y.point.z);
         double share = PI * scene->light_area / SHOT;
         Vec3 right_power = vec3_scale(y.emission, share);
         if (fabs(photon.power.x / right_power.x - photon.power.y / right_power.y) > 1e-9 ||
@@ -471,7 +480,8 @@ static void grade_emit(Grading *g)
                          "the photons' directions against where on the lamp they left from",
                          LEVEL, 1,
                          "are the direction's numbers u3, u4 other than the point's u1, u2 "
-                         "(the direction must not depend on where it starts)?");
+                         "(the direction must not depend on where it starts), and are the lamp "
+                         "points uniform over its area (area_light_sample, exercise 3.1)?");
     }
     warp_free(&joint);
     warp_free(&warp);
