@@ -56,6 +56,32 @@ static const char *const density_words[DENSITY_FORMS] = {
     "from its own incoming direction",
 };
 
+/* The BRDFs the estimate reads through diffuse_brdf (exercises 2.3 and 5.4) at the first
+ * photons' directions, against the solution's. Returns 1 when they agree. */
+static int brdfs_rechecked(Grading *g, const Material floors[2], const Photon *photons)
+{
+    Vec3 n = vec3(0, 0, 1), wo = vec3_normalize(vec3(0.2, 0.1, 1.0));
+    for (int k = 0; k < 2; k++)
+        for (int i = 0; i < 50; i++) {
+            if (photons[i].incoming.z <= 0.0)
+                continue;
+            Vec3 got = ASK_VEC3(g, diffuse_brdf(&floors[k], n, photons[i].incoming, wo));
+            if (grading_probing(g))
+                continue;
+            Vec3 want = diffuse_brdf(&floors[k], n, photons[i].incoming, wo);
+            if (vec3_length(vec3_sub(got, want)) <= 1e-9 * vec3_length(want))
+                continue;
+            return grading_fail(g,
+                                "exercise %s (%s), which diffuse_brdf calls for the estimate's "
+                                "f, is wrong: f = (%.5f, %.5f, %.5f) where (%.5f, %.5f, %.5f) "
+                                "is right (the %s floor)",
+                                k == 0 ? "2.3" : "5.4",
+                                k == 0 ? "lambert_brdf" : "oren_nayar_brdf", got.x, got.y,
+                                got.z, want.x, want.y, want.z, floors[k].name);
+        }
+    return 1;
+}
+
 static void grade_density(Grading *g)
 {
     Photon *photons = malloc(PHOTONS * sizeof *photons);
@@ -91,6 +117,11 @@ static void grade_density(Grading *g)
          .sigma = 0.8}};
     const Vec3 points[] = {{0, 0, 0}, {0.3, -0.2, 0}, {-0.5, 0.4, 0}};
     const double radii[] = {0.1, 0.25, 0.4};
+    if (!brdfs_rechecked(g, floors, photons)) {
+        photon_map_free(&map);
+        free(photons);
+        return;
+    }
     enum {
         ESTIMATES = 6
     };
