@@ -22,6 +22,15 @@
 #define SECTORS 12
 #define WARP_SAMPLES 1000000
 
+/* Sample i of the stream: its (u1, u2) and the direction the student's sampler makes of
+ * them. */
+static Vec3 ask_cosine_sample(Grading *g, uint64_t stream, long i, double *u1, double *u2)
+{
+    Rng rng = rng_for_sample(grading_stream(g, stream), 1, (uint64_t)i);
+    rng_pair(&rng, u1, u2);
+    return ASK_VEC3(g, hemisphere_sample_cosine(*u1, *u2));
+}
+
 static void grade_cosine_sample(Grading *g)
 {
     const WarpLabels labels = {"ring", "nearest the pole", "nearest the horizon",
@@ -34,10 +43,8 @@ static void grade_cosine_sample(Grading *g)
     double sums[7] = {0}, squares[7] = {0};
     long identical = 0;
     for (long i = 0; i < WARP_SAMPLES; i++) {
-        Rng rng = rng_for_sample(grading_stream(g, 21), 1, (uint64_t)i);
         double u1, u2;
-        rng_pair(&rng, &u1, &u2);
-        Vec3 w = ASK_VEC3(g, hemisphere_sample_cosine(u1, u2));
+        Vec3 w = ask_cosine_sample(g, 21, i, &u1, &u2);
         warp_add_hemisphere(&warp, i, u1, u2, w);
         if (grading_probing(g))
             continue;
@@ -78,10 +85,8 @@ static void grade_pdf_at_samples(Grading *g)
     Vec3 first = vec3(0, 0, 0);
     double first_pdf = 0.0;
     for (long i = 0; i < PDF_SAMPLES; i++) {
-        Rng rng = rng_for_sample(grading_stream(g, 23), 1, (uint64_t)i);
         double u1, u2;
-        rng_pair(&rng, &u1, &u2);
-        Vec3 w = ASK_VEC3(g, hemisphere_sample_cosine(u1, u2));
+        Vec3 w = ask_cosine_sample(g, 23, i, &u1, &u2);
         double pdf = ASK(g, hemisphere_pdf_cosine(w));
         if (grading_probing(g))
             continue;
