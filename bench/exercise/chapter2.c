@@ -14,12 +14,22 @@
 #include "hemisphere.h"
 #include "lambert.h"
 #include "path.h"
+#include "pixel_sampling.h"
 #include "render_check.h"
 
 #define LEVEL grading_level()
 #define RINGS 10
 #define SECTORS 12
 #define WARP_SAMPLES 1000000
+
+/* Sample i of the stream: its (u1, u2) and the direction the student's sampler makes of
+ * them. */
+static Vec3 ask_cosine_sample(Grading *g, uint64_t stream, long i, double *u1, double *u2)
+{
+    Rng rng = rng_for_sample(grading_stream(g, stream), 1, (uint64_t)i);
+    rng_pair(&rng, u1, u2);
+    return ASK_VEC3(g, hemisphere_sample_cosine(*u1, *u2));
+}
 
 static void grade_cosine_sample(Grading *g)
 {
@@ -33,10 +43,8 @@ static void grade_cosine_sample(Grading *g)
     double sums[7] = {0}, squares[7] = {0};
     long identical = 0;
     for (long i = 0; i < WARP_SAMPLES; i++) {
-        Rng rng = rng_for_sample(grading_stream(g, 21), 1, (uint64_t)i);
         double u1, u2;
-        rng_pair(&rng, &u1, &u2);
-        Vec3 w = ASK_VEC3(g, hemisphere_sample_cosine(u1, u2));
+        Vec3 w = ask_cosine_sample(g, 21, i, &u1, &u2);
         warp_add_hemisphere(&warp, i, u1, u2, w);
         if (grading_probing(g))
             continue;
@@ -77,10 +85,8 @@ static void grade_pdf_at_samples(Grading *g)
     Vec3 first = vec3(0, 0, 0);
     double first_pdf = 0.0;
     for (long i = 0; i < PDF_SAMPLES; i++) {
-        Rng rng = rng_for_sample(grading_stream(g, 23), 1, (uint64_t)i);
         double u1, u2;
-        rng_pair(&rng, &u1, &u2);
-        Vec3 w = ASK_VEC3(g, hemisphere_sample_cosine(u1, u2));
+        Vec3 w = ask_cosine_sample(g, 23, i, &u1, &u2);
         double pdf = ASK(g, hemisphere_pdf_cosine(w));
         if (grading_probing(g))
             continue;
@@ -366,6 +372,256 @@ static void grade_path(Grading *g)
         "bounce's weight (docs/chapter2.md)?");
 }
 
+/* The sub-pixel counts tried: squares, rows of unequal length, primes, 1. */
+static const int subpixel_counts[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 12, 16, 17, 25, 64};
+#define SUBPIXEL_COUNTS (int)(sizeof subpixel_counts / sizeof subpixel_counts[0])
+#define PIXEL_TRIALS 48
+#define JITTER_CELLS 4
+
+typedef struct {
+    long tried, identical, outside, other_cell, neighbour, swapped, draws_wrong;
+    int n, s, cell; /* the first misplaced sample: sample s of n in cell `cell` */
+    double u, v;
+    double jitter[JITTER_CELLS * JITTER_CELLS + 1], sums[2], squares[2];
+} PixelTally;
+
+/* Which cell of n holds (u, v), or -1. */
+static int cell_of(double u, double v, int n)
+{
+    for (int k = 0; k < n; k++) {
+        double u0, v0, w, h;
+        pixel_stratum_bounds(k, n, &u0, &v0, &w, &h);
+        if (u >= u0 && u < u0 + w && v >= v0 && v < v0 + h)
+            return k;
+    }
+    return -1;
+}
+
+static void tally_subpixel(PixelTally *t, int n, int s, Rng rng, double u, double v,
+                           double next)
+{
+    double u0, v0, w, h, right_u, right_v;
+    pixel_stratum_bounds(s, n, &u0, &v0, &w, &h);
+    pixel_position(PIXEL_SUBPIXELS, s, n, &rng, &right_u, &right_v);
+    t->tried++;
+    t->identical += fabs(u - right_u) <= 1e-12 && fabs(v - right_v) <= 1e-12;
+    t->draws_wrong += next != rng_uniform(&rng);
+    if (!(u >= 0.0 && u < 1.0 && v >= 0.0 && v < 1.0)) {
+        if (!t->outside++ && !t->other_cell)
+            t->n = n, t->s = s, t->cell = -1, t->u = u, t->v = v;
+        return;
+    }
+    if (!(u >= u0 && u < u0 + w && v >= v0 && v < v0 + h)) {
+        int k = cell_of(u, v, n);
+        if (!t->other_cell++ && !t->outside)
+            t->n = n, t->s = s, t->cell = k, t->u = u, t->v = v;
+        t->neighbour += k == s - 1 || k == s + 1;
+        t->swapped += v >= u0 && v < u0 + w && u >= v0 && u < v0 + h;
+        return;
+    }
+    double ju = (u - u0) / w, jv = (v - v0) / h;
+    int cu = (int)(ju * JITTER_CELLS), cv = (int)(jv * JITTER_CELLS);
+    t->jitter[(cv < JITTER_CELLS ? cv : JITTER_CELLS - 1) * JITTER_CELLS +
+              (cu < JITTER_CELLS ? cu : JITTER_CELLS - 1)] += 1.0;
+    t->sums[0] += ju, t->squares[0] += ju * ju;
+    t->sums[1] += jv, t->squares[1] += jv * jv;
+}
+
+static void grade_pixel_position(Grading *g)
+{
+    static PixelTally t;
+    memset(&t, 0, sizeof t);
+    for (int c = 0; c < SUBPIXEL_COUNTS; c++) {
+        int n = subpixel_counts[c];
+        for (int s = 0; s < n; s++)
+            for (int k = 0; k < PIXEL_TRIALS; k++) {
+                Rng rng = rng_for_sample(grading_stream(g, 26), (uint64_t)n,
+                                         (uint64_t)(s * PIXEL_TRIALS + k));
+                Rng mine = rng;
+                double u = 0.0, v = 0.0;
+                if (grading_probing(g))
+                    pixel_position(PIXEL_SUBPIXELS, s, n, &mine, &u, &v);
+                u = ASK(g, u);
+                v = ASK(g, v);
+                double next = ASK(g, rng_uniform(&mine));
+                if (grading_not_finite(g, u + v, "u + v"))
+                    return;
+                if (!grading_probing(g))
+                    tally_subpixel(&t, n, s, rng, u, v, next);
+            }
+    }
+    /* The other two ways: a uniform point (u, then v) and the centre. */
+    long random_wrong = 0, centre_wrong = 0;
+    for (int k = 0; k < 256; k++) {
+        Rng rng = rng_for_sample(grading_stream(g, 27), 1, (uint64_t)k), mine = rng;
+        double u = 0.0, v = 0.0, cu = 0.0, cv = 0.0;
+        if (grading_probing(g)) {
+            pixel_position(PIXEL_RANDOM, 0, 16, &mine, &u, &v);
+            pixel_position(PIXEL_CENTRE, 0, 1, NULL, &cu, &cv);
+        }
+        u = ASK(g, u), v = ASK(g, v), cu = ASK(g, cu), cv = ASK(g, cv);
+        if (grading_probing(g))
+            continue;
+        double first = rng_uniform(&rng), second = rng_uniform(&rng);
+        random_wrong += u != first || v != second;
+        centre_wrong += cu != 0.5 || cv != 0.5;
+    }
+    if (grading_probing(g))
+        return;
+    grading_note(g,
+                 "%ld sub-pixel samples (n = 1 to 64 cells, each cell %d times): %ld identical "
+                 "to the solution's from the same numbers, %ld outside the pixel, %ld in "
+                 "another cell than their own",
+                 t.tried, PIXEL_TRIALS, t.identical, t.outside, t.other_cell);
+    if (t.outside)
+        grading_fail(g,
+                     "%ld of %ld sub-pixel samples fall outside the pixel: sample %d of %d at "
+                     "(u, v) = (%.4f, %.4f), where u and v must lie in [0, 1): is a row's "
+                     "width 1 / columns and its height columns / n?",
+                     t.outside, t.tried, t.s, t.n, t.u, t.v);
+    else if (t.other_cell) {
+        double u0, v0, w, h;
+        pixel_stratum_bounds(t.s, t.n, &u0, &v0, &w, &h);
+        const char *why = t.swapped == t.other_cell ? ": u and v are swapped"
+                          : t.neighbour == t.other_cell
+                              ? ": each falls into the cell next to its own, an off-by-one"
+                              : "";
+        grading_fail(g,
+                     "%ld of %ld sub-pixel samples fall into another cell than their own: "
+                     "sample %d of %d at (u, v) = (%.4f, %.4f) is in cell %d, where its cell "
+                     "is u in [%.4f, %.4f), v in [%.4f, %.4f)%s (each of the n samples takes "
+                     "one cell: the row's first cell and its number of columns from "
+                     "stratum_row)",
+                     t.other_cell, t.tried, t.s, t.n, t.u, t.v, t.cell, u0, u0 + w, v0, v0 + h,
+                     why);
+    } else if (t.draws_wrong)
+        grading_fail(g,
+                     "after %ld of %ld sub-pixel samples the generator is not where two draws "
+                     "leave it: the jitter takes two numbers, u's then v's, no more, no fewer",
+                     t.draws_wrong, t.tried);
+    else if (random_wrong)
+        grading_fail(g,
+                     "PIXEL_RANDOM: (u, v) is not the sample's first two numbers, u then v, in "
+                     "%ld of 256 samples",
+                     random_wrong);
+    else if (centre_wrong)
+        grading_fail(g, "PIXEL_CENTRE: (u, v) is not (0.5, 0.5), the pixel's centre");
+    if (g->failed || t.identical == t.tried)
+        return;
+    /* Another jitter than the task's: uniform within the cell. */
+    Warp warp;
+    const WarpLabels labels = {"row of the cell", "its bottom", "its top", "column of the cell",
+                               "nowhere"};
+    if (warp_new(g, &warp, JITTER_CELLS, JITTER_CELLS, 0, labels) != 0)
+        return;
+    for (int c = 0; c < JITTER_CELLS * JITTER_CELLS; c++) {
+        warp.observed[c] = t.jitter[c];
+        warp.expected[c] = (double)t.tried / (JITTER_CELLS * JITTER_CELLS);
+    }
+    const char *hint = "the jitter is uniform within the cell: u0 + ju w, v0 + jv h";
+    if (grading_warp(g, &warp, "the jitter within the cells", LEVEL, 1, hint) &&
+        grading_mean_test(g, "the mean jitter across the cell", t.sums[0], t.squares[0],
+                          t.tried, 0.5, hint))
+        grading_mean_test(g, "the mean jitter up the cell", t.sums[1], t.squares[1], t.tried,
+                          0.5, hint);
+    warp_free(&warp);
+}
+
+/* Rays at two triangles and two spheres, from outside and inside, hitting front and back:
+ * the vertex against the solution's path_vertex. */
+static const char vertex_scene[] = "camera 0 -3 0   -1 -2 -1   1 -2 -1   -1 -2 1\n"
+                                   "material white lambert 0.7 0.7 0.7\n"
+                                   "material red lambert 0.7 0.1 0.1\n"
+                                   "quad white -1 -1 0   1 -1 0.2   1 1 0.1   -1 1 -0.1\n"
+                                   "sphere red 0.4 0.3 0.9 0.5\n"
+                                   "sphere white -0.6 -0.2 -0.8 0.6\n";
+#define VERTEX_RAYS 4000
+
+static void grade_vertex(Grading *g)
+{
+    Scene scene;
+    if (grading_scene(g, vertex_scene, &scene) != 0)
+        return;
+    long found_wrong = 0, front_wrong = 0, normal_wrong = 0, never_flipped = 0,
+         flipped_wrong = 0, wo_wrong = 0, wo_along = 0, material_wrong = 0, point_wrong = 0,
+         backs = 0, hits = 0;
+    for (int i = 0; i < VERTEX_RAYS; i++) {
+        TestRandom r = test_random(grading_stream(g, 28), 1, (uint64_t)i);
+        Vec3 origin = vec3_scale(random_unit_vector(&r), 0.2 + 2.5 * test_uniform(&r));
+        Vec3 target = vec3_scale(random_unit_vector(&r), 0.8 * test_uniform(&r));
+        Ray ray = {origin, vec3_normalize(vec3_sub(target, origin))};
+        Vertex x;
+        memset(&x, 0, sizeof x);
+        x.material = scene.materials;
+        int found = grading_probing(g) ? path_vertex(&scene, ray, &x) : 0;
+        found = ASK(g, found) != 0.0;
+        double front = ASK(g, x.front);
+        Vec3 normal = ASK_VEC3(g, x.normal), wo = ASK_VEC3(g, x.wo),
+             point = ASK_VEC3(g, x.hit.point);
+        double material = ASK(g, (double)(x.material - scene.materials));
+        if (grading_probing(g))
+            continue;
+        Vertex right;
+        int right_found = path_vertex(&scene, ray, &right);
+        if (found != right_found) {
+            found_wrong++;
+            continue;
+        }
+        if (!found)
+            continue;
+        hits++;
+        backs += !right.front;
+        front_wrong += (front != 0.0) != right.front;
+        if (vec3_length(vec3_sub(point, right.hit.point)) > 1e-9)
+            point_wrong++;
+        if (vec3_length(vec3_sub(normal, right.normal)) > 1e-9) {
+            normal_wrong++;
+            never_flipped += vec3_length(vec3_sub(normal, right.hit.normal)) <= 1e-9;
+            flipped_wrong += vec3_length(vec3_add(normal, right.normal)) <= 1e-9;
+        }
+        if (vec3_length(vec3_sub(wo, right.wo)) > 1e-9) {
+            wo_wrong++;
+            wo_along += vec3_length(vec3_sub(wo, ray.dir)) <= 1e-9;
+        }
+        material_wrong += material != (double)(right.material - scene.materials);
+    }
+    scene_free(&scene);
+    if (grading_probing(g))
+        return;
+    grading_note(g, "%d rays: %ld hits, %ld of them on the back of their surface", VERTEX_RAYS,
+                 hits, backs);
+    if (found_wrong)
+        grading_fail(g,
+                     "%ld of %d rays find a surface where the solution's path_vertex does not, "
+                     "or none where it does: the vertex is the first hit, scene_intersect",
+                     found_wrong, VERTEX_RAYS);
+    else if (point_wrong)
+        grading_fail(g, "the hit point is not the first hit's in %ld of %ld hits", point_wrong,
+                     hits);
+    else if (front_wrong)
+        grading_fail(g,
+                     "x.front is wrong in %ld of %ld hits%s: the ray arrives on the front when "
+                     "it travels against the surface's normal, d . n < 0",
+                     front_wrong, hits, front_wrong == hits ? " (in all: inverted)" : "");
+    else if (normal_wrong)
+        grading_fail(g,
+                     "x.normal does not face the ray in %ld of %ld hits (%ld on the back of "
+                     "their surface)%s: the shading normal faces the side the ray came from, "
+                     "hit.normal on the front and -hit.normal on the back",
+                     normal_wrong, hits, backs,
+                     never_flipped == normal_wrong
+                         ? ": it is hit.normal, never turned, so a surface seen from its back "
+                           "is shaded as if lit from the other side"
+                     : flipped_wrong == normal_wrong ? ": it is turned the wrong way"
+                                                     : "");
+    else if (wo_wrong)
+        grading_fail(g, "x.wo is wrong in %ld of %ld hits%s: wo = -d, back along the ray",
+                     wo_wrong, hits, wo_along == wo_wrong ? " (it is d, along the ray)" : "");
+    else if (material_wrong)
+        grading_fail(g, "x.material is not the hit surface's in %ld of %ld hits",
+                     material_wrong, hits);
+}
+
 const Exercise exercises[] = {
     {"2.1", "hemisphere_sample_cosine",
      "Return a unit direction (local frame, z the normal) with density cos(theta) / pi, from "
@@ -390,6 +646,26 @@ const Exercise exercises[] = {
      "at a diffuse surface, path_specular otherwise), multiply the throughput by the weight "
      "it returns, count the bounce (counts->bounce) and spawn the next ray with ray_spawn. "
      "See docs/chapter2.md, section 3.",
-     "return vec3(0, 0, 0);", grade_path, &path_check, "2.1"},
+     "return vec3(0, 0, 0);", grade_path, &path_check, "2.1 2.5 2.6"},
+    {"2.5", "pixel_position",
+     "Where sample `sample` of `samples` looks within its pixel, (u, v) in [0, 1)^2. "
+     "PIXEL_RANDOM: u = rng_uniform(rng), then v = rng_uniform(rng). PIXEL_SUBPIXELS: the n = "
+     "samples cells lie in r = round(sqrt(n)) rows, row k holding cells floor(k n / r) to "
+     "floor((k + 1) n / r) - 1 (stratum_row gives a cell's row's first cell and its number of "
+     "columns); cell m = sample of a row with `columns` cells starting at `first` is u in "
+     "[(m - first) / columns, (m - first + 1) / columns), v in [first / n, (first + columns) "
+     "/ n); take the jitter ju = rng_uniform(rng), then jv = rng_uniform(rng), and return the "
+     "point at (ju, jv) of the cell. PIXEL_CENTRE: (0.5, 0.5), drawing nothing. See "
+     "docs/chapter2.md, section 5.",
+     "(void)sampling;\n(void)sample;\n(void)samples;\n(void)rng;\n*u = 0.5;\n*v = 0.5;",
+     grade_pixel_position, NULL, ""},
+    {"2.6", "path_vertex",
+     "Find the first surface along the ray (scene_intersect(scene, ray, INFINITY, &x->hit); "
+     "return 0 when there is none); then fill the vertex: its material "
+     "(&scene->materials[x->hit.material]), whether the ray arrived on the front (d . n < 0 "
+     "for the hit's geometric normal n), the normal turned to face the ray (n on the front, "
+     "-n on the back: the side the ray came from is the side that is shaded and from which "
+     "new rays leave) and wo = -d. Return 1. See docs/chapter2.md, section 3.",
+     "(void)scene;\n(void)ray;\n(void)x;\nreturn 0;", grade_vertex, NULL, ""},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

@@ -102,7 +102,17 @@ static double unrooted_p(const double *in)
     return pow((in[N_I] * c - in[N_T] * in[COS_I]) / (in[N_I] * c + in[N_T] * in[COS_I]), 2.0);
 }
 
+static double zero(const double *in)
+{
+    (void)in;
+    return 0.0;
+}
+
 static const WrongAnswer wrong_s[] = {
+    {"0 at every incidence it gets wrong, as if R_s were never set",
+     "R_s = ((n_i cos_i - n_t cos_t) / (n_i cos_i + n_t cos_t))^2 (eq. 4): is R_s assigned, "
+     "and not R_p twice?",
+     zero},
     {"R_p's formula, ((n_i cos_t - n_t cos_i) / (n_i cos_t + n_t cos_i))^2 (cos_i and cos_t "
      "trade places)",
      "R_s pairs n_i with cos_i and n_t with cos_t: ((n_i cos_i - n_t cos_t) / (n_i cos_i + "
@@ -121,6 +131,10 @@ static const WrongAnswer wrong_s[] = {
 };
 
 static const WrongAnswer wrong_p[] = {
+    {"0 at every incidence it gets wrong, as if R_p were never set",
+     "R_p = ((n_i cos_t - n_t cos_i) / (n_i cos_t + n_t cos_i))^2 (eq. 5): is R_p assigned, "
+     "and not R_s twice?",
+     zero},
     {"R_s's formula, ((n_i cos_i - n_t cos_t) / (n_i cos_i + n_t cos_t))^2 (cos_i and cos_t "
      "trade places)",
      "R_p pairs n_i with cos_t and n_t with cos_i: ((n_i cos_t - n_t cos_i) / (n_i cos_t + "
@@ -174,6 +188,18 @@ static void fail_described(Grading *g, const char *quantity, const double *in,
         return;
     }
     const double *w = in + (long)worst * ARITY, *f = in + (long)first * ARITY;
+    double worst_right = which >= 0 ? w[which] : 0.5 * (w[RIGHT_S] + w[RIGHT_P]);
+    if (largest <= 4e-6 * fmax(fabs(worst_right), 1e-3)) {
+        int digits = grading_decimals(got[worst], worst_right);
+        grading_fail(g,
+                     "%s agrees with %s to about 7 digits only: %s = %.*f at %.0f degrees from "
+                     "index %.2f into %.2f, where %s gives %.*f (wrong at %d of %d incidences, "
+                     "where rounding in doubles stays within 1e-9): a float on the way; keep "
+                     "the arithmetic in doubles",
+                     quantity, equation, quantity, digits, got[worst], w[DEGREES], w[N_I],
+                     w[N_T], equation, digits, worst_right, wrong, points);
+        return;
+    }
     double right = which >= 0 ? w[which] : 0.5 * (w[RIGHT_S] + w[RIGHT_P]);
     char critical[80] = "";
     if (f[N_I] > f[N_T])
@@ -276,11 +302,6 @@ static void grade_polarised(Grading *g)
     fail_described(g, "R_p", in, got_p, POINTS, "eq. 5");
 }
 
-static double integer_half(const double *in)
-{
-    (void)in;
-    return 0.0;
-}
 static double sum(const double *in) { return in[RIGHT_S] + in[RIGHT_P]; }
 static double half_s_plus_p(const double *in) { return 0.5 * in[RIGHT_S] + in[RIGHT_P]; }
 static double swapped_mean(const double *in) { return 0.5 * (swapped_s(in) + swapped_p(in)); }
@@ -294,7 +315,7 @@ static const WrongAnswer wrong_unpolarised[] = {
      "in C",
      "1 / 2 divides two whole numbers, 0 with the remainder dropped; write 0.5 * (R_s + R_p) "
      "or (R_s + R_p) / 2 (eq. 3)",
-     integer_half},
+     zero},
     {"R_s + R_p, the sum",
      "unpolarised light is half s, half p: R = (R_s + R_p) / 2 (eq. 3); the sum reflects "
      "twice the light that arrives beyond the critical angle",
