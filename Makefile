@@ -16,6 +16,8 @@
 #                         sandbox: a CSV and a summary in OUT (docs/exercises.md)
 #   make check-exercises  every chapter's check on the solution (all pass) and on the blank
 #                         exercises (every one fails)
+#   make false-alarms CHAPTER=N SEEDS=200   grade chapter N's solution under SEEDS grading
+#                         seeds (SEED=s: one check's seed) and count the FAILs
 #   make check-sources    every chapter's clean source: compiles alone, no markers left,
 #                         no placeholders, the lesson never reaches into the bench
 #   make sanitize         the tests under AddressSanitizer and UndefinedBehaviorSanitizer
@@ -99,7 +101,7 @@ TEST_SOURCES  := $(wildcard tests/test_*.c bench/tests/test_*.c)
 REFERENCE_BIN := $(BUILD)/reference
 GALLERY       := $(BUILD)/gallery
 
-.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery check-exercises grade-class \
+.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery check-exercises grade-class false-alarms \
         exercise-solutions
 .DEFAULT_GOAL := all
 .SECONDARY:
@@ -204,6 +206,7 @@ EXERCISE_DIR      := $(BUILD)/exercise
 # STUDENT, ONLY, OUT, TRUSTED and DIR reach the recipes' shells through their environment,
 # never pasted into their text, so that any path works (spaces, quotes, a leading dash).
 STUDENT           ?=
+SEED              ?=
 ONLY              ?=
 OUT               ?=
 TRUSTED           ?=
@@ -221,7 +224,7 @@ judge_verified     = if [ "$$(sha256sum < $(call grader_of,$(1)) | cut -c 1-64)"
 	    rm -f $(call grader_of,$(1)) && $(MAKE) --no-print-directory -s $(call grader_of,$(1)) || exit 2; fi; \
 	[ "$${TRUSTED:-}" = 1 ] || sh .ci/install-deps bubblewrap || exit 2; set -f;
 # What bench/exercise/check.sh builds the student's tree with.
-grade_env          = CACHE=$(abspath $(EXERCISE_DIR)/cache/chapter$(1)) CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" LIBS="$(LIBS)" PKG_CFLAGS="$(PKG_CFLAGS)" \
+grade_env          = GRADE_SEED="$${GRADE_SEED:-$(SEED)}" CACHE=$(abspath $(EXERCISE_DIR)/cache/chapter$(1)) CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" LIBS="$(LIBS)" PKG_CFLAGS="$(PKG_CFLAGS)" \
 	BENCH_OBJECTS="$(addprefix $(CURDIR)/,$(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call upto,$(1),$(BENCH_SOURCES))))" \
 	PROBE_FILES="$(addprefix $(CURDIR)/,$(call probe_sources,$(1)))"
 
@@ -259,6 +262,16 @@ grade-class: $(if $(filter $(CHAPTER),$(EXERCISE_CHAPTERS)),$(call grader_of,$(C
 	sh bench/exercise/class.sh $(CHAPTER) "$$DIR" "$${OUT:-$(EXERCISE_DIR)/class/chapter$(CHAPTER)}" \
 	    env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL $(MAKE) --no-print-directory -s BUILD=$(BUILD) \
 	    CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" CC="$(CC)" check-exercise-chapter$(CHAPTER)
+
+# The solution of chapter $(CHAPTER) graded under SEEDS grading seeds (GRADE_SEED = 1 .. SEEDS):
+# every FAIL is a false alarm (bench/exercise/false_alarms.sh).
+SEEDS ?= 200
+false-alarms: $(if $(filter $(CHAPTER),$(EXERCISE_CHAPTERS)),source-chapter$(CHAPTER) $(call grader_of,$(CHAPTER)))
+	@if [ -z "$(filter $(CHAPTER),$(EXERCISE_CHAPTERS))" ]; then \
+	    echo "usage: make false-alarms CHAPTER=N [SEEDS=200] (chapters with exercises: $(strip $(EXERCISE_CHAPTERS)))"; exit 2; fi; \
+	tree=$(EXERCISE_DIR)/false-alarms/chapter$(CHAPTER); rm -rf $$tree && mkdir -p $(EXERCISE_DIR)/false-alarms && \
+	cp -R $(BUILD)/source/chapter$(CHAPTER) $$tree && \
+	MAKE="$(MAKE)" sh bench/exercise/false_alarms.sh $(CHAPTER) $(SEEDS) $$tree
 
 # The solution's checks (the clean source: every exercise passes), their verdicts and
 # pictures copied into $(FIGURES) as chNN_exercise* for the gallery; then (CI) the blank

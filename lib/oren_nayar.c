@@ -31,7 +31,8 @@ double oren_nayar_factor(double sigma, Vec3 wi, Vec3 wo)
     return a + oren_nayar_b(sigma) * fmax(0.0, projected_dot) / cos_beta;
 }
 
-/* Eq. 13: Lambert's rho / pi times the factor, so sigma = 0 is Lambert bit for bit. */
+/* Exercise 5.4, eq. 13: Lambert's rho / pi times the factor, so sigma = 0 is Lambert bit
+ * for bit; reciprocal, as the factor is. */
 Vec3 oren_nayar_brdf(Vec3 rho, double sigma, Vec3 wi, Vec3 wo)
 {
     return vec3_scale(lambert_brdf(rho), oren_nayar_factor(sigma, wi, wo));

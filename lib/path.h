@@ -49,7 +49,8 @@ typedef struct {
     Vec3 wo;     /* unit, back along the incoming ray */
 } Vertex;
 
-/* The first surface along the ray: 1 and *x, or 0 when the ray leaves the scene. */
+/* Exercise 2.6: the first surface along the ray: 1 and *x (its normal turned to face the
+ * ray), or 0 when the ray leaves the scene. */
 int path_vertex(const Scene *scene, Ray ray, Vertex *x);
 
 /* At a diffuse vertex x: a cosine-weighted direction (diffuse.h), and the factor the

@@ -40,9 +40,9 @@ static inline int pixel_uses_subpixels(PixelSampling sampling)
 void pixel_stratum_bounds(int cell, int samples, double *u0, double *v0, double *width,
                           double *height);
 
-/* Point (u, v) of sample `sample` out of `samples`: PIXEL_RANDOM draws u then v from the
- * sample's generator rng, PIXEL_SUBPIXELS the jitter within cell `sample` (< samples);
- * PIXEL_CENTRE draws nothing (rng may be NULL). */
+/* Exercise 2.5: point (u, v) of sample `sample` out of `samples`: PIXEL_RANDOM draws u
+ * then v from the sample's generator rng, PIXEL_SUBPIXELS the jitter within cell `sample`
+ * (< samples); PIXEL_CENTRE draws nothing (rng may be NULL). */
 void pixel_position(PixelSampling sampling, int sample, int samples, Rng *rng, double *u,
                     double *v);
 

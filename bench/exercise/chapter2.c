@@ -4,21 +4,32 @@
  * heights a < b holds b^2 - a^2 of the samples, a sector 1 / 12); its pdf and the
  * Lambert BRDF against their closed forms, the BRDF also through the white furnace
  * it would make (L = Le / (1 - pi f)); the path tracer by its image against the
- * solution's, pixel by pixel. Fixed seeds; significance level 0.01.
+ * solution's, pixel by pixel. Seeds from GRADE_SEED; the course's level (grading.h).
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "grading.h"
 #include "hemisphere.h"
 #include "lambert.h"
 #include "path.h"
+#include "pixel_sampling.h"
 #include "render_check.h"
 
-#define LEVEL 0.01
+#define LEVEL grading_level()
 #define RINGS 10
 #define SECTORS 12
-#define WARP_SAMPLES 200000
+#define WARP_SAMPLES 1000000
+
+/* Sample i of the stream: its (u1, u2) and the direction the student's sampler makes of
+ * them. */
+static Vec3 ask_cosine_sample(Grading *g, uint64_t stream, long i, double *u1, double *u2)
+{
+    Rng rng = rng_for_sample(grading_stream(g, stream), 1, (uint64_t)i);
+    rng_pair(&rng, u1, u2);
+    return ASK_VEC3(g, hemisphere_sample_cosine(*u1, *u2));
+}
 
 static void grade_cosine_sample(Grading *g)
 {
@@ -28,24 +39,86 @@ static void grade_cosine_sample(Grading *g)
     Warp warp;
     if (warp_new(g, &warp, RINGS, SECTORS, 4000, labels) != 0)
         return;
+    /* the sums of z, z^2, x, x^2, y, y^2 and x y over the samples */
+    double sums[7] = {0}, squares[7] = {0};
+    long identical = 0;
     for (long i = 0; i < WARP_SAMPLES; i++) {
-        Rng rng = rng_for_sample(21, 1, (uint64_t)i);
         double u1, u2;
-        rng_pair(&rng, &u1, &u2);
-        warp_add_hemisphere(&warp, i, u1, u2, ASK_VEC3(g, hemisphere_sample_cosine(u1, u2)));
+        Vec3 w = ask_cosine_sample(g, 21, i, &u1, &u2);
+        warp_add_hemisphere(&warp, i, u1, u2, w);
+        if (grading_probing(g))
+            continue;
+        identical += vec3_length(vec3_sub(w, hemisphere_sample_cosine(u1, u2))) <= 1e-12;
+        const double values[7] = {w.z, w.z * w.z, w.x, w.x * w.x, w.y, w.y * w.y, w.x * w.y};
+        for (int k = 0; k < 7; k++)
+            sums[k] += values[k], squares[k] += values[k] * values[k];
     }
+    const char *hint = "is cos(theta) = sqrt(1 - u1), sin(theta) = sqrt(u1) and phi = 2 pi u2 "
+                       "(eq. 12, docs/chapter2.md)?";
     warp_expect_cosine(&warp, WARP_SAMPLES);
-    grading_warp(g, &warp, "the hemisphere seen from above", LEVEL, 1,
-                 "is cos(theta) = sqrt(1 - u1), sin(theta) = sqrt(u1) and phi = 2 pi u2 "
-                 "(eq. 12, docs/chapter2.md)?");
+    if (!grading_probing(g))
+        grading_note(g,
+                     "%ld of %ld directions identical to the solution's from the same (u1, u2)",
+                     identical, (long)WARP_SAMPLES);
+    if (grading_warp(g, &warp, "the hemisphere seen from above", LEVEL, 1, hint) &&
+        !grading_probing(g)) {
+        /* Moments of the density cos(theta) / pi: E z = 2/3, E z^2 = 1/2, E x = E y = E x y
+         * = 0, E x^2 = E y^2 = 1/4. */
+        static const char *const names[7] = {
+            "the mean cos(theta)", "the mean cos^2(theta)", "the mean x",  "the mean x^2",
+            "the mean y",          "the mean y^2",          "the mean x y"};
+        static const double exact[7] = {2.0 / 3.0, 0.5, 0.0, 0.25, 0.0, 0.25, 0.0};
+        for (int k = 0; k < 7 && !g->failed; k++)
+            grading_mean_test(g, names[k], sums[k], squares[k], WARP_SAMPLES, exact[k], hint);
+    }
     warp_free(&warp);
+}
+
+/* The pdf at the sampler's own directions (exercise 2.1's): cos(theta) / pi at each, and
+ * the solid angle of the cap cos(theta) > 1/2, pi, as the mean of [cos(theta) > 1/2] /
+ * pdf. */
+#define PDF_SAMPLES 200000
+static void grade_pdf_at_samples(Grading *g)
+{
+    double sum = 0.0, sum2 = 0.0;
+    long wrong = 0;
+    Vec3 first = vec3(0, 0, 0);
+    double first_pdf = 0.0;
+    for (long i = 0; i < PDF_SAMPLES; i++) {
+        double u1, u2;
+        Vec3 w = ask_cosine_sample(g, 23, i, &u1, &u2);
+        double pdf = ASK(g, hemisphere_pdf_cosine(w));
+        if (grading_probing(g))
+            continue;
+        if (fabs(pdf - fmax(w.z, 0.0) / PI) > 1e-9) {
+            if (!wrong++)
+                first = w, first_pdf = pdf;
+        }
+        double term = w.z > 0.5 && pdf > 0.0 ? 1.0 / pdf : 0.0;
+        sum += term, sum2 += term * term;
+    }
+    if (grading_probing(g))
+        return;
+    if (wrong) {
+        grading_fail(g,
+                     "at %ld of the %ld directions the sampler (exercise 2.1) draws, the pdf "
+                     "is not cos(theta) / pi: %.6f at cos(theta) = %.4f, where %.6f is right",
+                     wrong, (long)PDF_SAMPLES, first_pdf, first.z, fmax(first.z, 0.0) / PI);
+        return;
+    }
+    grading_mean_test(g,
+                      "the solid angle of the cap cos(theta) > 1/2 from the sampler's "
+                      "directions, the mean of [cos(theta) > 1/2] / pdf",
+                      sum, sum2, PDF_SAMPLES, PI,
+                      "the pdf must be the density of the sampler's directions in solid "
+                      "angle, cos(theta) / pi");
 }
 
 static void grade_cosine_pdf(Grading *g)
 {
     int checked = 0;
     for (int i = 0; i < 2000 && !g->failed; i++, checked++) {
-        TestRandom rng = test_random(22, 1, (uint64_t)i);
+        TestRandom rng = test_random(grading_stream(g, 22), 1, (uint64_t)i);
         Vec3 w = random_unit_vector(&rng);
         double pdf = ASK(g, hemisphere_pdf_cosine(w)), right = w.z > 0.0 ? w.z / PI : 0.0;
         if (grading_not_finite(g, pdf, "the pdf"))
@@ -81,6 +154,7 @@ static void grade_cosine_pdf(Grading *g)
                  "%d random directions over the whole sphere against cos(theta) / pi above "
                  "the surface, 0 below",
                  checked);
+    grade_pdf_at_samples(g);
 }
 
 static void grade_lambert(Grading *g)
@@ -125,13 +199,427 @@ static const PathSettings path_settings = {.max_depth = 4};
 static const RenderCheck path_check = {
     render_check_room, path_radiance, &path_settings, 24, 64, 2048};
 
+/* A lamp in mid-air, facing down, between a floor and a ceiling, seen from above (its
+ * back, and the floor it lights around it), from below (its front) and along the floor
+ * at a grazing angle (the floor a little tilted, so that its hit points lie off it by
+ * rounding, and a sphere); and the room. */
+#define MID_AIR                                                                                \
+    "material white lambert 0.7 0.5 0.3\n"                                                     \
+    "material lamp light 4 3 2\n"                                                              \
+    "quad lamp -0.5 -0.5 0   -0.5 0.5 0   0.5 0.5 0   0.5 -0.5 0\n"                            \
+    "quad white -5 -5 -1.037   5 -5 -0.983   5 5 -0.961   -5 5 -1.015\n"                       \
+    "quad white -5 -5 1   -5 5 1   5 5 1   5 -5 1\n"                                           \
+    "sphere white 1.3 0.9 -0.62 0.37\n"
+
+typedef struct {
+    const char *scene, *name;
+    const char *hint; /* what makes it too bright, or NULL */
+} PathView;
+
+static const PathView path_views[] = {
+    {render_check_room, "the room", NULL},
+    {"camera 0 0 0.8   -0.6 -0.6 0.3   0.6 -0.6 0.3   -0.6 0.6 0.3\n" MID_AIR,
+     "a lamp in mid-air seen from above (its back)",
+     "a lamp emits from its front only: add its emission where the path arrives on the front "
+     "(x.front)"},
+    {"camera 0 0 -0.8   -0.6 -0.6 -0.3   0.6 -0.6 -0.3   -0.6 0.6 -0.3\n" MID_AIR,
+     "a lamp in mid-air seen from below (its front)", NULL},
+    {"camera 0 -4 -0.9   -0.5 -3 -1   0.5 -3 -1   -0.5 -3 -0.7\n" MID_AIR,
+     "a floor seen at a grazing angle under a lamp in mid-air", NULL},
+};
+#define PATH_VIEWS (int)(sizeof path_views / sizeof path_views[0])
+#define PATH_GRID 8
+#define PATH_SAMPLES 256
+
+/* The paired differences of one view: your path minus the solution's from the same
+ * random numbers. */
+typedef struct {
+    long samples, differ, darker, bounces_differ;
+    long unlike_deeper,
+        unlike_shallower; /* paths unlike the solution's with max_depth + 1, - 1 */
+    double yours, solution, difference, difference2;
+} PathPairs;
+
+/* One view's paths, each through a random point of a pixel of a PATH_GRID^2 grid. */
+static void path_pairs(Grading *g, int view, PathPairs *pairs)
+{
+    memset(pairs, 0, sizeof *pairs);
+    Scene scene;
+    if (grading_scene(g, path_views[view].scene, &scene) != 0)
+        return;
+    for (int pixel = 0; pixel < PATH_GRID * PATH_GRID; pixel++)
+        for (int k = 0; k < PATH_SAMPLES; k++) {
+            TestRandom where = test_random(grading_stream(g, 24), (uint64_t)view,
+                                           (uint64_t)(pixel * PATH_SAMPLES + k));
+            double u = test_uniform(&where), v = test_uniform(&where);
+            Ray ray = camera_ray(&scene.camera, PATH_GRID, PATH_GRID, pixel % PATH_GRID,
+                                 pixel / PATH_GRID, u, v);
+            Rng rng = rng_for_sample(grading_stream(g, 25), (uint64_t)(view * 4096 + pixel),
+                                     (uint64_t)k);
+            Rng again = rng, deeper = rng, shallower = rng;
+            RayCounts counts = {0}, right_counts = {0};
+            Vec3 got = vec3(0, 0, 0);
+            if (grading_probing(g))
+                got = path_radiance(&scene, ray, &rng, &path_settings, &counts);
+            got = ASK_VEC3(g, got);
+            double bounces = ASK(g, (double)counts.bounce);
+            if (grading_not_finite(g, got.x + got.y + got.z, "the radiance"))
+                break;
+            if (grading_probing(g))
+                continue;
+            Vec3 right = path_radiance(&scene, ray, &again, &path_settings, &right_counts);
+            double a = got.x + got.y + got.z, b = right.x + right.y + right.z;
+            pairs->samples++;
+            pairs->yours += a;
+            pairs->solution += b;
+            pairs->difference += a - b;
+            pairs->difference2 += (a - b) * (a - b);
+            int differs = fabs(a - b) > 1e-12 + 1e-9 * fabs(b);
+            pairs->differ += differs;
+            pairs->darker += differs && a < b;
+            pairs->bounces_differ += bounces != (double)right_counts.bounce;
+            PathSettings more = path_settings, fewer = path_settings;
+            more.max_depth++, fewer.max_depth--;
+            Vec3 r1 = path_radiance(&scene, ray, &deeper, &more, &right_counts);
+            Vec3 r2 = path_radiance(&scene, ray, &shallower, &fewer, &right_counts);
+            double c1 = r1.x + r1.y + r1.z, c2 = r2.x + r2.y + r2.z;
+            pairs->unlike_deeper += fabs(a - c1) > 1e-12 + 1e-9 * fabs(c1);
+            pairs->unlike_shallower += fabs(a - c2) > 1e-12 + 1e-9 * fabs(c2);
+        }
+    scene_free(&scene);
+}
+
+/* The paths against the solution's, view by view: a paired z-test of the mean radiance at
+ * the course's level, exact where the random numbers are used as the solution uses them. */
+static void grade_path_pairs(Grading *g)
+{
+    PathPairs pairs[PATH_VIEWS];
+    double z[PATH_VIEWS];
+    int worst = -1;
+    for (int view = 0; view < PATH_VIEWS && !g->failed; view++) {
+        PathPairs *p = &pairs[view];
+        path_pairs(g, view, p);
+        if (grading_probing(g) || g->failed || p->samples < 2)
+            continue;
+        long n = p->samples;
+        double mean = p->difference / n;
+        double se = sqrt(fmax(0.0, p->difference2 / n - mean * mean) / (n - 1));
+        z[view] = se > 0.0 ? mean / se : (fabs(mean) <= 1e-12 ? 0.0 : INFINITY);
+        grading_note(g,
+                     "%s: %ld paths, %ld differ from the solution's from the same random "
+                     "numbers; mean radiance %.5f, the solution's %.5f (%+.3f%%, paired z = "
+                     "%+.1f; a bias of %.2g detected at power %.2f)",
+                     path_views[view].name, n, p->differ, p->yours / (3.0 * n),
+                     p->solution / (3.0 * n),
+                     p->solution != 0.0 ? 100.0 * (p->yours / p->solution - 1.0) : 0.0, z[view],
+                     grading_detectable(se) / 3.0, GRADING_POWER);
+        if (fabs(z[view]) > grading_z(grading_level()) &&
+            (worst < 0 || fabs(z[view]) > fabs(z[worst])))
+            worst = view;
+    }
+    if (grading_probing(g) || g->failed)
+        return;
+    if (worst >= 0) {
+        const PathPairs *p = &pairs[worst];
+        long n = p->samples;
+        double relative = p->solution != 0.0 ? p->yours / p->solution - 1.0 : 0.0;
+        const char *hint = relative > 0.0 && path_views[worst].hint
+                               ? path_views[worst].hint
+                               : "does the path add throughput times the emission on the front "
+                                 "of a surface, stop at a light or at max_depth, take each "
+                                 "bounce's weight and start each bounce ray off its surface "
+                                 "(ray_spawn)?";
+        if (p->unlike_deeper == 0)
+            hint = "every path equals the solution's with max_depth + 1 segments: the path "
+                   "makes one segment too many (stop when segment >= s->max_depth, the camera "
+                   "ray being the first)";
+        else if (p->unlike_shallower == 0)
+            hint = "every path equals the solution's with max_depth - 1 segments: the path "
+                   "stops one segment early (the camera ray is segment 1)";
+        else if (p->darker >= 0.9 * p->differ && p->differ < n / 4)
+            hint =
+                "only a few paths differ, nearly all darker: light lost on the way, as when a "
+                "bounce ray started exactly on its surface hits that surface again (acne): "
+                "ray_spawn(x.hit.point, x.normal, direction, x.hit.scale) moves it off";
+        grading_fail(g,
+                     "in %s your paths are %.2f%% too %s (mean %.5f where the solution's "
+                     "paths from the same random numbers give %.5f; %ld of %ld differ, %ld of "
+                     "them darker; paired z = %+.1f): %s",
+                     path_views[worst].name, 100.0 * fabs(relative),
+                     relative < 0.0 ? "dark" : "bright", p->yours / (3.0 * n),
+                     p->solution / (3.0 * n), p->differ, n, p->darker, z[worst], hint);
+        return;
+    }
+    for (int view = 0; view < PATH_VIEWS; view++)
+        if (pairs[view].bounces_differ > 0 && pairs[view].differ == 0) {
+            grading_fail(g,
+                         "in %s the radiance is right but counts->bounce differs from the "
+                         "solution's in %ld of %ld paths: count each bounce once "
+                         "(counts->bounce++), the camera ray not",
+                         path_views[view].name, pairs[view].bounces_differ,
+                         pairs[view].samples);
+            return;
+        }
+}
+
 static void grade_path(Grading *g)
 {
+    grade_path_pairs(g);
     grading_render(
         g, &path_check, LEVEL,
         "does a hit on the front of a light add throughput times its emission, does "
         "the path stop at a light or at max_depth, and does the throughput take each "
         "bounce's weight (docs/chapter2.md)?");
+}
+
+/* The sub-pixel counts tried: squares, rows of unequal length, primes, 1. */
+static const int subpixel_counts[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 12, 16, 17, 25, 64};
+#define SUBPIXEL_COUNTS (int)(sizeof subpixel_counts / sizeof subpixel_counts[0])
+#define PIXEL_TRIALS 48
+#define JITTER_CELLS 4
+
+typedef struct {
+    long tried, identical, outside, other_cell, neighbour, swapped, draws_wrong;
+    int n, s, cell; /* the first misplaced sample: sample s of n in cell `cell` */
+    double u, v;
+    double jitter[JITTER_CELLS * JITTER_CELLS + 1], sums[2], squares[2];
+} PixelTally;
+
+/* Which cell of n holds (u, v), or -1. */
+static int cell_of(double u, double v, int n)
+{
+    for (int k = 0; k < n; k++) {
+        double u0, v0, w, h;
+        pixel_stratum_bounds(k, n, &u0, &v0, &w, &h);
+        if (u >= u0 && u < u0 + w && v >= v0 && v < v0 + h)
+            return k;
+    }
+    return -1;
+}
+
+static void tally_subpixel(PixelTally *t, int n, int s, Rng rng, double u, double v,
+                           double next)
+{
+    double u0, v0, w, h, right_u, right_v;
+    pixel_stratum_bounds(s, n, &u0, &v0, &w, &h);
+    pixel_position(PIXEL_SUBPIXELS, s, n, &rng, &right_u, &right_v);
+    t->tried++;
+    t->identical += fabs(u - right_u) <= 1e-12 && fabs(v - right_v) <= 1e-12;
+    t->draws_wrong += next != rng_uniform(&rng);
+    if (!(u >= 0.0 && u < 1.0 && v >= 0.0 && v < 1.0)) {
+        if (!t->outside++ && !t->other_cell)
+            t->n = n, t->s = s, t->cell = -1, t->u = u, t->v = v;
+        return;
+    }
+    if (!(u >= u0 && u < u0 + w && v >= v0 && v < v0 + h)) {
+        int k = cell_of(u, v, n);
+        if (!t->other_cell++ && !t->outside)
+            t->n = n, t->s = s, t->cell = k, t->u = u, t->v = v;
+        t->neighbour += k == s - 1 || k == s + 1;
+        t->swapped += v >= u0 && v < u0 + w && u >= v0 && u < v0 + h;
+        return;
+    }
+    double ju = (u - u0) / w, jv = (v - v0) / h;
+    int cu = (int)(ju * JITTER_CELLS), cv = (int)(jv * JITTER_CELLS);
+    t->jitter[(cv < JITTER_CELLS ? cv : JITTER_CELLS - 1) * JITTER_CELLS +
+              (cu < JITTER_CELLS ? cu : JITTER_CELLS - 1)] += 1.0;
+    t->sums[0] += ju, t->squares[0] += ju * ju;
+    t->sums[1] += jv, t->squares[1] += jv * jv;
+}
+
+static void grade_pixel_position(Grading *g)
+{
+    static PixelTally t;
+    memset(&t, 0, sizeof t);
+    for (int c = 0; c < SUBPIXEL_COUNTS; c++) {
+        int n = subpixel_counts[c];
+        for (int s = 0; s < n; s++)
+            for (int k = 0; k < PIXEL_TRIALS; k++) {
+                Rng rng = rng_for_sample(grading_stream(g, 26), (uint64_t)n,
+                                         (uint64_t)(s * PIXEL_TRIALS + k));
+                Rng mine = rng;
+                double u = 0.0, v = 0.0;
+                if (grading_probing(g))
+                    pixel_position(PIXEL_SUBPIXELS, s, n, &mine, &u, &v);
+                u = ASK(g, u);
+                v = ASK(g, v);
+                double next = ASK(g, rng_uniform(&mine));
+                if (grading_not_finite(g, u + v, "u + v"))
+                    return;
+                if (!grading_probing(g))
+                    tally_subpixel(&t, n, s, rng, u, v, next);
+            }
+    }
+    /* The other two ways: a uniform point (u, then v) and the centre. */
+    long random_wrong = 0, centre_wrong = 0;
+    for (int k = 0; k < 256; k++) {
+        Rng rng = rng_for_sample(grading_stream(g, 27), 1, (uint64_t)k), mine = rng;
+        double u = 0.0, v = 0.0, cu = 0.0, cv = 0.0;
+        if (grading_probing(g)) {
+            pixel_position(PIXEL_RANDOM, 0, 16, &mine, &u, &v);
+            pixel_position(PIXEL_CENTRE, 0, 1, NULL, &cu, &cv);
+        }
+        u = ASK(g, u), v = ASK(g, v), cu = ASK(g, cu), cv = ASK(g, cv);
+        if (grading_probing(g))
+            continue;
+        double first = rng_uniform(&rng), second = rng_uniform(&rng);
+        random_wrong += u != first || v != second;
+        centre_wrong += cu != 0.5 || cv != 0.5;
+    }
+    if (grading_probing(g))
+        return;
+    grading_note(g,
+                 "%ld sub-pixel samples (n = 1 to 64 cells, each cell %d times): %ld identical "
+                 "to the solution's from the same numbers, %ld outside the pixel, %ld in "
+                 "another cell than their own",
+                 t.tried, PIXEL_TRIALS, t.identical, t.outside, t.other_cell);
+    if (t.outside)
+        grading_fail(g,
+                     "%ld of %ld sub-pixel samples fall outside the pixel: sample %d of %d at "
+                     "(u, v) = (%.4f, %.4f), where u and v must lie in [0, 1): is a row's "
+                     "width 1 / columns and its height columns / n?",
+                     t.outside, t.tried, t.s, t.n, t.u, t.v);
+    else if (t.other_cell) {
+        double u0, v0, w, h;
+        pixel_stratum_bounds(t.s, t.n, &u0, &v0, &w, &h);
+        const char *why = t.swapped == t.other_cell ? ": u and v are swapped"
+                          : t.neighbour == t.other_cell
+                              ? ": each falls into the cell next to its own, an off-by-one"
+                              : "";
+        grading_fail(g,
+                     "%ld of %ld sub-pixel samples fall into another cell than their own: "
+                     "sample %d of %d at (u, v) = (%.4f, %.4f) is in cell %d, where its cell "
+                     "is u in [%.4f, %.4f), v in [%.4f, %.4f)%s (each of the n samples takes "
+                     "one cell: the row's first cell and its number of columns from "
+                     "stratum_row)",
+                     t.other_cell, t.tried, t.s, t.n, t.u, t.v, t.cell, u0, u0 + w, v0, v0 + h,
+                     why);
+    } else if (t.draws_wrong)
+        grading_fail(g,
+                     "after %ld of %ld sub-pixel samples the generator is not where two draws "
+                     "leave it: the jitter takes two numbers, u's then v's, no more, no fewer",
+                     t.draws_wrong, t.tried);
+    else if (random_wrong)
+        grading_fail(g,
+                     "PIXEL_RANDOM: (u, v) is not the sample's first two numbers, u then v, in "
+                     "%ld of 256 samples",
+                     random_wrong);
+    else if (centre_wrong)
+        grading_fail(g, "PIXEL_CENTRE: (u, v) is not (0.5, 0.5), the pixel's centre");
+    if (g->failed || t.identical == t.tried)
+        return;
+    /* Another jitter than the task's: uniform within the cell. */
+    Warp warp;
+    const WarpLabels labels = {"row of the cell", "its bottom", "its top", "column of the cell",
+                               "nowhere"};
+    if (warp_new(g, &warp, JITTER_CELLS, JITTER_CELLS, 0, labels) != 0)
+        return;
+    for (int c = 0; c < JITTER_CELLS * JITTER_CELLS; c++) {
+        warp.observed[c] = t.jitter[c];
+        warp.expected[c] = (double)t.tried / (JITTER_CELLS * JITTER_CELLS);
+    }
+    const char *hint = "the jitter is uniform within the cell: u0 + ju w, v0 + jv h";
+    if (grading_warp(g, &warp, "the jitter within the cells", LEVEL, 1, hint) &&
+        grading_mean_test(g, "the mean jitter across the cell", t.sums[0], t.squares[0],
+                          t.tried, 0.5, hint))
+        grading_mean_test(g, "the mean jitter up the cell", t.sums[1], t.squares[1], t.tried,
+                          0.5, hint);
+    warp_free(&warp);
+}
+
+/* Rays at two triangles and two spheres, from outside and inside, hitting front and back:
+ * the vertex against the solution's path_vertex. */
+static const char vertex_scene[] = "camera 0 -3 0   -1 -2 -1   1 -2 -1   -1 -2 1\n"
+                                   "material white lambert 0.7 0.7 0.7\n"
+                                   "material red lambert 0.7 0.1 0.1\n"
+                                   "quad white -1 -1 0   1 -1 0.2   1 1 0.1   -1 1 -0.1\n"
+                                   "sphere red 0.4 0.3 0.9 0.5\n"
+                                   "sphere white -0.6 -0.2 -0.8 0.6\n";
+#define VERTEX_RAYS 4000
+
+static void grade_vertex(Grading *g)
+{
+    Scene scene;
+    if (grading_scene(g, vertex_scene, &scene) != 0)
+        return;
+    long found_wrong = 0, front_wrong = 0, normal_wrong = 0, never_flipped = 0,
+         flipped_wrong = 0, wo_wrong = 0, wo_along = 0, material_wrong = 0, point_wrong = 0,
+         backs = 0, hits = 0;
+    for (int i = 0; i < VERTEX_RAYS; i++) {
+        TestRandom r = test_random(grading_stream(g, 28), 1, (uint64_t)i);
+        Vec3 origin = vec3_scale(random_unit_vector(&r), 0.2 + 2.5 * test_uniform(&r));
+        Vec3 target = vec3_scale(random_unit_vector(&r), 0.8 * test_uniform(&r));
+        Ray ray = {origin, vec3_normalize(vec3_sub(target, origin))};
+        Vertex x;
+        memset(&x, 0, sizeof x);
+        x.material = scene.materials;
+        int found = grading_probing(g) ? path_vertex(&scene, ray, &x) : 0;
+        found = ASK(g, found) != 0.0;
+        double front = ASK(g, x.front);
+        Vec3 normal = ASK_VEC3(g, x.normal), wo = ASK_VEC3(g, x.wo),
+             point = ASK_VEC3(g, x.hit.point);
+        double material = ASK(g, (double)(x.material - scene.materials));
+        if (grading_probing(g))
+            continue;
+        Vertex right;
+        int right_found = path_vertex(&scene, ray, &right);
+        if (found != right_found) {
+            found_wrong++;
+            continue;
+        }
+        if (!found)
+            continue;
+        hits++;
+        backs += !right.front;
+        front_wrong += (front != 0.0) != right.front;
+        if (vec3_length(vec3_sub(point, right.hit.point)) > 1e-9)
+            point_wrong++;
+        if (vec3_length(vec3_sub(normal, right.normal)) > 1e-9) {
+            normal_wrong++;
+            never_flipped += vec3_length(vec3_sub(normal, right.hit.normal)) <= 1e-9;
+            flipped_wrong += vec3_length(vec3_add(normal, right.normal)) <= 1e-9;
+        }
+        if (vec3_length(vec3_sub(wo, right.wo)) > 1e-9) {
+            wo_wrong++;
+            wo_along += vec3_length(vec3_sub(wo, ray.dir)) <= 1e-9;
+        }
+        material_wrong += material != (double)(right.material - scene.materials);
+    }
+    scene_free(&scene);
+    if (grading_probing(g))
+        return;
+    grading_note(g, "%d rays: %ld hits, %ld of them on the back of their surface", VERTEX_RAYS,
+                 hits, backs);
+    if (found_wrong)
+        grading_fail(g,
+                     "%ld of %d rays find a surface where the solution's path_vertex does not, "
+                     "or none where it does: the vertex is the first hit, scene_intersect",
+                     found_wrong, VERTEX_RAYS);
+    else if (point_wrong)
+        grading_fail(g, "the hit point is not the first hit's in %ld of %ld hits", point_wrong,
+                     hits);
+    else if (front_wrong)
+        grading_fail(g,
+                     "x.front is wrong in %ld of %ld hits%s: the ray arrives on the front when "
+                     "it travels against the surface's normal, d . n < 0",
+                     front_wrong, hits, front_wrong == hits ? " (in all: inverted)" : "");
+    else if (normal_wrong)
+        grading_fail(g,
+                     "x.normal does not face the ray in %ld of %ld hits (%ld on the back of "
+                     "their surface)%s: the shading normal faces the side the ray came from, "
+                     "hit.normal on the front and -hit.normal on the back",
+                     normal_wrong, hits, backs,
+                     never_flipped == normal_wrong
+                         ? ": it is hit.normal, never turned, so a surface seen from its back "
+                           "is shaded as if lit from the other side"
+                     : flipped_wrong == normal_wrong ? ": it is turned the wrong way"
+                                                     : "");
+    else if (wo_wrong)
+        grading_fail(g, "x.wo is wrong in %ld of %ld hits%s: wo = -d, back along the ray",
+                     wo_wrong, hits, wo_along == wo_wrong ? " (it is d, along the ray)" : "");
+    else if (material_wrong)
+        grading_fail(g, "x.material is not the hit surface's in %ld of %ld hits",
+                     material_wrong, hits);
 }
 
 const Exercise exercises[] = {
@@ -145,7 +633,7 @@ const Exercise exercises[] = {
      "Return the density in solid angle of the cosine sampler at the unit local direction "
      "w_local: cos(theta) / pi (cos(theta) = w_local.z) above the surface, 0 below. See "
      "docs/chapter2.md, section 2.",
-     "return 0.0;", grade_cosine_pdf, NULL, ""},
+     "return 0.0;", grade_cosine_pdf, NULL, "2.1"},
     {"2.3", "lambert_brdf",
      "Return the Lambertian BRDF of reflectance rho, f = rho / pi (eq. 8): the same for every "
      "pair of directions, so that f cos(theta) integrated over the hemisphere is rho. See "
@@ -158,6 +646,26 @@ const Exercise exercises[] = {
      "at a diffuse surface, path_specular otherwise), multiply the throughput by the weight "
      "it returns, count the bounce (counts->bounce) and spawn the next ray with ray_spawn. "
      "See docs/chapter2.md, section 3.",
-     "return vec3(0, 0, 0);", grade_path, &path_check, "2.1"},
+     "return vec3(0, 0, 0);", grade_path, &path_check, "2.1 2.5 2.6"},
+    {"2.5", "pixel_position",
+     "Where sample `sample` of `samples` looks within its pixel, (u, v) in [0, 1)^2. "
+     "PIXEL_RANDOM: u = rng_uniform(rng), then v = rng_uniform(rng). PIXEL_SUBPIXELS: the n = "
+     "samples cells lie in r = round(sqrt(n)) rows, row k holding cells floor(k n / r) to "
+     "floor((k + 1) n / r) - 1 (stratum_row gives a cell's row's first cell and its number of "
+     "columns); cell m = sample of a row with `columns` cells starting at `first` is u in "
+     "[(m - first) / columns, (m - first + 1) / columns), v in [first / n, (first + columns) "
+     "/ n); take the jitter ju = rng_uniform(rng), then jv = rng_uniform(rng), and return the "
+     "point at (ju, jv) of the cell. PIXEL_CENTRE: (0.5, 0.5), drawing nothing. See "
+     "docs/chapter2.md, section 5.",
+     "(void)sampling;\n(void)sample;\n(void)samples;\n(void)rng;\n*u = 0.5;\n*v = 0.5;",
+     grade_pixel_position, NULL, ""},
+    {"2.6", "path_vertex",
+     "Find the first surface along the ray (scene_intersect(scene, ray, INFINITY, &x->hit); "
+     "return 0 when there is none); then fill the vertex: its material "
+     "(&scene->materials[x->hit.material]), whether the ray arrived on the front (d . n < 0 "
+     "for the hit's geometric normal n), the normal turned to face the ray (n on the front, "
+     "-n on the back: the side the ray came from is the side that is shaded and from which "
+     "new rays leave) and wo = -d. Return 1. See docs/chapter2.md, section 3.",
+     "(void)scene;\n(void)ray;\n(void)x;\nreturn 0;", grade_vertex, NULL, ""},
 };
 const int exercise_count = sizeof exercises / sizeof exercises[0];

@@ -5,113 +5,253 @@
  * the samples); the pdf in solid angle against d^2 / (A cos beta); the shadow ray by
  * the image of the light it finds at each camera ray's first hit, against the
  * solution's, pixel by pixel; eq. 21 with M shadow rays against the mean of the M
- * shadow rays it draws, at M = 1, 2, 4 and 30. Fixed seeds; significance level 0.01.
+ * shadow rays it draws, at M = 1, 2, 4 and 30. Seeds from GRADE_SEED; the course's level
+ * (grading.h).
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "area_light.h"
 #include "grading.h"
 #include "path.h"
 #include "render_check.h"
 
-#define LEVEL 0.01
+#define LEVEL grading_level()
 #define COLS 12
 #define ROWS 4
-#define WARP_SAMPLES 200000
 
-/* Two lamps facing down from the plane z = 1: x in [0, 1] and [1, 3], y in [0, 1]. */
+static int same(double a, double b) { return fabs(a - b) <= 1e-12 + 1e-9 * fabs(b); }
+static int same_vec(Vec3 a, Vec3 b)
+{
+    return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
+}
+
+/* Two lamps in the plane z = 1, x in [0, 1] and [1, 3], y in [0, 1]: the small one
+ * facing down with one colour, the large one facing up with another, so that a sample's
+ * normal and emission show which lamp they came from. */
 static const char lamps[] = "camera 0 0 -1   -1 -1 0   1 -1 0   -1 1 0\n"
-                            "material lamp light 1 1 1\n"
+                            "material small light 1 0.5 0.25\n"
+                            "material large light 3 2 1\n"
                             "material white lambert 0.5 0.5 0.5\n"
-                            "quad lamp 0 0 1   0 1 1   1 1 1   1 0 1\n"
-                            "quad lamp 1 0 1   1 1 1   3 1 1   3 0 1\n"
+                            "quad small 0 0 1   0 1 1   1 1 1   1 0 1\n"
+                            "quad large 1 0 1   3 0 1   3 1 1   1 1 1\n"
                             "quad white -5 -5 -1   5 -5 -1   5 5 -1   -5 5 -1\n";
+#define LIGHT_SAMPLES 3000000
+#define LIGHT_WHOLE 100000 /* samples whose normal and emission are checked too */
+
+/* The statistics of the whole sample: where it fell and whether its normal and emission
+ * are its lamp's. */
+typedef struct {
+    long off, wrong_normal, other_normal, wrong_emission, other_emission, identical;
+    double small, x_small, x_large, y, y2;
+    long large;
+} LightTally;
 
 static void grade_light_sample(Grading *g)
 {
     Scene scene;
     if (grading_scene(g, lamps, &scene) != 0)
         return;
-    const WarpLabels labels = {"row", "the lamps' far edge, y near 1",
-                               "the lamps' near edge, y near 0",
-                               "column (1-4: the small lamp, 5-12: the large one)",
-                               "off the lamps, or with the wrong normal or emission"};
+    const WarpLabels labels = {
+        "row", "the lamps' far edge, y near 1", "the lamps' near edge, y near 0",
+        "column (1-4: the small lamp, 5-12: the large one)", "off the lamps"};
     Warp warp;
     if (warp_new(g, &warp, ROWS, COLS, 4000, labels) != 0) {
         scene_free(&scene);
         return;
     }
-    for (long i = 0; i < WARP_SAMPLES; i++) {
-        Rng rng = rng_for_sample(31, 1, (uint64_t)i);
+    const Vec3 normal_of[2] = {{0, 0, -1}, {0, 0, 1}};
+    const Vec3 emission_of[2] = {{1, 0.5, 0.25}, {3, 2, 1}};
+    LightTally t = {0};
+    double sum_small2 = 0.0, sum_x_small2 = 0.0, sum_x_large2 = 0.0;
+    for (long i = 0; i < LIGHT_SAMPLES; i++) {
+        Rng rng = rng_for_sample(grading_stream(g, 31), 1, (uint64_t)i);
         double u_select = rng_uniform(&rng), u1, u2;
         rng_pair(&rng, &u1, &u2);
         LightSample s = {vec3(0, 0, 0), vec3(0, 0, 0), vec3(0, 0, 0)};
         if (grading_probing(g))
             s = area_light_sample(&scene, u_select, u1, u2);
+        int whole = i < LIGHT_WHOLE;
         s.point = grading_ask_vec3(g, s.point);
-        s.normal = grading_ask_vec3(g, s.normal);
-        s.emission = grading_ask_vec3(g, s.emission);
+        if (whole) {
+            s.normal = grading_ask_vec3(g, s.normal);
+            s.emission = grading_ask_vec3(g, s.emission);
+        }
+        if (grading_probing(g))
+            continue;
+        LightSample right = area_light_sample(&scene, u_select, u1, u2);
+        t.identical += whole && same_vec(s.point, right.point) &&
+                       same_vec(s.normal, right.normal) && same_vec(s.emission, right.emission);
         Vec3 p = s.point;
-        int on = fabs(p.z - 1.0) < 1e-9 && p.x >= 0.0 && p.x <= 3.0 && p.y >= 0.0 &&
-                 p.y <= 1.0 && fabs(s.normal.z + 1.0) < 1e-9 && s.emission.x == 1.0;
-        if (!on) {
+        if (!(fabs(p.z - 1.0) < 1e-9 && p.x >= 0.0 && p.x <= 3.0 && p.y >= 0.0 && p.y <= 1.0)) {
+            t.off++;
             warp_add(&warp, i, -1, 0, u_select, u1, NAN, NAN);
             continue;
         }
+        int lamp = p.x > 1.0;
+        if (whole && !same_vec(s.normal, normal_of[lamp])) {
+            t.wrong_normal++;
+            t.other_normal += same_vec(s.normal, normal_of[!lamp]);
+        }
+        if (whole && !same_vec(s.emission, emission_of[lamp])) {
+            t.wrong_emission++;
+            t.other_emission += same_vec(s.emission, emission_of[!lamp]);
+        }
+        t.small += !lamp;
+        sum_small2 += !lamp;
+        if (lamp) {
+            t.large++;
+            t.x_large += p.x;
+            sum_x_large2 += p.x * p.x;
+        } else {
+            t.x_small += p.x;
+            sum_x_small2 += p.x * p.x;
+        }
+        t.y += p.y;
+        t.y2 += p.y * p.y;
         int col = (int)(p.x / 3.0 * COLS), row = (int)((1.0 - p.y) * ROWS);
         warp_add(&warp, i, row < ROWS ? row : ROWS - 1, col < COLS ? col : COLS - 1, u_select,
                  u1, p.x / 1.5 - 1.0, (2.0 * p.y - 1.0) / 3.0);
     }
-    for (int c = 0; c < ROWS * COLS; c++)
-        warp.expected[c] = (double)WARP_SAMPLES / (ROWS * COLS);
-    grading_warp(g, &warp, "the two lamps from below", LEVEL, 1,
-                 "is the lamp chosen with probability proportional to its area (the running "
-                 "sums in light_cumulative) and the point on its triangle at barycentric "
-                 "(s (1 - u2), s u2) with s = sqrt(u1) (docs/chapter3.md, section 1)?");
-    warp_free(&warp);
     scene_free(&scene);
+    if (grading_probing(g)) {
+        warp_free(&warp);
+        return;
+    }
+    grading_note(g,
+                 "%ld samples, their points and, of the first %ld, their normals and "
+                 "emissions: %ld of those identical to the solution's from the same numbers; "
+                 "%ld off the lamps, %ld with another normal, %ld with another emission than "
+                 "their lamp's",
+                 (long)LIGHT_SAMPLES, (long)LIGHT_WHOLE, t.identical, t.off, t.wrong_normal,
+                 t.wrong_emission);
+    const char *hint = "is the lamp chosen with probability proportional to its area (the "
+                       "running sums in light_cumulative) and the point on its triangle at "
+                       "barycentric (s (1 - u2), s u2) with s = sqrt(u1) (docs/chapter3.md, "
+                       "section 1)?";
+    long on = LIGHT_SAMPLES - t.off;
+    if (t.wrong_normal)
+        grading_fail(g,
+                     "the normal is not the normal of the lamp the point lies on in %ld of %ld "
+                     "samples%s: the normal and the emission are those of the triangle the "
+                     "point was drawn on",
+                     t.wrong_normal, (long)LIGHT_WHOLE,
+                     t.other_normal == t.wrong_normal ? " (it is the other lamp's)" : "");
+    else if (t.wrong_emission)
+        grading_fail(g,
+                     "the emission is not that of the lamp the point lies on in %ld of %ld "
+                     "samples%s: the emission is the material's of the triangle the point "
+                     "was drawn on",
+                     t.wrong_emission, (long)LIGHT_WHOLE,
+                     t.other_emission == t.wrong_emission ? " (it is the other lamp's)" : "");
+    if (g->failed) {
+        warp_free(&warp);
+        return;
+    }
+    for (int c = 0; c < ROWS * COLS; c++)
+        warp.expected[c] = (double)LIGHT_SAMPLES / (ROWS * COLS);
+    if (grading_warp(g, &warp, "the two lamps from below", LEVEL, 1, hint) && on > 1) {
+        if (grading_mean_test(g, "the share of samples on the small lamp (1 / 3 of the area)",
+                              t.small, sum_small2, on, 1.0 / 3.0, hint) &&
+            grading_mean_test(g, "the mean y", t.y, t.y2, on, 0.5, hint) && on - t.large > 1 &&
+            grading_mean_test(g, "the mean x on the small lamp", t.x_small, sum_x_small2,
+                              on - t.large, 0.5, hint) &&
+            t.large > 1)
+            grading_mean_test(g, "the mean x on the large lamp", t.x_large, sum_x_large2,
+                              t.large, 2.0, hint);
+    }
+    warp_free(&warp);
 }
+
+/* The pdf's inputs: d, cos(beta) and A. */
+static double pdf_no_cos(const double *in) { return in[0] * in[0] / in[2]; }
+static double pdf_area(const double *in) { return 1.0 / in[2]; }
+static double pdf_inverse(const double *in) { return in[2] * in[1] / (in[0] * in[0]); }
+static double pdf_d(const double *in) { return in[0] / (in[2] * in[1]); }
+static double pdf_cos_up(const double *in) { return in[0] * in[0] * in[1] / in[2]; }
+static double pdf_no_area(const double *in) { return in[0] * in[0] / in[1]; }
+static double pdf_degrees(const double *in)
+{
+    return in[0] * in[0] / (in[2] * cos(in[1])); /* cos(beta) taken for an angle */
+}
+
+static const WrongAnswer wrong_pdf[] = {
+    {"d^2 / A: the cosine at the lamp is missing",
+     "a lamp seen edge-on covers a smaller solid angle: d^2 / (A cos beta)", pdf_no_cos},
+    {"1 / A, the density per unit area",
+     "the density in solid angle is asked for: dA = d^2 dw / cos(beta) turns 1 / A into d^2 "
+     "/ (A cos beta)",
+     pdf_area},
+    {"A cos(beta) / d^2, the inverse of the density",
+     "the density in solid angle is d^2 / (A cos beta), large for a small or distant lamp",
+     pdf_inverse},
+    {"d / (A cos beta): d where d^2 belongs",
+     "the solid angle falls as 1 / d^2: d^2 / (A cos beta)", pdf_d},
+    {"d^2 cos(beta) / A: the cosine multiplies where it divides", "d^2 / (A cos beta)",
+     pdf_cos_up},
+    {"d^2 / cos(beta): the area A is missing",
+     "A = scene->light_area, the lamps' total area: d^2 / (A cos beta)", pdf_no_area},
+    {"d^2 / (A cos(cos beta)): the cosine taken of the cosine",
+     "cos_beta is already the cosine: d^2 / (A cos_beta)", pdf_degrees},
+};
+#define PDF_POINTS 200
 
 static void grade_light_pdf(Grading *g)
 {
     Scene scene;
     if (grading_scene(g, lamps, &scene) != 0)
         return;
-    double area = scene.light_area;
-    int checked = 0;
-    for (int i = 0; i < 200 && !g->failed; i++, checked++) {
-        Rng rng = rng_for_sample(32, 1, (uint64_t)i);
+    double area = scene.light_area, in[3 * PDF_POINTS], got[PDF_POINTS];
+    double wrong_in[3 * PDF_POINTS], wrong_got[PDF_POINTS];
+    int wrong = 0, first = -1;
+    for (int i = 0; i < PDF_POINTS; i++) {
+        Rng rng = rng_for_sample(grading_stream(g, 32), 1, (uint64_t)i);
         double d = 0.2 + 3.0 * rng_uniform(&rng), cos_beta = 0.05 + 0.95 * rng_uniform(&rng);
-        double pdf = ASK(g, area_light_pdf(&scene, d, cos_beta)),
-               right = d * d / (area * cos_beta);
-        if (grading_not_finite(g, pdf, "the pdf"))
-            break;
-        if (fabs(pdf - right) <= 1e-9 * right)
+        in[3 * i] = d, in[3 * i + 1] = cos_beta, in[3 * i + 2] = area;
+        got[i] = ASK(g, area_light_pdf(&scene, d, cos_beta));
+        if (grading_not_finite(g, got[i], "the pdf")) {
+            scene_free(&scene);
+            return;
+        }
+        double right = d * d / (area * cos_beta);
+        if (fabs(got[i] - right) <= 1e-9 * right)
             continue;
-        if (fabs(pdf - d * d / area) <= 1e-9 * right)
-            grading_fail(g,
-                         "the pdf is %.4f at distance %.2f and cos(beta) = %.2f, where d^2 / "
-                         "(A cos beta) = %.4f: the cosine at the lamp is missing (a lamp seen "
-                         "edge-on covers a smaller solid angle)",
-                         pdf, d, cos_beta, right);
-        else if (fabs(pdf - 1.0 / area) <= 1e-9 * right)
-            grading_fail(g,
-                         "the pdf is 1 / A = %.4f, the density per unit area, where the "
-                         "density in solid angle d^2 / (A cos beta) = %.4f is asked for",
-                         pdf, right);
-        else
-            grading_fail(g,
-                         "the pdf is %.*f at distance %.2f and cos(beta) = %.2f, where d^2 / "
-                         "(A cos beta) = %.*f (A = %.1f)",
-                         grading_decimals(pdf, right), pdf, d, cos_beta,
-                         grading_decimals(pdf, right), right, area);
+        memcpy(wrong_in + 3 * wrong, in + 3 * i, sizeof(double) * 3);
+        wrong_got[wrong++] = got[i];
+        first = first < 0 ? i : first;
     }
+    scene_free(&scene);
     grading_note(g,
                  "%d distances and angles at lamps of total area %.1f against d^2 / (A cos "
-                 "beta)",
-                 checked, area);
-    scene_free(&scene);
+                 "beta): %d wrong",
+                 PDF_POINTS, area, wrong);
+    if (wrong == 0)
+        return;
+    const WrongAnswer *known =
+        grading_known_wrong(wrong_pdf, (int)(sizeof wrong_pdf / sizeof wrong_pdf[0]), wrong_in,
+                            3, wrong_got, wrong);
+    if (known) {
+        grading_fail_known(g, "pdf", known, wrong);
+        return;
+    }
+    /* How the ratio to the right pdf goes with d and cos(beta). */
+    double low = INFINITY, high = -INFINITY;
+    for (int k = 0; k < wrong; k++) {
+        const double *x = wrong_in + 3 * k;
+        double ratio = wrong_got[k] / (x[0] * x[0] / (x[2] * x[1]));
+        low = fmin(low, ratio), high = fmax(high, ratio);
+    }
+    double d = in[3 * first], cos_beta = in[3 * first + 1], right = d * d / (area * cos_beta);
+    int decimals = grading_decimals(got[first], right);
+    grading_fail(
+        g,
+        "the pdf is %.*f at distance %.2f and cos(beta) = %.2f, where d^2 / (A cos "
+        "beta) = %.*f (A = %.1f); wrong at %d of %d inputs, %s",
+        decimals, got[first], d, cos_beta, decimals, right, area, wrong, PDF_POINTS,
+        high - low <= 1e-9 * fabs(high)
+            ? "by one constant factor at all (look at the constants)"
+            : "by a ratio that changes with d and cos(beta) (look at how each enters)");
 }
 
 /* The light at a camera ray's first hit from one shadow ray (eq. 21 with M = 1), or the
@@ -132,8 +272,323 @@ static Vec3 first_hit_direct(const Scene *scene, Ray ray, Rng *rng, const void *
 static const RenderCheck direct_check = {
     render_check_room, first_hit_direct, NULL, 24, 32, 1024};
 
+/* A lamp in mid-air, facing down, between a floor and a ceiling: the floor sees its
+ * front, the ceiling its back (from which nothing comes). */
+static const char mid_air[] = "camera 0 -3 0   -1 -2 -1   1 -2 -1   -1 -2 1\n"
+                              "material white lambert 0.7 0.5 0.3\n"
+                              "material lamp light 4 3 2\n"
+                              "quad lamp -0.5 -0.5 0   -0.5 0.5 0   0.5 0.5 0   0.5 -0.5 0\n"
+                              "quad white -5 -5 -1   5 -5 -1   5 5 -1   -5 5 -1\n"
+                              "quad white -5 -5 1   -5 5 1   5 5 1   5 -5 1\n";
+
+/* Where the shadow rays start: the first hits of rays from `from` towards `to`, as a
+ * path's vertex is found (a hit point off its surface by a few ulps, the normal facing
+ * the ray): on the room's floor, walls and sphere (near its rim too, grazing the
+ * lamp's light), and under and over the lamp in mid-air, near it and far (grazing). */
+typedef struct {
+    const char *scene, *where;
+    Vec3 from, to;
+} ShadowStart;
+
+static const ShadowStart shadow_starts[] = {
+    {render_check_room, "the room's floor", {0, -3, 0}, {0.3, -0.8, -1.5}},
+    {render_check_room,
+     "the room's floor in the sphere's half-shadow",
+     {0, -3, 0},
+     {0.95, 0.3, -1.5}},
+    {render_check_room, "the room's red wall", {0, -3, 0}, {-1.5, -0.5, 0.2}},
+    {render_check_room, "the top of the room's sphere", {0, -3, 1}, {0.3, 0, -0.3}},
+    {render_check_room,
+     "the rim of the room's sphere, grazing the lamp's light",
+     {0, -3, -0.9},
+     {0.9, 0, -0.85}},
+    {render_check_room,
+     "the room's floor far from the lamp, at a grazing angle",
+     {0, -3, 0},
+     {1.4, -3.3, -1.5}},
+    {mid_air, "the floor under the lamp in mid-air", {0, -3, -0.5}, {0.2, 0.1, -1}},
+    {mid_air, "the floor far from the lamp in mid-air, grazing", {0, -3, -0.5}, {4.5, 0.3, -1}},
+    {mid_air,
+     "the ceiling over the lamp in mid-air (which sees its back)",
+     {0, -3, 0.5},
+     {0.1, -0.2, 1}},
+    {mid_air, "the ceiling far from the lamp in mid-air", {0, -3, 0.5}, {3.5, 2, 1}},
+};
+#define SHADOW_STARTS (int)(sizeof shadow_starts / sizeof shadow_starts[0])
+#define SHADOW_TRIALS 800
+
+/* Why the solution's shadow ray is 0, or what it finds. */
+enum {
+    LIT,
+    BELOW_SURFACE,
+    LAMP_BACK,
+    BLOCKED,
+    KINDS
+};
+
+typedef struct {
+    int trials, wrong[KINDS], student_zero[KINDS], student_lit[KINDS];
+    int wi_wrong, wi_reversed, wi_not_unit, pdf_wrong, value_wrong, other_point;
+    double sum_student, sum_right, sum_difference, sum_difference2;
+    const char *first_value;
+    double ratio_low, ratio_high, got, want;
+    int unlike[8]; /* lit values wrong that the catalogue's entry does not match */
+} ShadowTally;
+
+/* Known wrong values of a lit shadow ray, from the right one and its geometry. */
+static const struct {
+    const char *wrong, *right;
+} value_mistakes[] = {
+    {"Le f cos(alpha) A / d^2: the cosine at the lamp, cos(beta), is missing",
+     "a lamp seen edge-on covers a smaller solid angle: times cos(beta) = -n_y . wi"},
+    {"Le f cos(beta) A / d^2: the cosine at x, cos(alpha), is missing",
+     "light arriving at a slant spreads over more area: times cos(alpha) = n . wi"},
+    {"Le f cos(alpha) cos(beta) A / d: d where d^2 belongs",
+     "the solid angle falls as 1 / d^2"},
+    {"Le f cos(alpha) cos(beta) / d^2: the factor A, 1 / the density 1 / A, is missing",
+     "a point drawn with density 1 / A is weighted by A = scene->light_area"},
+    {"Le rho cos(alpha) cos(beta) A / d^2: rho where f = rho / pi belongs",
+     "f is diffuse_brdf(m, n, wi, wo), rho / pi for a Lambertian surface"},
+    {"the right value divided by pi once more", "f = rho / pi has one pi, in diffuse_brdf"},
+    {"Le f cos(alpha) cos(beta) A^2 / d^2: A twice", "one factor A (eq. 21)"},
+};
+#define VALUE_MISTAKES (int)(sizeof value_mistakes / sizeof value_mistakes[0])
+
+static void tally_init(ShadowTally *t)
+{
+    memset(t, 0, sizeof *t);
+    t->ratio_low = INFINITY;
+    t->ratio_high = -INFINITY;
+}
+
+/* The solution's shadow ray from x with the generator `rng`, and why it is what it is. */
+static ShadowRay solution_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, const Material *m,
+                                     Rng rng, int *kind, double *cos_beta, double *distance)
+{
+    Rng replay = rng;
+    RayCounts counts = {0};
+    ShadowRay right = area_light_shadow_ray(scene, x, n, n, m, &rng, &counts);
+    double u_select = rng_uniform(&replay), u1, u2;
+    rng_pair(&replay, &u1, &u2);
+    LightSample y = area_light_sample(scene, u_select, u1, u2);
+    Vec3 to = vec3_sub(y.point, x);
+    *distance = vec3_length(to);
+    Vec3 wi = vec3_scale(to, 1.0 / *distance);
+    *cos_beta = -vec3_dot(y.normal, wi);
+    *kind = vec3_dot(n, wi) <= 0.0                           ? BELOW_SURFACE
+            : *cos_beta <= 0.0                               ? LAMP_BACK
+            : scene_occluded(scene, x, n, y.point, y.normal) ? BLOCKED
+                                                             : LIT;
+    return right;
+}
+
+/* The judge's comparison of one trial with the solution's. */
+static void tally_trial(ShadowTally *t, const Scene *scene, Vec3 x, Vec3 n, const Material *m,
+                        Rng rng, ShadowRay got)
+{
+    int kind;
+    double cos_beta, distance;
+    ShadowRay right = solution_shadow_ray(scene, x, n, m, rng, &kind, &cos_beta, &distance);
+    t->trials++;
+    t->sum_student += got.value.y;
+    t->sum_right += right.value.y;
+    double difference = got.value.y - right.value.y;
+    t->sum_difference += difference;
+    t->sum_difference2 += difference * difference;
+    int zero = got.value.x == 0.0 && got.value.y == 0.0 && got.value.z == 0.0;
+    if (!same_vec(got.value, right.value)) {
+        t->wrong[kind]++;
+        t->student_zero[kind] += zero;
+        t->student_lit[kind] += !zero;
+        if (kind == LIT && !zero) {
+            double ratio = got.value.y / right.value.y;
+            t->ratio_low = fmin(t->ratio_low, ratio);
+            t->ratio_high = fmax(t->ratio_high, ratio);
+            if (!t->value_wrong++)
+                t->got = got.value.y, t->want = right.value.y;
+            double cos_alpha = vec3_dot(n, right.wi), area = scene->light_area;
+            const double candidates[VALUE_MISTAKES] = {
+                1.0 / cos_beta, 1.0 / cos_alpha, distance, 1.0 / area, PI, 1.0 / PI, area};
+            for (int c = 0; c < VALUE_MISTAKES; c++)
+                t->unlike[c] += !same(got.value.y, right.value.y * candidates[c]);
+        }
+    }
+    if (kind != LIT || zero)
+        return;
+    if (!same_vec(got.wi, right.wi)) {
+        t->wi_wrong++;
+        t->wi_reversed += same_vec(vec3_neg(got.wi), right.wi);
+        t->wi_not_unit += fabs(vec3_length(got.wi) - 1.0) > 1e-9;
+        t->other_point += fabs(vec3_length(got.wi) - 1.0) <= 1e-9 &&
+                          vec3_length(vec3_sub(got.wi, right.wi)) > 1e-6 &&
+                          !same_vec(vec3_neg(got.wi), right.wi);
+    }
+    if (!same(got.pdf, right.pdf) && same_vec(got.wi, right.wi))
+        t->pdf_wrong++;
+}
+
+/* The verdict from one start's tally; returns 1 when it failed. */
+static int shadow_verdict(Grading *g, const ShadowTally *t, const char *where)
+{
+    int n = t->trials;
+    if (t->other_point > n / 10) {
+        /* Another order of the random numbers: only the means can be compared. */
+        double mean = t->sum_difference / n;
+        double se = sqrt(fmax(0.0, t->sum_difference2 / n - mean * mean) / (n - 1));
+        double z = se > 0.0 ? mean / se : (mean == 0.0 ? 0.0 : INFINITY);
+        grading_note(g,
+                     "%s: your lamp points differ from those the solution draws from the same "
+                     "numbers (rng_uniform, then rng_pair, for area_light_sample); the means "
+                     "compared: %.5f and %.5f (z = %+.1f, detectable bias %.2g)",
+                     where, t->sum_student / n, t->sum_right / n, z, grading_detectable(se));
+        if (fabs(z) > grading_z(grading_level()))
+            return grading_fail(g,
+                                "at %s the mean of your shadow rays is %.5f where the "
+                                "solution's is %.5f (z = %+.1f over %d trials, drawn in "
+                                "another order than the task's): eq. 21's term is Le f "
+                                "cos(alpha) cos(beta) A / d^2",
+                                where, t->sum_student / n, t->sum_right / n, z, n),
+                   1;
+        return 0;
+    }
+    if (t->student_lit[LAMP_BACK])
+        return grading_fail(g,
+                            "light from the back of the lamp: at %s, where the lamp turns its "
+                            "back (cos(beta) = -n_y . wi <= 0), your value is not 0 in %d of "
+                            "%d trials: a lamp emits from its front only",
+                            where, t->student_lit[LAMP_BACK], n),
+               1;
+    if (t->student_lit[BELOW_SURFACE])
+        return grading_fail(g,
+                            "light from below the surface: at %s, for lamp points behind the "
+                            "surface (cos(alpha) = n . wi <= 0) your value is not 0 in %d of "
+                            "%d trials",
+                            where, t->student_lit[BELOW_SURFACE], n),
+               1;
+    if (t->student_lit[BLOCKED])
+        return grading_fail(g,
+                            "light through the scene: at %s, %d of %d shadow rays that "
+                            "something blocks still bring light (scene_occluded(scene, x, n, "
+                            "y, n_y) says whether the segment is blocked)",
+                            where, t->student_lit[BLOCKED], n),
+               1;
+    if (t->student_zero[LIT])
+        return grading_fail(g,
+                            "too dark: at %s, %d of %d lamp points in plain sight give 0, as "
+                            "if blocked: a shadow ray started exactly at x hits x's own "
+                            "surface (acne; worst at grazing angles): scene_occluded(scene, x, "
+                            "n, y, n_y) moves both ends off their surfaces",
+                            where, t->student_zero[LIT], n),
+               1;
+    for (int c = 0; t->value_wrong && c < VALUE_MISTAKES; c++)
+        if (t->unlike[c] == 0)
+            return grading_fail(g,
+                                "your value equals %s, at each of the %d lit shadow rays from "
+                                "%s where it is wrong (to 1e-9): %s",
+                                value_mistakes[c].wrong, t->value_wrong, where,
+                                value_mistakes[c].right),
+                   1;
+    if (t->value_wrong) {
+        char shape[200];
+        if (t->ratio_high - t->ratio_low <= 1e-9 * fabs(t->ratio_high))
+            snprintf(shape, sizeof shape,
+                     "%.6g times the right value at every one: a constant factor (A = %s? pi "
+                     "in f = rho / pi?)",
+                     t->ratio_high, "scene->light_area");
+        else
+            snprintf(shape, sizeof shape,
+                     "between %.4g and %.4g times the right value: a factor that changes with "
+                     "the lamp point (cos(alpha), cos(beta), d^2?)",
+                     t->ratio_low, t->ratio_high);
+        return grading_fail(g,
+                            "at %s, the value of %d of %d lit shadow rays is wrong (%.6g where "
+                            "Le f cos(alpha) cos(beta) A / d^2 = %.6g), %s",
+                            where, t->value_wrong, n, t->got, t->want, shape),
+               1;
+    }
+    if (t->wi_wrong)
+        return grading_fail(g,
+                            "at %s, wi is wrong in %d of %d lit shadow rays%s: wi is the unit "
+                            "direction from x to the lamp point",
+                            where, t->wi_wrong, n,
+                            t->wi_reversed == t->wi_wrong ? " (it points from the lamp to x)"
+                            : t->wi_not_unit              ? " (not of unit length)"
+                                                          : ""),
+               1;
+    if (t->pdf_wrong)
+        return grading_fail(g,
+                            "at %s, the pdf is wrong in %d of %d lit shadow rays: it is "
+                            "area_light_pdf(scene, d, cos(beta)), d^2 / (A cos beta), the "
+                            "density of wi in solid angle that multiple importance sampling "
+                            "reads (chapter 7)",
+                            where, t->pdf_wrong, n),
+               1;
+    return 0;
+}
+
+/* Every field of the shadow ray (value, wi, pdf) against the solution's drawn from the
+ * same random numbers, at each start: exact where the task's order of the numbers is kept.
+ */
+static void grade_shadow_ray_paired(Grading *g)
+{
+    Material white = {
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.5, 0.3)};
+    int trials = 0;
+    for (int k = 0; k < SHADOW_STARTS && !g->failed; k++) {
+        const ShadowStart *start = &shadow_starts[k];
+        Scene scene;
+        if (grading_scene(g, start->scene, &scene) != 0)
+            return;
+        Ray ray = {start->from, vec3_normalize(vec3_sub(start->to, start->from))};
+        Hit hit = {0};
+        int found = grading_probing(g) ? scene_intersect(&scene, ray, INFINITY, &hit) : 0;
+        found = ASK(g, found) != 0.0;
+        Vec3 x = ASK_VEC3(g, hit.point), normal = ASK_VEC3(g, hit.normal);
+        if (!found) {
+            scene_free(&scene);
+            grading_fail(
+                g, "the grader's ray towards %s found nothing: has scene_intersect changed?",
+                start->where);
+            return;
+        }
+        Vec3 n = vec3_dot(normal, ray.dir) < 0.0 ? normal : vec3_neg(normal);
+        ShadowTally tally;
+        tally_init(&tally);
+        RayCounts counts = {0};
+        for (int t = 0; t < SHADOW_TRIALS; t++) {
+            Rng rng = rng_for_sample(grading_stream(g, 33), (uint64_t)k, (uint64_t)t);
+            Rng mine = rng;
+            ShadowRay got = {.value = vec3(0, 0, 0)};
+            if (grading_probing(g))
+                got = area_light_shadow_ray(&scene, x, n, n, &white, &mine, &counts);
+            got.value = ASK_VEC3(g, got.value);
+            got.wi = ASK_VEC3(g, got.wi);
+            got.pdf = ASK(g, got.pdf);
+            if (grading_not_finite(g, got.value.x + got.value.y + got.value.z, "the value") ||
+                (!grading_probing(g) && !(got.value.x == 0.0 && got.value.y == 0.0) &&
+                 grading_not_finite(g, got.pdf, "the pdf")))
+                break;
+            if (!grading_probing(g))
+                tally_trial(&tally, &scene, x, n, &white, rng, got);
+        }
+        scene_free(&scene);
+        trials += tally.trials;
+        if (!grading_probing(g) && !g->failed) {
+            grading_note(g, "%s: %d trials, your mean %.5f, the solution's %.5f", start->where,
+                         tally.trials, tally.sum_student / SHADOW_TRIALS,
+                         tally.sum_right / SHADOW_TRIALS);
+            shadow_verdict(g, &tally, start->where);
+        }
+    }
+    grading_note(g,
+                 "%d shadow rays (value, wi and pdf) against the solution's from the same "
+                 "random numbers at %d points of two scenes",
+                 trials, SHADOW_STARTS);
+}
+
 static void grade_shadow_ray(Grading *g)
 {
+    grade_shadow_ray_paired(g);
     grading_render(
         g, &direct_check, LEVEL,
         "is the value Le f cos(alpha) cos(beta) A / d^2 (eq. 21), 0 when the lamp or "
@@ -152,78 +607,128 @@ static const char *const room_point_names[] = {"the floor",
                                                "the red wall"};
 #define ROOM_POINTS 3
 #define DIRECT_TRIALS 50
+#define MOST_RAYS 30
+/* A trial's inputs for the catalogue: M, then the values of M + 1 shadow rays drawn in
+ * turn from the trial's generator (one channel). */
+#define DIRECT_ARITY (MOST_RAYS + 2)
 
-/* The first L_D with M shadow rays that differs from the mean of its shadow rays. */
-typedef struct {
-    int m, point; /* point < 0: none differs */
-    double direct, mean;
-} DirectCheck;
-
-static int times_m(const DirectCheck *c)
+static double mean_of(const double *in, int count)
 {
-    return c->m > 1 && fabs(c->direct - c->m * c->mean) <= 1e-9 * fabs(c->m * c->mean);
+    double sum = 0.0;
+    for (int k = 0; k < count; k++)
+        sum += in[1 + k];
+    return sum / in[0];
 }
 
-/* What L_D does wrong where it first differs (c->point >= 0). */
-static void fail_direct(Grading *g, const DirectCheck *c)
+static double direct_right(const double *in) { return mean_of(in, (int)in[0]); }
+static double direct_sum(const double *in) { return mean_of(in, (int)in[0]) * in[0]; }
+static double direct_one_more(const double *in) { return mean_of(in, (int)in[0] + 1); }
+static double direct_one_fewer(const double *in) { return mean_of(in, (int)in[0] - 1); }
+static double direct_first(const double *in) { return in[1]; }
+static double direct_last(const double *in) { return in[(int)in[0]]; }
+static double direct_over_more(const double *in)
 {
-    int decimals = grading_decimals(c->direct, c->mean);
-    const char *where = room_point_names[c->point];
-    if (times_m(c))
-        grading_fail(g,
-                     "the sum of M terms is not divided by M: with M = %d the light is %d "
-                     "times too bright (L_D = %.4f on %s, where the mean of its %d shadow rays "
-                     "is %.4f; eq. 21: A / M times the sum)",
-                     c->m, c->m, c->direct, where, c->m, c->mean);
-    else if (c->m > 1 && c->direct == 0.0)
-        grading_fail(g,
-                     "L_D is 0 with M = %d on %s, where the mean of its %d shadow rays is "
-                     "%.4f (and right with M = 1): is 1 / M computed with whole numbers? 1 / M "
-                     "is 0 for M > 1; 1.0 / M is not",
-                     c->m, where, c->m, c->mean);
-    else
-        grading_fail(g,
-                     "with M = %d on %s, L_D = %.*f where the mean of the M shadow rays "
-                     "area_light_shadow_ray draws from the same generator is %.*f: L_D is the "
-                     "sum of their values divided by M (eq. 21)",
-                     c->m, where, decimals, c->direct, decimals, c->mean);
+    return mean_of(in, (int)in[0] + 1) * in[0] / (in[0] + 1.0);
+}
+static double direct_integer(const double *in) { return in[0] > 1.0 ? 0.0 : in[1]; }
+/* The sum kept in a float, then divided by M in double or in float. */
+static double direct_float(const double *in)
+{
+    float sum = 0.0f;
+    for (int k = 0; k < (int)in[0]; k++)
+        sum = (float)((double)sum + in[1 + k]); /* sum += value, sum a float */
+    return sum / in[0];
+}
+static double direct_float_divided(const double *in)
+{
+    float sum = 0.0f;
+    for (int k = 0; k < (int)in[0]; k++)
+        sum = (float)((double)sum + in[1 + k]); /* sum += value, sum a float */
+    return (double)(sum / (float)in[0]);
 }
 
-/* L_D with M shadow rays at the room's points, DIRECT_TRIALS times each, against the mean
- * of the same M shadow rays drawn again from the same generator; the first that differs
- * in *first. Returns 0, or -1 after failing on a NaN. */
-static int direct_trials(Grading *g, const Scene *scene, int m, DirectCheck *first)
+static double direct_rounded(const double *in) { return (float)direct_right(in); }
+
+static const WrongAnswer wrong_direct[] = {
+    {"the sum of the M shadow rays, not divided by M",
+     "eq. 21 takes their mean, (1 / M) times the sum: with M rays the light is M times too "
+     "bright",
+     direct_sum},
+    {"the sum of M + 1 shadow rays divided by M (the loop runs once too often: k <= M)",
+     "eq. 21 takes M shadow rays, for (k = 0; k < M; k++), and divides their sum by M",
+     direct_one_more},
+    {"the sum of M - 1 shadow rays divided by M (the loop runs once too few: k from 1 to "
+     "M - 1)",
+     "eq. 21 takes M shadow rays, for (k = 0; k < M; k++), and divides their sum by M",
+     direct_one_fewer},
+    {"the sum of M + 1 shadow rays divided by M + 1 where M were asked for",
+     "shadow_rays is M: for (k = 0; k < M; k++)", direct_over_more},
+    {"(1 / M) times the sum with 1 / M computed in whole numbers: 0 for M > 1",
+     "1 / M divides two ints; 1.0 / M does not", direct_integer},
+    {"the first shadow ray's value alone", "eq. 21 averages all M of them", direct_first},
+    {"the last shadow ray's value alone (the sum overwritten, = where += belongs)",
+     "eq. 21 adds all M of them, sum += value, then divides by M", direct_last},
+    {"the sum kept in a float, then divided by M",
+     "a float keeps 7 digits: the sum and the light lose the rest; keep it in a double (a "
+     "Vec3)",
+     direct_float},
+    {"the sum kept in a float and divided by M in float",
+     "a float keeps 7 digits: keep the sum and the mean in doubles (a Vec3)",
+     direct_float_divided},
+    {"the mean of the M shadow rays rounded to a float on the way",
+     "a float keeps 7 digits: keep the sum and the mean in doubles (a Vec3)", direct_rounded},
+};
+#define WRONG_DIRECT (int)(sizeof wrong_direct / sizeof wrong_direct[0])
+
+/* L_D with M shadow rays at the room's points, DIRECT_TRIALS times each, against the
+ * M + 1 shadow rays drawn again from the same generator: each trial's inputs (M and the
+ * terms of one channel) and L_D in that channel, for every channel, into in[] and got[];
+ * the number of trials where L_D is not the mean of M. Returns -1 after failing on a
+ * NaN. */
+static int direct_trials(Grading *g, const Scene *scene, int m, double *in, double *got,
+                         int *first_wrong)
 {
     Material white = {
-        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.7, 0.7)};
+        .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.5, 0.3)};
     RayCounts counts = {0};
-    double sum_direct = 0.0, sum_mean = 0.0;
-    *first = (DirectCheck){m, -1, 0.0, 0.0};
+    int wrong = 0;
+    *first_wrong = -1;
     for (int p = 0; p < ROOM_POINTS; p++)
         for (int t = 0; t < DIRECT_TRIALS; t++) {
             Vec3 x = room_points[p][0], n = room_points[p][1];
-            Rng rng = rng_for_sample(34, (uint64_t)m, (uint64_t)(p * DIRECT_TRIALS + t));
+            Rng rng = rng_for_sample(grading_stream(g, 34), (uint64_t)m,
+                                     (uint64_t)(p * DIRECT_TRIALS + t));
             Rng again = rng;
-            double direct =
-                ASK(g, area_light_direct(scene, x, n, n, &white, m, &rng, &counts).y);
-            double terms = 0.0;
-            for (int i = 0; i < m && grading_probing(g); i++)
-                terms += area_light_shadow_ray(scene, x, n, n, &white, &again, &counts).value.y;
-            double mean = ASK(g, terms / m);
-            if (grading_not_finite(g, direct, "L_D"))
-                return -1;
-            sum_direct += direct;
-            sum_mean += mean;
-            if (first->point < 0 && fabs(direct - mean) > 1e-12 + 1e-9 * fabs(mean))
-                *first = (DirectCheck){m, p, direct, mean};
+            Vec3 direct =
+                ASK_VEC3(g, area_light_direct(scene, x, n, n, &white, m, &rng, &counts));
+            int trial = p * DIRECT_TRIALS + t;
+            double *row[3];
+            for (int c = 0; c < 3; c++) {
+                row[c] = in + (long)(3 * trial + c) * DIRECT_ARITY;
+                row[c][0] = m;
+            }
+            for (int k = 0; k <= m; k++) {
+                Vec3 v = ASK_VEC3(
+                    g, area_light_shadow_ray(scene, x, n, n, &white, &again, &counts).value);
+                row[0][1 + k] = v.x, row[1][1 + k] = v.y, row[2][1 + k] = v.z;
+            }
+            got[3 * trial] = direct.x, got[3 * trial + 1] = direct.y,
+                    got[3 * trial + 2] = direct.z;
+            for (int c = 0; c < 3; c++) {
+                if (grading_not_finite(g, got[3 * trial + c], "L_D"))
+                    return -1;
+                double right = direct_right(row[c]);
+                if (fabs(got[3 * trial + c] - right) > 1e-12 + 1e-9 * fabs(right)) {
+                    wrong++;
+                    if (*first_wrong < 0)
+                        *first_wrong = 3 * trial + c;
+                }
+            }
         }
-    grading_note(g,
-                 "M = %d: L_D averages %.4f over %d trials at %d points; the means of their "
-                 "shadow rays %.4f",
-                 m, sum_direct / (ROOM_POINTS * DIRECT_TRIALS), DIRECT_TRIALS, ROOM_POINTS,
-                 sum_mean / (ROOM_POINTS * DIRECT_TRIALS));
-    return 0;
+    return wrong;
 }
+
+#define DIRECT_VALUES (3 * ROOM_POINTS * DIRECT_TRIALS)
 
 static void grade_direct(Grading *g)
 {
@@ -231,26 +736,74 @@ static void grade_direct(Grading *g)
     if (grading_scene(g, render_check_room, &scene) != 0)
         return;
     static const int shadow_rays[] = {1, 2, 4, 30};
-    DirectCheck checks[4];
-    int wrong = 0, unscaled = 0;
+    static double in[4 * DIRECT_VALUES * DIRECT_ARITY], got[4 * DIRECT_VALUES];
+    static double wrong_in[4 * DIRECT_VALUES * DIRECT_ARITY], wrong_got[4 * DIRECT_VALUES];
+    int wrong = 0, first[4];
     for (int k = 0; k < 4; k++) {
-        if (direct_trials(g, &scene, shadow_rays[k], &checks[k]) != 0) {
+        int found = direct_trials(g, &scene, shadow_rays[k],
+                                  in + (long)k * DIRECT_VALUES * DIRECT_ARITY,
+                                  got + k * DIRECT_VALUES, &first[k]);
+        if (found < 0) {
             scene_free(&scene);
             return;
         }
-        wrong += checks[k].point >= 0;
-        unscaled += checks[k].point >= 0 && times_m(&checks[k]);
+        grading_note(g, "M = %d: L_D is the mean of its M shadow rays in %d of %d values",
+                     shadow_rays[k], DIRECT_VALUES - found, DIRECT_VALUES);
+        wrong += found;
     }
     scene_free(&scene);
-    if (wrong == 3 && unscaled == 3)
+    if (wrong == 0)
+        return;
+    /* The catalogue, at every value that is not the mean of M. */
+    int count = 0;
+    for (int i = 0; i < 4 * DIRECT_VALUES; i++) {
+        const double *row = in + (long)i * DIRECT_ARITY;
+        double right = direct_right(row);
+        if (fabs(got[i] - right) <= 1e-12 + 1e-9 * fabs(right))
+            continue;
+        memcpy(wrong_in + (long)count * DIRECT_ARITY, row, sizeof(double) * DIRECT_ARITY);
+        wrong_got[count++] = got[i];
+    }
+    const WrongAnswer *known = grading_known_wrong(wrong_direct, WRONG_DIRECT, wrong_in,
+                                                   DIRECT_ARITY, wrong_got, count);
+    if (known) {
+        grading_fail_known(g, "L_D", known, count);
+        return;
+    }
+    /* Right to a float's 7 digits, and no more: a float on the way. */
+    double largest = 0.0;
+    for (int q = 0; q < count; q++) {
+        double right = direct_right(wrong_in + (long)q * DIRECT_ARITY);
+        largest = fmax(largest, fabs(wrong_got[q] - right) / fmax(fabs(right), 1e-300));
+    }
+    if (largest <= 4e-6) {
         grading_fail(g,
-                     "the sum of M terms is not divided by M: with M = 2, 4 and 30 the light "
-                     "is 2, 4 and 30 times too bright (with M = 4 on %s, L_D = %.4f where the "
-                     "mean of its 4 shadow rays is %.4f; eq. 21: A / M times the sum)",
-                     room_point_names[checks[2].point], checks[2].direct, checks[2].mean);
-    for (int k = 0; k < 4 && !g->failed; k++)
-        if (checks[k].point >= 0)
-            fail_direct(g, &checks[k]);
+                     "L_D agrees with the mean of its M shadow rays to about 7 digits only (at "
+                     "%d of %d values it differs, by %.2g relative at most, where rounding in "
+                     "doubles stays within 1e-9): a sum or a mean kept in a float on the way; "
+                     "keep them in doubles (a Vec3)",
+                     count, 4 * DIRECT_VALUES, largest);
+        return;
+    }
+    for (int k = 0; k < 4; k++) {
+        if (first[k] < 0)
+            continue;
+        int i = first[k], trial = i / 3;
+        const double *row = in + ((long)k * DIRECT_VALUES + i) * DIRECT_ARITY;
+        double value = got[k * DIRECT_VALUES + i], right = direct_right(row);
+        int decimals = grading_decimals(value, right);
+        grading_fail(
+            g,
+            "with M = %d on %s (channel %d), L_D = %.*f where the mean of the M shadow "
+            "rays area_light_shadow_ray draws in turn from the same generator is "
+            "%.*f (a ratio of %.6g; their sum %.6g; %d of the %d values at M = 1, 2, "
+            "4, 30 differ): matches no known mistake; look at how the M values are "
+            "drawn, summed and divided (eq. 21)",
+            shadow_rays[k], room_point_names[trial / DIRECT_TRIALS], i % 3, decimals, value,
+            decimals, right, right != 0.0 ? value / right : NAN, direct_sum(row), wrong,
+            4 * DIRECT_VALUES);
+        return;
+    }
 }
 
 const Exercise exercises[] = {

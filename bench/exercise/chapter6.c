@@ -1,11 +1,12 @@
 /* chapter6.c (bench, chapter 6): chapter 6's exercises and their graders (grading.h).
  *
- * Roulette must keep the expected throughput (docs/chapter6.md, section 1): over
- * 100,000 trials at a fixed seed, the share of paths that go on is compared with the
- * survival probability (a binomial z) and the mean throughput after roulette with the
- * one before (a z from the trials' own spread), both at significance level 0.01
- * (|z| <= 2.58); with roulette off, or before bounded weights start, nothing changes.
- * The survival probability against min(1, max component).
+ * Roulette keeps the expected throughput (docs/chapter6.md, section 1): over 100,000 to
+ * 4,200,000 trials per setting, every survivor carries exactly the throughput before / q
+ * (known wrong forms named), and the share going on is q, at the course's level
+ * (grading.h) both paired with the solution's decision from the same random number and as
+ * a binomial share (any valid drawing); with roulette off, or before bounded weights
+ * start, nothing changes. The survival probability against min(1, max component), with a
+ * catalogue of known wrong ones.
  */
 #include <math.h>
 #include <stdio.h>
@@ -14,63 +15,132 @@
 #include "roulette.h"
 
 #define TRIALS 100000
-#define Z_LEVEL 2.58 /* two-sided, significance level 0.01 */
+#define BOUNDED_TRIALS 500000 /* q = 0.5: its share to 1.1 % for any valid drawing */
+#define ALPHA_TRIALS 4200000  /* alpha = 0.6: its share to 0.3 % for any valid drawing */
+#define COUNT(list) (int)(sizeof list / sizeof list[0])
+
+/* What a survivor's throughput can be, for throughput t and survival probability q. */
+enum {
+    SURVIVOR_RIGHT,
+    SURVIVOR_UNCHANGED,
+    SURVIVOR_TIMES,
+    SURVIVOR_BY_END,
+    SURVIVOR_FORMS
+};
+static const char *const survivor_words[SURVIVOR_FORMS] = {
+    "",
+    "the throughput unchanged: the survivors are not divided by the survival probability, "
+    "so energy is lost (the image darkens by that probability at each roulette)",
+    "the throughput times the survival probability, where it is divided by it",
+    "the throughput divided by the probability of ending, 1 - q, where the survival "
+    "probability q belongs"};
+
+static Vec3 survivor_form(int form, Vec3 t, double q)
+{
+    switch (form) {
+    case SURVIVOR_RIGHT:
+        return vec3_scale(t, 1.0 / q);
+    case SURVIVOR_UNCHANGED:
+        return t;
+    case SURVIVOR_TIMES:
+        return vec3_scale(t, q);
+    default:
+        return vec3_scale(t, 1.0 / (1.0 - q));
+    }
+}
+
+static int same_colour(Vec3 a, Vec3 b)
+{
+    return fabs(a.x - b.x) <= 1e-12 * fabs(b.x) && fabs(a.y - b.y) <= 1e-12 * fabs(b.y) &&
+           fabs(a.z - b.z) <= 1e-12 * fabs(b.z);
+}
 
 /* Roulette at `segment` with `settings` on throughput t, TRIALS times: it must go on
- * with probability `survival` and keep t in expectation. Returns 1 when it does. */
-static int roulette_trials(Grading *g, const PathSettings *settings, int segment, Vec3 t,
-                           double survival, const char *setting)
+ * with probability `survival`, a survivor carrying t / survival. Returns 1 when it does. */
+static int roulette_trials(Grading *g, long trials, const PathSettings *settings, int segment,
+                           Vec3 t, double survival, const char *setting)
 {
-    double kept = 0.0, sum[3] = {0, 0, 0}, sum2[3] = {0, 0, 0}, before[3] = {t.x, t.y, t.z};
-    for (long i = 0; i < TRIALS; i++) {
-        Rng rng = rng_for_sample(61, (uint64_t)segment, (uint64_t)i);
+    long kept = 0, forms[SURVIVOR_FORMS] = {0};
+    double dsum = 0.0, dsum2 = 0.0;
+    Vec3 first_wrong = t;
+    for (long i = 0; i < trials; i++) {
+        Rng rng = rng_for_sample(grading_stream(g, 61), (uint64_t)segment, (uint64_t)i);
+        Rng again = rng;
         Vec3 after = t;
         int goes_on = ASK(g, roulette_continues(settings, segment, &after, &rng)) != 0.0;
-        if (goes_on)
+        if (goes_on) /* an ended path's throughput is never read */
             after = grading_ask_vec3(g, after);
-        double v[3] = {after.x, after.y, after.z};
-        kept += goes_on != 0;
-        for (int c = 0; c < 3; c++) {
-            double x = goes_on ? v[c] : 0.0;
-            if (grading_not_finite(g, x, "the throughput after roulette"))
-                return 0;
-            sum[c] += x;
-            sum2[c] += x * x;
-        }
+        if (grading_probing(g))
+            continue;
+        /* the solution's decision from the same number */
+        int right_goes_on = survival >= 1.0 || rng_uniform(&again) < survival;
+        dsum += goes_on - right_goes_on;
+        dsum2 += (goes_on - right_goes_on) * (goes_on - right_goes_on);
+        if (!goes_on)
+            continue;
+        kept++;
+        if (grading_not_finite(g, after.x + after.y + after.z,
+                               "a survivor's throughput after roulette"))
+            return 0;
+        int matched = 0;
+        for (int f = 0; f < SURVIVOR_FORMS; f++)
+            if (same_colour(after, survivor_form(f, t, fmin(survival, 1.0))) && !matched) {
+                forms[f]++;
+                matched = 1;
+            }
+        if (!matched && same_colour(first_wrong, t))
+            first_wrong = after;
     }
-    double share = kept / TRIALS;
-    double share_se = sqrt(fmax(survival * (1.0 - survival), 1.0 / TRIALS) / TRIALS);
-    double mean = sum[1] / TRIALS, var = sum2[1] / TRIALS - mean * mean;
-    double se = sqrt(fmax(var, 0.0) / TRIALS);
-    double mean_z = se > 0.0 ? (mean - before[1]) / se : (mean == before[1] ? 0.0 : INFINITY);
+    if (grading_probing(g))
+        return 1;
+    double n = (double)trials, share = kept / n;
+    double share_se = sqrt(fmax(survival * (1.0 - survival), 1.0 / n) / n);
+    double dmean = dsum / n, dse = sqrt(fmax(0.0, dsum2 / n - dmean * dmean) / n);
+    double share_z = (share - survival) / share_se;
+    double paired_z = dse > 0.0 ? dmean / dse : (dmean == 0.0 ? 0.0 : INFINITY);
+    double limit = grading_z(grading_level());
     grading_note(g,
-                 "%s: %.4f of the paths go on (%.4f expected), mean throughput after %.4f "
-                 "+- %.4f where it was %.4f before",
-                 setting, share, survival, mean, se, before[1]);
-    if (fabs(share - survival) / share_se > Z_LEVEL)
+                 "%s: %.5f of the paths go on (%.4f expected, z = %+.1f; paired with the "
+                 "solution's decision from the same number: %+.5f, z = %+.1f; limit %.2f; "
+                 "detectable %.2g%% of the share, exact when paired)",
+                 setting, share, survival, share_z, dmean, paired_z, limit,
+                 100.0 * grading_detectable(share_se) / survival);
+    if (survival >= 1.0 && kept < trials)
         return grading_fail(g,
-                            "%s: %.1f%% of the paths go on where the survival probability "
-                            "is %.1f%%",
-                            setting, 100.0 * share, 100.0 * survival);
-    if (fabs(mean_z) > Z_LEVEL) {
-        double ratio = mean / before[1];
+                            "%s: %.2f%% of the paths end where none may (the survival "
+                            "probability is 1: no roulette)",
+                            setting, 100.0 * (1.0 - share));
+    if (fabs(share_z) > limit || fabs(paired_z) > limit) {
+        const char *meaning =
+            fabs(share - (1.0 - survival)) < 0.01
+                ? ": the path ends with probability q, where q is the probability that it "
+                  "goes on (the report's erratum: alpha is the survival probability)"
+            : share == 1.0 ? ": roulette never ends a path here"
+                           : ": a path goes on when the uniform number is below q "
+                             "(roulette_survives)";
         return grading_fail(g,
-                            "%s: the throughput after roulette is on average %.3f times what "
-                            "it was (z = %.1f): %s",
-                            setting, ratio, mean_z,
-                            fabs(ratio - survival) < 0.02
-                                ? "the survivors are not divided by the survival probability, "
-                                  "so energy is lost (the image darkens)"
-                                : "roulette must keep the expected throughput: a survivor "
-                                  "carries throughput / survival");
+                            "%s: %.2f%% of the paths go on where the survival probability "
+                            "is %.1f%%%s",
+                            setting, 100.0 * share, 100.0 * survival, meaning);
     }
-    for (int c = 0; c < 3; c++)
-        if (fabs(sum[c] / TRIALS - before[c]) > 0.05 * before[c] + 6.0 * se)
-            return grading_fail(g,
-                                "%s: channel %d's throughput changes on average from %.4f to "
-                                "%.4f: every channel is divided by the same probability",
-                                setting, c, before[c], sum[c] / TRIALS);
-    return 1;
+    if (forms[SURVIVOR_RIGHT] == kept)
+        return 1;
+    for (int f = 1; f < SURVIVOR_FORMS; f++)
+        if (forms[f] == kept)
+            return grading_fail(g, "%s: every survivor carries %s", setting, survivor_words[f]);
+    if (survival >= 1.0)
+        return grading_fail(g,
+                            "%s: the throughput changes from (%.3f, %.3f, %.3f) to (%.4f, "
+                            "%.4f, %.4f) where there is no roulette: leave it as it is",
+                            setting, t.x, t.y, t.z, first_wrong.x, first_wrong.y,
+                            first_wrong.z);
+    Vec3 right = vec3_scale(t, 1.0 / survival);
+    return grading_fail(g,
+                        "%s: %ld of %ld survivors carry a throughput other than (%.4f, %.4f, "
+                        "%.4f) = the one before / %.2f, e.g. (%.4f, %.4f, %.4f): every channel "
+                        "is divided by the same survival probability",
+                        setting, kept - forms[SURVIVOR_RIGHT], kept, right.x, right.y, right.z,
+                        survival, first_wrong.x, first_wrong.y, first_wrong.z);
 }
 
 static void grade_continues(Grading *g)
@@ -79,48 +149,96 @@ static void grade_continues(Grading *g)
     PathSettings alpha = {.max_depth = 10, .rr_survival = 0.6};
     PathSettings bounded = {.max_depth = 10, .rr_throughput = 2};
     PathSettings off = {.max_depth = 10};
-    if (!roulette_trials(g, &alpha, 3, t, 0.6, "alpha = 0.6") ||
-        !roulette_trials(g, &bounded, 3, t, 0.5,
+    if (!roulette_trials(g, ALPHA_TRIALS, &alpha, 3, t, 0.6, "alpha = 0.6") ||
+        !roulette_trials(g, BOUNDED_TRIALS, &bounded, 3, t, 0.5,
                          "bounded weights from segment 2, at segment 3 "
                          "with throughput (0.3, 0.5, 0.2)") ||
-        !roulette_trials(g, &bounded, 2, t, 0.5,
+        !roulette_trials(g, BOUNDED_TRIALS, &bounded, 2, t, 0.5,
                          "bounded weights from segment 2, at segment 2 "
                          "with throughput (0.3, 0.5, 0.2)") ||
-        !roulette_trials(g, &bounded, 1, t, 1.0,
+        !roulette_trials(g, TRIALS, &bounded, 1, t, 1.0,
                          "bounded weights from segment 2, at segment 1") ||
-        !roulette_trials(g, &off, 3, t, 1.0, "no roulette (rr_survival 0, rr_throughput 0)"))
+        !roulette_trials(g, TRIALS, &off, 3, t, 1.0,
+                         "no roulette (rr_survival 0, rr_throughput 0)"))
         return;
 }
 
+/* The survival probability's inputs: the throughput's r, g, b. */
+static double survival_right(const double *x)
+{
+    return fmin(1.0, fmax(x[0], fmax(x[1], x[2])));
+}
+static double survival_mean(const double *x) { return fmin(1.0, (x[0] + x[1] + x[2]) / 3.0); }
+static double survival_min(const double *x) { return fmin(1.0, fmin(x[0], fmin(x[1], x[2]))); }
+static double survival_sum(const double *x) { return fmin(1.0, x[0] + x[1] + x[2]); }
+static double survival_luminance(const double *x)
+{
+    return fmin(1.0, 0.2126 * x[0] + 0.7152 * x[1] + 0.0722 * x[2]);
+}
+static double survival_green(const double *x) { return fmin(1.0, x[1]); }
+static double survival_unbounded(const double *x) { return fmax(x[0], fmax(x[1], x[2])); }
+static double survival_ending(const double *x) { return fmax(0.0, 1.0 - survival_right(x)); }
+
+static const WrongAnswer wrong_survival[] = {
+    {"min(1, the channels' mean)",
+     "the largest channel bounds the weight: min(1, max component) (vec3_max_component)",
+     survival_mean},
+    {"min(1, the smallest channel)",
+     "the largest channel bounds the weight: the survivor's throughput / q <= 1 in every "
+     "channel only for q = the largest",
+     survival_min},
+    {"min(1, the channels' sum)", "the largest channel, not the sum", survival_sum},
+    {"min(1, the luminance)", "the largest channel bounds the weight, not the luminance",
+     survival_luminance},
+    {"min(1, the green channel)", "the largest of the three channels", survival_green},
+    {"the largest channel without min(1, ...), above 1 for bright throughputs",
+     "a probability is at most 1: min(1, max component)", survival_unbounded},
+    {"1 - min(1, max component), the probability of ending",
+     "the probability of going on: min(1, max component)", survival_ending},
+};
+
 static void grade_survival(Grading *g)
 {
-    const Vec3 throughputs[] = {
-        {0.3, 0.5, 0.2}, {2.0, 0.1, 0.1}, {0.1, 0.05, 0.9}, {0.0, 0.0, 0.0}, {0.7, 0.7, 0.7}};
-    for (int i = 0; i < (int)(sizeof throughputs / sizeof throughputs[0]) && !g->failed; i++) {
-        Vec3 t = throughputs[i];
-        double got = ASK(g, roulette_survival_from_throughput(t));
-        double want = fmin(1.0, vec3_max_component(t));
-        grading_note(g, "throughput (%.2f, %.2f, %.2f): survival %.4f; min(1, max) = %.4f", t.x,
-                     t.y, t.z, got, want);
-        if (grading_not_finite(g, got, "the survival probability") || fabs(got - want) <= 1e-12)
-            continue;
-        if (got > 1.0)
-            grading_fail(g,
-                         "survival %.3f > 1 for throughput (%.2f, %.2f, %.2f): a probability "
-                         "is at most 1 (min(1, ...))",
-                         got, t.x, t.y, t.z);
-        else if (fabs(got - (t.x + t.y + t.z) / 3.0) <= 1e-12)
-            grading_fail(g,
-                         "survival %.3f for throughput (%.2f, %.2f, %.2f) is the channels' "
-                         "mean; the largest channel bounds the weight",
-                         got, t.x, t.y, t.z);
-        else
-            grading_fail(g,
-                         "survival %.*f for throughput (%.2f, %.2f, %.2f), where min(1, max "
-                         "component) = %.*f",
-                         grading_decimals(got, want), got, t.x, t.y, t.z,
-                         grading_decimals(got, want), want);
+    const double throughputs[][3] = {{0.3, 0.5, 0.2}, {2.0, 0.1, 0.1},   {0.1, 0.05, 0.9},
+                                     {0.0, 0.0, 0.0}, {0.7, 0.7, 0.7},   {0.05, 0.6, 0.3},
+                                     {1.5, 3.0, 0.2}, {0.02, 0.01, 0.04}};
+    enum {
+        POINTS = sizeof throughputs / sizeof throughputs[0]
+    };
+    double got[POINTS];
+    int wrong = -1;
+    for (int i = 0; i < POINTS; i++) {
+        const double *t = throughputs[i];
+        got[i] = ASK(g, roulette_survival_from_throughput(vec3(t[0], t[1], t[2])));
+        grading_note(g, "throughput (%.2f, %.2f, %.2f): survival %.4f; min(1, max) = %.4f",
+                     t[0], t[1], t[2], got[i], survival_right(t));
+        if (grading_not_finite(g, got[i], "the survival probability"))
+            return;
+        if (wrong < 0 && !(fabs(got[i] - survival_right(t)) <= 1e-12))
+            wrong = i;
     }
+    if (wrong < 0)
+        return;
+    const WrongAnswer *match = grading_known_wrong(wrong_survival, COUNT(wrong_survival),
+                                                   &throughputs[0][0], 3, got, POINTS);
+    if (match) {
+        grading_fail_known(g, "survival probability", match, POINTS);
+        return;
+    }
+    const double *t = throughputs[wrong];
+    double want = survival_right(t);
+    if (got[wrong] > 1.0)
+        grading_fail(g,
+                     "survival %.3f > 1 for throughput (%.2f, %.2f, %.2f): a probability "
+                     "is at most 1 (min(1, ...))",
+                     got[wrong], t[0], t[1], t[2]);
+    else
+        grading_fail(g,
+                     "survival %.*f for throughput (%.2f, %.2f, %.2f), where min(1, max "
+                     "component) = %.*f (%.4g times that): a survivor's throughput / q must "
+                     "stay at most 1 in every channel",
+                     grading_decimals(got[wrong], want), got[wrong], t[0], t[1], t[2],
+                     grading_decimals(got[wrong], want), want, got[wrong] / want);
 }
 
 const Exercise exercises[] = {

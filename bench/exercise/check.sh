@@ -8,7 +8,8 @@
 # judge, checked against the checksum recorded when it was built, lists the exercises,
 # renders the references into REFERENCES (again when their checksums, recorded beside
 # them, do not match) and grades every exercise (or the IDs given), TIME_LIMIT seconds at
-# most each (default 60), from the probe's answers alone (bench/exercise/supervise.h).
+# most each (default 60), from the probe's answers alone (bench/exercise/supervise.h),
+# the random inputs of both from GRADE_SEED (default 0, the fixed seed; grading.h).
 # The verdicts go to stdout, whole, and to OUT/verdicts.txt (OUT: default STUDENT/check,
 # made afresh), the pictures and the build's log beside them. Exit status: 0 when every
 # exercise passes, 1 otherwise, 2 when the tree cannot be graded or a verdict not kept.
@@ -35,6 +36,11 @@ real=$(cd -P -- "$student" 2> /dev/null && pwd -P) || refuse "cannot enter $stud
 case $repo/ in "$real"/*) refuse "STUDENT=$student is or holds this repository ($repo), not a chapter's tree" ;; esac
 [ -L "$student/lib" ] && refuse "$student/lib is a symbolic link: a tree's lib/ must be its own folder"
 [ -d "$student/lib" ] || refuse "$student is not a chapter's tree (it has no lib/)"
+case ${GRADE_SEED:-0} in
+    *[!0-9]*) refuse "GRADE_SEED=$GRADE_SEED is not a whole number (the grading's seed, default 0)" ;;
+esac
+# The probe, in its sandbox, draws its random inputs from the judge's seed.
+export GRADE_SEED=${GRADE_SEED:-0} SANDBOX_ENV="${SANDBOX_ENV:+$SANDBOX_ENV }GRADE_SEED"
 case ${TRUSTED:-} in '' | 0) trusted=0 ;; 1) trusted=1 ;; *) refuse "TRUSTED=$TRUSTED is neither 1 nor 0" ;; esac
 
 # Where the verdicts go: made afresh by the grader, never through a link out of the tree.
@@ -166,6 +172,7 @@ else
 fi
 
 say "chapter $chapter: checking $student"
+[ "$GRADE_SEED" = 0 ] || say "(random inputs from GRADE_SEED=$GRADE_SEED)"
 run make --no-print-directory -s -r -f "$root/grader/student.mk" REPO="$root/grader" \
     CHAPTER="$chapter" PROBE_FILES="$probe_files" BENCH_OBJECTS="$bench_objects" \
     CC="${CC:-cc}" CFLAGS="${CFLAGS:-}" PKG_CFLAGS="${PKG_CFLAGS:-}" LDFLAGS="${LDFLAGS:-}" \

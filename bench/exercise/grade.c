@@ -5,7 +5,8 @@
  *     grade --judge ID OUT REFERENCES SECONDS COMMAND...   run COMMAND... ID (probe.c, built
  *        from the student's library, in its sandbox) under watch (supervise.h) and grade its
  *        answers: "pass" or "FAIL: what is wrong", then the numbers behind it; pictures and
- *        what it printed into OUT; exit 0 or 1
+ *        what it printed into OUT; exit 0 or 1; GRADE_SEED (grading.h) chooses the random
+ *        inputs, the probe's alike
  * Bad use, or a judge that cannot start its probe, exits 2.
  */
 #include <stdio.h>
@@ -107,6 +108,11 @@ static int judge(const Exercise *e, int argc, char **argv)
         return usage();
     ProbeRun run;
     char error[512];
+    uint64_t seed;
+    if (grading_seed_from_environment(&seed, error, sizeof error) != 0) {
+        fprintf(stderr, "grade: %s\n", error);
+        return 2;
+    }
     if (supervise_probe((const char *const *)argv + 6, e->id, (int)seconds, &run, error,
                         sizeof error) != 0) {
         fprintf(stderr, "grade: %s\n", error);
@@ -116,6 +122,7 @@ static int judge(const Exercise *e, int argc, char **argv)
     Grading g;
     memset(&g, 0, sizeof g);
     g.id = e->id;
+    g.seed = seed;
     g.out = argv[3];
     g.references = argv[4];
     g.answers = &run.answers;

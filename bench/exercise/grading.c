@@ -79,6 +79,7 @@ static int grade_used(Grading *g, const Exercise *e, const Exercise *used)
     part.answers = g->answers;
     part.ended = g->ended;
     part.next = g->next;
+    part.seed = g->seed;
     used->grade(&part);
     g->next = part.next;
     if (!part.failed) {
@@ -109,6 +110,84 @@ void exercise_grade(const Exercise *e, Grading *g)
 }
 
 int grading_probing(const Grading *g) { return g->writer != NULL; }
+
+double grading_level(void) { return -expm1(log1p(-COURSE_FALSE_ALARM) / COURSE_CHECKS); }
+
+double grading_z(double level)
+{
+    double low = 0.0, high = 40.0; /* erfc(z / sqrt 2) falls from 1 to 0 */
+    for (int i = 0; i < 200; i++) {
+        double mid = 0.5 * (low + high);
+        if (erfc(mid / sqrt(2.0)) > level)
+            low = mid;
+        else
+            high = mid;
+    }
+    return 0.5 * (low + high);
+}
+
+double grading_detectable(double se)
+{
+    /* one-sided: P(Z > z) = 1 - power is the two-sided level 2 (1 - power) */
+    return (grading_z(grading_level()) + grading_z(2.0 * (1.0 - GRADING_POWER))) * se;
+}
+
+int grading_seed_from_environment(uint64_t *seed, char *error, size_t size)
+{
+    const char *text = getenv("GRADE_SEED");
+    *seed = 0;
+    if (!text || !*text)
+        return 0;
+    char *end;
+    errno = 0;
+    unsigned long long value = strtoull(text, &end, 10);
+    if (*end || errno || text[0] < '0' || text[0] > '9' || value > 0xffffffffULL) {
+        snprintf(error, size, "GRADE_SEED=%s is not a whole number from 0 to 4294967295", text);
+        return -1;
+    }
+    *seed = value;
+    return 0;
+}
+
+uint64_t grading_stream(const Grading *g, uint64_t stream) { return stream ^ (g->seed << 32); }
+
+const WrongAnswer *grading_known_wrong(const WrongAnswer *list, int count, const double *inputs,
+                                       int arity, const double *got, int points)
+{
+    if (points < 2)
+        return NULL;
+    for (int i = 0; i < count; i++) {
+        int k = 0;
+        for (; k < points; k++) {
+            double wrong = list[i].value(inputs + (long)k * arity);
+            if (!(fabs(got[k] - wrong) <= 1e-9 * fabs(wrong) + 1e-300))
+                break;
+        }
+        if (k == points)
+            return &list[i];
+    }
+    return NULL;
+}
+
+int grading_mean_test(Grading *g, const char *what, double sum, double sum2, long count,
+                      double exact, const char *hint)
+{
+    double mean = sum / count, se = sqrt(fmax(0.0, sum2 / count - mean * mean) / (count - 1));
+    double z = se > 0.0 ? (mean - exact) / se : (mean == exact ? 0.0 : INFINITY);
+    grading_note(g, "%s: %.5f, exactly %.5f (z = %+.1f; a bias of %.2g detected at power %.2f)",
+                 what, mean, exact, z, grading_detectable(se), GRADING_POWER);
+    if (fabs(z) <= grading_z(grading_level()))
+        return 1;
+    return grading_fail(
+        g, "%s is %.5f where %.5f is exact (%+.2f%%, z = %+.1f over %ld samples): %s", what,
+        mean, exact, exact != 0.0 ? 100.0 * (mean / exact - 1.0) : 0.0, z, count, hint);
+}
+
+int grading_fail_known(Grading *g, const char *quantity, const WrongAnswer *known, int points)
+{
+    return grading_fail(g, "your %s equals %s, at each of the %d inputs tried (to 1e-9): %s",
+                        quantity, known->wrong, points, known->right);
+}
 
 double grading_ask(Grading *g, double value)
 {

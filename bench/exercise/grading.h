@@ -12,6 +12,7 @@
 #define GRADING_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "answers.h"
 #include "render.h"
@@ -28,6 +29,7 @@ typedef struct {
     int failed;
     char message[1024]; /* what is wrong (the first failure found), when failed */
     char numbers[4096]; /* the numbers behind the verdict, one line each */
+    uint64_t seed;      /* the grading's seed (GRADE_SEED): every random input follows it */
 } Grading;
 
 /* A render the grader compares, pixel by pixel, with the solution's (render_check.h). */
@@ -103,6 +105,57 @@ char *grading_p(double p, char *text, size_t size);
 /* Parse the scene `text` (docs/scene-format.md) into *scene. Returns 0, or fails the
  * exercise and returns -1. */
 int grading_scene(Grading *g, const char *text, Scene *scene);
+
+/* The course's significance. Every statistical check of every chapter's grading is one
+ * of at most COURSE_CHECKS, and the whole course's grading of a right answer fails with
+ * probability at most COURSE_FALSE_ALARM: each check runs at Sidak's level
+ * 1 - (1 - COURSE_FALSE_ALARM)^(1 / COURSE_CHECKS), about 2.5e-7 (two-sided z about 5.16).
+ * A check states its power: the bias it detects with probability GRADING_POWER, from its
+ * standard error se, (z_level + z_power) se, about 7.5 se. */
+#define COURSE_FALSE_ALARM 1e-4
+#define COURSE_CHECKS 400
+#define GRADING_POWER 0.99
+
+/* The level of one check of the course (above). */
+double grading_level(void);
+
+/* The z with P(|Z| > z) = level for a standard normal Z (two-sided). */
+double grading_z(double level);
+
+/* The smallest bias a check at grading_level() of standard error `se` detects with
+ * probability GRADING_POWER: (grading_z(level) + z) se with P(Z > z) = 1 - GRADING_POWER. */
+double grading_detectable(double se);
+
+/* The grading's seed: GRADE_SEED from the environment, a whole number, 0 (the fixed seed
+ * of every check) when it is unset or empty. The probe and the judge read it alike.
+ * Returns 0, or -1 with a message in error[size] when it is not a whole number. */
+int grading_seed_from_environment(uint64_t *seed, char *error, size_t size);
+
+/* The stream `stream` of random inputs under g's seed: `stream` itself at seed 0. */
+uint64_t grading_stream(const Grading *g, uint64_t stream);
+
+/* A z-test at grading_level() of the mean of `count` values (their sum and sum of squares)
+ * against its exact value: a note with the detectable bias; on failure the verdict names
+ * `what`, the relative difference and z, then `hint`. Returns 1 when it passes. */
+int grading_mean_test(Grading *g, const char *what, double sum, double sum2, long count,
+                      double exact, const char *hint);
+
+/* A catalogue of known wrong answers of a closed form: what the code computes instead,
+ * in words, what is right, and that wrong value at the grader's inputs. */
+typedef struct {
+    const char *wrong; /* "(1/2) (R_s + R_p) computed as 1 / 2 * (...) in integers" */
+    const char *right; /* why that is wrong and what is right, in words */
+    double (*value)(const double *inputs);
+} WrongAnswer;
+
+/* The first entry of list[count] whose value matches got[k] to 1e-9 (relative) at every
+ * one of `points` inputs (inputs + k * arity), or NULL. Needs points >= 2. */
+const WrongAnswer *grading_known_wrong(const WrongAnswer *list, int count, const double *inputs,
+                                       int arity, const double *got, int points);
+
+/* Fails naming the match: "your QUANTITY equals WRONG at each of the N inputs tried: RIGHT".
+ * Returns 0. */
+int grading_fail_known(Grading *g, const char *quantity, const WrongAnswer *known, int points);
 
 /* What a warp test's cells are called: row 0 and the last row named where they are,
  * and the impossible cell, where the density is 0 (expected count 0). */

@@ -3,7 +3,7 @@
  *     probe ID    run exercise ID's grader, sending every value the student's code computes
  *                 to the judge (grade --judge) on file descriptor 3, in frames that carry
  *                 the run's secret (answers.h), read first from descriptor 4; exit 0 once
- *                 all are sent
+ *                 all are sent; GRADE_SEED, as the judge's, chooses the random inputs
  * Bad use, or no secret, exits 2; a pipe that fails, 3.
  */
 #include <stdio.h>
@@ -32,6 +32,11 @@ int main(int argc, char **argv)
     memset(&g, 0, sizeof g);
     g.id = e->id;
     g.writer = &writer;
+    char error[200];
+    if (grading_seed_from_environment(&g.seed, error, sizeof error) != 0) {
+        fprintf(stderr, "probe: %s\n", error);
+        _exit(2);
+    }
     exercise_grade(e, &g);
     int status = answer_end(&writer) == 0 ? 0 : 3;
     if (status != 0)

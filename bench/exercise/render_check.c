@@ -196,7 +196,9 @@ static int ask_render(Grading *g, const RenderCheck *check, RenderResult *yours)
         grading_fail(g, "the exercise's scene does not load: %s", error);
         return -1;
     }
-    int status = grading_probing(g) ? render_at(check, &scene, check->spp, 1, yours) : 0;
+    int status = grading_probing(g)
+                     ? render_at(check, &scene, check->spp, grading_stream(g, 1), yours)
+                     : 0;
     int width = check->width, height = (int)lround(width / scene_file_aspect(&scene.camera));
     scene_free(&scene);
     if (grading_ask(g, status) != 0.0) {
@@ -297,7 +299,9 @@ int grading_render(Grading *g, const RenderCheck *check, double level, const cha
                  "level %.2g; %d pixels of %d fail",
                  t.tests, ptext, t.z, t.col, t.row, t.level, t.failing_pixels,
                  reference.width * reference.height);
-    ok = t.smallest_p >= t.level && fabs(mean_z) <= 4.0;
+    /* the image means: within 4 standard errors, or the z of the level when it is larger */
+    double mean_limit = fmax(4.0, grading_z(level));
+    ok = t.smallest_p >= t.level && fabs(mean_z) <= mean_limit;
     snprintf(verdict, sizeof verdict, "%d of %d pixels fail; mean %+.1f%%: %s",
              t.failing_pixels, reference.width * reference.height,
              ref_mean > 0 ? 100.0 * (mean / ref_mean - 1.0) : 0.0, ok ? "agree" : "DISAGREE");
@@ -308,7 +312,7 @@ int grading_render(Grading *g, const RenderCheck *check, double level, const cha
         char brightness[200];
         if (mean == 0.0)
             snprintf(brightness, sizeof brightness, "the image is black");
-        else if (fabs(mean_z) > 4.0)
+        else if (fabs(mean_z) > mean_limit)
             snprintf(
                 brightness, sizeof brightness,
                 "the image is %.0f%% too %s (mean %.4f where the reference has %.4f +- %.4f)",
