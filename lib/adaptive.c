@@ -2,6 +2,7 @@
  * the passes. See adaptive.h. */
 #include "adaptive.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 static double channel(Vec3 v, int c) { return c == 0 ? v.x : c == 1 ? v.y : v.z; }
@@ -9,7 +10,7 @@ static double channel(Vec3 v, int c) { return c == 0 ? v.x : c == 1 ? v.y : v.z;
 double adaptive_error_estimate(const Vec3 *first, const Vec3 *second, int width, int height,
                                int col, int row)
 {
-    double variance[3] = {0, 0, 0}, value[3] = {0, 0, 0};
+    double sum = 0.0;
     int count = 0;
     for (int y = row - 1; y <= row + 1; y++)
         for (int x = col - 1; x <= col + 1; x++) {
@@ -18,17 +19,12 @@ double adaptive_error_estimate(const Vec3 *first, const Vec3 *second, int width,
             long p = (long)y * width + x;
             for (int c = 0; c < 3; c++) {
                 double a = channel(first[p], c), b = channel(second[p], c);
-                variance[c] += (a - b) * (a - b) / 4.0;
-                value[c] += (a + b) / 2.0;
+                double value = (a + b) / 2.0;
+                sum += (a - b) * (a - b) / 4.0 / (value * value + 0.01) / 3.0;
             }
             count++;
         }
-    double e = 0.0;
-    for (int c = 0; c < 3; c++) {
-        double mean = value[c] / count;
-        e += variance[c] / count / (mean * mean + 0.01);
-    }
-    return e / 3.0;
+    return sum / count;
 }
 
 int adaptive_samples_to_add(const AdaptiveSettings *settings, int samples, double estimate)
@@ -82,10 +78,20 @@ long adaptive_plan(const AdaptiveSettings *settings, const AdaptivePixel *pixels
     for (long p = 0; p < count; p++)
         decision_halves(&pixels[p], settings->rule, &first[p], &second[p]);
     for (int row = 0; row < height; row++)
+        for (int col = 0; col < width; col++)
+            estimate[(long)row * width + col] =
+                adaptive_error_estimate(first, second, width, height, col, row);
+    /* A pixel is sampled when any window it lies in is above the threshold, so that the
+     * pixel whose error holds a window up gets samples too. */
+    for (int row = 0; row < height; row++)
         for (int col = 0; col < width; col++) {
+            double worst = 0.0;
+            for (int y = row - 1; y <= row + 1; y++)
+                for (int x = col - 1; x <= col + 1; x++)
+                    if (x >= 0 && y >= 0 && x < width && y < height)
+                        worst = fmax(worst, estimate[(long)y * width + x]);
             long p = (long)row * width + col;
-            estimate[p] = adaptive_error_estimate(first, second, width, height, col, row);
-            to_add[p] = adaptive_samples_to_add(settings, pixels[p].samples, estimate[p]);
+            to_add[p] = adaptive_samples_to_add(settings, pixels[p].samples, worst);
             active += to_add[p] > 0;
         }
     free(first);

@@ -30,10 +30,9 @@ typedef struct {
 } AdaptiveSettings;
 
 /* Exercise 10.1: the estimated relative MSE of pixel (col, row) of the mean of two
- * independent half-images `first` and `second` (width x height): over the 3 x 3 window
- * W around it (the pixels of it inside the image) and the three channels c,
- *     e = 1/3 sum_c  mean_W ((first - second) / 2)^2  /  ((mean_W (first + second) / 2)^2 +
- * 0.01). */
+ * independent half-images `first` and `second` (width x height): the mean over the 3 x 3
+ * window W around it (its pixels inside the image) and the three channels c of
+ *     ((first - second) / 2)^2 / (((first + second) / 2)^2 + 0.01). */
 double adaptive_error_estimate(const Vec3 *first, const Vec3 *second, int width, int height,
                                int col, int row);
 
@@ -46,7 +45,8 @@ int adaptive_samples_to_add(const AdaptiveSettings *settings, int samples, doubl
 Vec3 adaptive_pixel_value(const AdaptivePixel *pixel, AdaptiveRule rule);
 
 /* One pass's plan: each pixel's estimate (of the kept value's relative MSE, from the halves
- * the rule decides from) and the samples to add. Returns how many pixels get samples, or
+ * the rule decides from) and the samples to add, judged by the largest estimate of the
+ * windows it lies in. Returns how many pixels get samples, or
  * -1 when memory runs out. */
 long adaptive_plan(const AdaptiveSettings *settings, const AdaptivePixel *pixels, int width,
                    int height, double *estimate, int *to_add);
