@@ -30,8 +30,9 @@ enum {
 
 /* The table: seeds, the errors it times, and the ladders each estimator climbs: chapter 7's
  * samples per pixel and chapter 8's passes doubling from FIRST_SPP and 1, until the
- * smallest error is passed or a step takes more than STEP_SECONDS (--quick: a sixteenth);
- * chapter 10's targets down to LAST_TARGET, below the smallest error so as to bracket it. */
+ * smallest error is passed or a step takes more than STEP_SECONDS (--quick:
+ * QUICK_STEP_SECONDS); chapter 10's targets down to LAST_TARGET, below the smallest error so as
+ * to bracket it. */
 enum {
     SEEDS = 3,
     QUICK_SEEDS = 2,
@@ -43,6 +44,7 @@ enum {
 static const double TABLE_ERRORS[ERRORS] = {0.05, 0.02, 0.01, 0.005};
 #define LAST_TARGET 0.0035
 #define STEP_SECONDS 40.0
+#define QUICK_STEP_SECONDS 0.25
 
 static AdaptiveSettings rule_from(const Options *options, AdaptiveRule rule)
 {
@@ -240,7 +242,7 @@ static int climb(int estimator, const Options *small, const Scene *scene,
                  const PathSettings *path, const Reference *reference, double *seconds,
                  double *errors)
 {
-    double step_limit = small->quick ? STEP_SECONDS / 16 : STEP_SECONDS;
+    double step_limit = small->quick ? QUICK_STEP_SECONDS : STEP_SECONDS;
     int steps = 0, width, height;
     experiment_image_size(small, scene, &width, &height);
     for (int k = 0; k < LADDER; k++) {
