@@ -85,12 +85,14 @@ ifneq ($(UNTAGGED),)
 $(error these files do not say which chapter introduces them on their first line: $(UNTAGGED))
 endif
 # The files of chapters 1..N among $(2).
-upto = $(foreach f,$(2),$(if $(filter $(call chapter_of,$(f)),$(wordlist 1,$(1),1 2 3 4 5 6 7 8 9)),$(f)))
+upto = $(foreach f,$(2),$(if $(filter $(call chapter_of,$(f)),$(wordlist 1,$(1),1 2 3 4 5 6 7 8 9 10)),$(f)))
 
 PROGRAMS := $(wildcard chapters/ch[0-9][0-9]_*.c)
 CHAPTERS := $(foreach p,$(PROGRAMS),$(call chapter_of,$(p)))
 FINAL    := $(lastword $(CHAPTERS))
-program_of = $(patsubst chapters/%.c,$(BUILD)/%,$(filter chapters/ch0$(1)_%,$(PROGRAMS)))
+# ch01_ .. ch09_, ch10_: the chapter's number in two digits.
+two_digits = $(if $(filter 1 2 3 4 5 6 7 8 9,$(1)),0$(1),$(1))
+program_of = $(patsubst chapters/%.c,$(BUILD)/%,$(filter chapters/ch$(call two_digits,$(1))_%,$(PROGRAMS)))
 
 LIB_SOURCES   := $(wildcard lib/*.c)
 BENCH_MAINS   := bench/reference.c bench/gallery_main.c bench/bench.c
@@ -326,7 +328,7 @@ check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 	    for f in $$tree/lib/*.c; do \
 	        $(CC) $(REQUIRED) -I$$tree/lib -fsyntax-only $$f || { echo "$$f: the lesson alone does not compile"; exit 1; }; \
 	    done; \
-	    for f in $$tree/chapters/ch0$${n}_*.c $$(find $$tree/tests -name '*.c'); do \
+	    for f in $$tree/chapters/ch$$(printf %02d $$n)_*.c $$(find $$tree/tests -name '*.c'); do \
 	        $(CC) $(REQUIRED) -DCHAPTER=$$n -I$$tree/lib -Ibench $(PKG_CFLAGS) -fsyntax-only $$f || exit 1; \
 	    done; \
 	    earlier=$(BUILD)/source/chapter$$((n - 1)); [ -d $$earlier ] || earlier=; \
@@ -334,7 +336,7 @@ check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 	done; \
 	lines=$$(cat $(BUILD)/source/chapter1/lib/*.[ch] $(BUILD)/source/chapter1/chapters/ch01_*.c | wc -l); \
 	if [ $$lines -gt 1100 ]; then echo "chapter 1's lesson and program: $$lines lines (at most 1100)"; exit 1; fi; \
-	for n in $(wordlist 2,9,$(CHAPTERS)); do \
+	for n in $(wordlist 2,$(words $(CHAPTERS)),$(CHAPTERS)); do \
 	    old=$(BUILD)/source/chapter$$((n - 1))/lib; changed=0; \
 	    for f in $$old/*; do \
 	        changed=$$((changed + $$(diff $$f $(BUILD)/source/chapter$$n/lib/$${f##*/} | \

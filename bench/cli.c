@@ -59,6 +59,9 @@ static const FlagSpec FLAG_SPECS[] = {
     {FLAG_STRATA, "--strata", VALUE_SWITCH, 0, 0,
      "on|off  the final estimator's lamp points and bounces stratified across a pixel's "
      "samples"},
+    {FLAG_TARGET_ERROR, "--target-error", VALUE_REAL, 0, 1,
+     "E       render until the image's estimated relative RMSE is E (0: off)"},
+    {FLAG_TIME, "--time", VALUE_REAL, 0, 1e6, "T       render for at most T seconds (0: off)"},
 };
 #define FLAG_SPEC_COUNT ((int)(sizeof FLAG_SPECS / sizeof FLAG_SPECS[0]))
 
@@ -215,6 +218,14 @@ static void set_value(const FlagSpec *spec, const char *text, Options *o)
         case FLAG_RUNS:
             o->runs = (int)value;
             break;
+#if CHAPTER >= 7
+        case FLAG_TARGET_ERROR:
+            o->target_error = value;
+            break;
+        case FLAG_TIME:
+            o->time_limit = value;
+            break;
+#endif
         default:
             break;
         }

@@ -492,6 +492,23 @@ PathSettings experiment_final_estimator(const Options *options, const MirrorPlan
 #endif
 
 #if CHAPTER >= 8
+PpmSettings experiment_photon_settings(const PathSettings *path, const Scene *scene, int width,
+                                       int height, int spp, int passes)
+{
+    /* No more photons per pass than a grid takes: a pass then never stores too many. */
+    double photons =
+        fmin(EXPERIMENT_PHOTONS_PER_PIXEL * width * height + 0.5, POINT_GRID_MAX_POINTS);
+    PpmSettings ppm = {*path,
+                       (int)photons,
+                       ppm_first_radius(scene, PPM_FIRST_RADIUS_AT_800) * 800.0 / width,
+                       PPM_ALPHA,
+                       spp,
+                       passes,
+                       0.0};
+    ppm.path.mirror_light = 1;
+    return ppm;
+}
+
 void experiment_render_ppm(const Options *options, const char *name, const Scene *scene,
                            const RenderSettings *settings, const PpmSettings *ppm,
                            PpmResult *result)

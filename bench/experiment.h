@@ -204,6 +204,16 @@ BiasVariance experiment_seeds(const Options *options, const Scene *scene,
                               int seeds, const Reference references[2],
                               const unsigned char *left_out);
 
+/* Chapter 8's photon version of chapter 7's final estimator `path` for a width x height
+ * image, `spp` camera samples per pass, at most `passes` passes, no time budget: per pass
+ * EXPERIMENT_PHOTONS_PER_PIXEL photons a pixel (at most a grid's worth), a first radius in
+ * proportion to a pixel's size (PPM_FIRST_RADIUS_AT_800), the lamp's images in the mirror
+ * at the first diffuse vertex only (beyond it the map brings that light).
+ * docs/chapter8.md: how they were chosen. */
+#define EXPERIMENT_PHOTONS_PER_PIXEL 0.5
+PpmSettings experiment_photon_settings(const PathSettings *path, const Scene *scene, int width,
+                                       int height, int spp, int passes);
+
 /* Print the table of settings and their errors (bias_variance.h) and write it as NAME.csv. */
 void experiment_write_error_table(const Options *options, const char *name,
                                   const SettingError *rows, int count);

@@ -27,7 +27,7 @@ done
 
 # The code without comments and string literals, as one list of words; and the names
 # written after "." or "->".
-for f in "$tree"/lib/*.[ch] "$tree"/chapters/ch0"$n"_*.c "$tree"/tests/*.[ch] "$work"/bench/*; do
+for f in "$tree"/lib/*.[ch] "$tree"/chapters/ch$(printf %02d "$n")_*.c "$tree"/tests/*.[ch] "$work"/bench/*; do
     gcc -fpreprocessed -dD -E -P -x c "$f" 2>/dev/null | sed 's/"\([^"\\]\|\\.\)*"//g'
 done >"$work/code"
 grep -oE '[A-Za-z_][A-Za-z0-9_]*' "$work/code" | sort | uniq -c >"$work/words"

@@ -15,17 +15,10 @@
 #include "path_final.h"
 #include "view.h"
 
-/* The photon version's settings, for an image 800 pixels wide: per pass a fixed number
- * of photons per pixel, and a first radius in proportion to a pixel's size, as a
- * fraction of the view's width at the depth the camera sees (ppm_first_radius).
- * docs/chapter8.md: how they were chosen. */
-#define PHOTONS_PER_PIXEL 0.5
+/* Camera samples per pass of the figure's photon map, and passes at most (its time budget
+ * ends them). */
 #define PPM_SPP_PER_PASS 8
 #define MAX_PASSES 100000
-
-/* The lamp's images in the mirror wall at the first diffuse vertex only, where the eye
- * sees their light sharp; beyond it the caustic map brings that light too. */
-#define PHOTON_MIRROR_LIGHT 1
 
 /* The table: seeds per setting, steps of doubling passes (and samples), camera samples
  * per pass; the crops' enlargement. */
@@ -41,24 +34,6 @@ static void reference_for(const Options *options, const Scene *scene, Reference 
 {
     PathSettings estimator = {.max_depth = options->depth, .fresnel = options->fresnel};
     experiment_path_reference(options, scene, &estimator, NULL, 0.0, reference);
-}
-
-/* The photon version of chapter 7's final estimator `path` for a width x height image,
- * `spp` camera samples per pass, at most `passes` passes. */
-static PpmSettings photon_settings(const PathSettings *path, const Scene *scene, int width,
-                                   int height, int spp, int passes)
-{
-    /* No more photons per pass than a grid takes: a pass then never stores too many. */
-    double photons = fmin(PHOTONS_PER_PIXEL * width * height + 0.5, POINT_GRID_MAX_POINTS);
-    PpmSettings ppm = {*path,
-                       (int)photons,
-                       ppm_first_radius(scene, PPM_FIRST_RADIUS_AT_800) * 800.0 / width,
-                       PPM_ALPHA,
-                       spp,
-                       passes,
-                       0.0};
-    ppm.path.mirror_light = PHOTON_MIRROR_LIGHT;
-    return ppm;
 }
 
 /* The figure: chapter 7's final estimator, then the photon version in the same
@@ -80,8 +55,8 @@ static void equal_time_figure(const Options *options, const Scene *scene,
     rows[0] = experiment_row("ch08_path", text, &traced);
     measure_fill_row(&rows[0], &traced.image, reference);
 
-    PpmSettings ppm = photon_settings(path, scene, settings.image.width, settings.image.height,
-                                      PPM_SPP_PER_PASS, MAX_PASSES);
+    PpmSettings ppm = experiment_photon_settings(
+        path, scene, settings.image.width, settings.image.height, PPM_SPP_PER_PASS, MAX_PASSES);
     ppm.cpu_seconds = path_cpu;
     settings.label = "photon map";
     settings.image.sampling = PIXEL_PROGRESSIVE; /* stratified over all passes */
@@ -223,8 +198,8 @@ static void error_against_time(const Options *options, const Scene *scene,
     for (int s = 0; s < SERIES; s++)
         for (int step = 0; step < STEPS; step++) {
             SettingError *row = &rows[s * STEPS + step];
-            PpmSettings ppm =
-                photon_settings(path, scene, width, height, TABLE_SPP_PER_PASS, 1 << step);
+            PpmSettings ppm = experiment_photon_settings(path, scene, width, height,
+                                                         TABLE_SPP_PER_PASS, 1 << step);
             ppm.radius *= series_radius[s];
             ppm.alpha = series_alpha[s];
             *row = table_row(&small, scene, path, s == 0 ? NULL : &ppm,
@@ -233,8 +208,8 @@ static void error_against_time(const Options *options, const Scene *scene,
             y[s][step] = row->error.error;
         }
     for (int e = 0; e < EXTRA; e++) {
-        PpmSettings ppm =
-            photon_settings(path, scene, width, height, TABLE_SPP_PER_PASS, 1 << (STEPS - 1));
+        PpmSettings ppm = experiment_photon_settings(path, scene, width, height,
+                                                     TABLE_SPP_PER_PASS, 1 << (STEPS - 1));
         ppm.photons = (int)(ppm.photons * photon_factor[e] + 0.5);
         ppm.radius *= radius_factor[e];
         rows[SERIES * STEPS + e] =

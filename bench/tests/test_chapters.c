@@ -188,6 +188,14 @@ static void test_chapter9_ties_in_every_stage(void **state)
     assert_int_equal(same, 1);
 }
 
+#if CHAPTER >= 10
+/* Chapter 10 quickly: its table's ladders stop after a step of a quarter second. */
+static void test_chapter10(void **state)
+{
+    smoke("ch10_adaptive", "--quick --spp 4 --reference-spp 4 --target-error 0.2");
+}
+#endif
+
 /* A lamp with no blue: chapter 8's ratio of the image's channel means to the reference's
  * has nothing to divide by in blue, and must say so rather than print "nan". */
 static void test_chapter8_lamp_without_blue(void **state)
@@ -390,6 +398,9 @@ int main(void)
 #if CHAPTER >= 9
         cmocka_unit_test(test_chapter9),
         cmocka_unit_test(test_chapter9_ties_in_every_stage),
+#endif
+#if CHAPTER >= 10
+        cmocka_unit_test(test_chapter10),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
