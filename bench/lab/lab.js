@@ -363,7 +363,7 @@ function targetText(render, error) {
                (isNaN(render.estimated) ? "(after two steps)" : number(render.estimated, 4)) + " so far" + against +
                (render.finished && !render.stopped ? "; not reached within the render's samples" : "");
     return "\ntarget " + render.target + " reached: estimated relative RMSE " + number(reached.estimate, 4) +
-           " (two interleaved half-images)" + against + "; it cost " + number(reached.seconds, 3) +
+           (render instanceof AdaptiveRender ? " (its passes' estimate)" : " (two interleaved half-images)") + against + "; it cost " + number(reached.seconds, 3) +
            " processor s (" + number(reached.wall, 3) + " s wall), " + number(reached.steps, 4) +
            (render instanceof AdaptiveRender ? " spp on average" : render.info.settings.chapter === 8 ? " passes" : " spp");
 }
@@ -688,6 +688,12 @@ window.labTest = {
         for (let i = 0; i < data.length; i += 4) drawn.push(data[i]);
         return {samples: Array.from(render.count), drawn: drawn};
     },
+    /* Panel A's image as the page keeps it (float64) and its reference's (float32), as
+     * base64; the reference's is "" when there is none. */
+    images: function () {
+        const render = panels.a.render;
+        return {image: base64(render.mean), reference: render.reference ? base64(render.reference.image) : ""};
+    },
     release: function () {
         if (labTest.kept) labTest.kept.setWorkers(0);
         labTest.kept = null;
@@ -709,7 +715,8 @@ window.labTest = {
                         rmse: panel.measured ? panel.measured.rmse : null,
                         relMse: panel.measured ? panel.measured.relMse : null,
                         history: r ? r.history.length : 0, target: r ? r.target : 0,
-                        estimated: r ? r.estimated : null, reached: r ? r.reached : null,
+                        estimated: r ? r.estimated : null, estimates: r ? r.estimates : [],
+                        reached: r ? r.reached : null,
                         meanSamples: r instanceof AdaptiveRender ? r.meanSamples() : null};
             }),
             inspector: {summary: $("path-summary").textContent, rows: $("path-table").rows.length,

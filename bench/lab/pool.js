@@ -77,6 +77,7 @@ class Render {
         this.halves = [new Float64Array(3 * pixels), new Float64Array(3 * pixels)];
         this.halfCounts = [new Uint32Array(pixels), new Uint32Array(pixels)];
         this.estimated = NaN;                      /* from the halves, at the last even step */
+        this.estimates = [];                       /* each one made, in order */
         this.reached = null;                       /* the target: {seconds, wall, steps, estimate} */
     }
 
@@ -145,6 +146,7 @@ class Render {
                 sum += (a - b) * (a - b) / 4 / (f * f + 0.01);
             }
         this.estimated = Math.sqrt(sum / (3 * this.count.length));
+        this.estimates.push(this.estimated);
         if (this.estimated <= this.target)
             this.reached = {seconds: this.seconds, wall: this.wallSeconds(), steps: steps,
                             estimate: this.estimated};
@@ -278,6 +280,7 @@ class AdaptiveRender extends Render {
             this.estimate = result.estimate;
             this.toAdd = result.toAdd;
             this.estimated = result.error;
+            this.estimates.push(result.error);
             if (result.active > 0) this.active = result.active;
             this.pass++;
             this.phase = "sampling";
