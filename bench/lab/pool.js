@@ -279,8 +279,10 @@ class AdaptiveRender extends Render {
         if (result.type === "plan") {
             this.estimate = result.estimate;
             this.toAdd = result.toAdd;
-            this.estimated = result.error;
-            this.estimates.push(result.error);
+            if (result.pass > 0) { /* the first plan has no samples to estimate from */
+                this.estimated = result.error;
+                this.estimates.push(result.error);
+            }
             if (result.active > 0) this.active = result.active;
             this.pass++;
             this.phase = "sampling";
