@@ -156,6 +156,7 @@ const RECORDS = [
     {scene: "room.scene", settings: "chapter=7 size=48 spp=8 mis=1", col: 24, row: 2, first: 0, count: 8},
     {scene: "room.scene", settings: "chapter=7 size=48 spp=8", col: 18, row: 27, first: 0, count: 8},
     {scene: "room.scene", settings: "chapter=8 size=48 spp=2 passes=2", col: 32, row: 38, first: 1, count: 3},
+    {scene: "room.scene", settings: "chapter=10 size=48 spp=16 max=16", col: 20, row: 30, first: 0, count: 8},
 ];
 
 /* The reference of IMAGES[1]'s image (chapter 7: depth 64, Schlick), its error measured natively. */

@@ -435,7 +435,8 @@ function inspect(panel, col, row) {
             other.overlay.getContext("2d").clearRect(0, 0, other.overlay.width, other.overlay.height);
     inspector.elements.overlay = panel.overlay;
     const s = panel.render.info.settings; /* paths among the render's samples */
-    const count = Math.min(page.paths, panel.render.steps * (s.chapter === 8 ? s.spp : 1));
+    const count = Math.min(page.paths, s.chapter === 10 ? Math.ceil(s.spp / 4) * 4 /* the first pass's */
+                                                         : panel.render.steps * (s.chapter === 8 ? s.spp : 1));
     return helper.ask("record", panel.render.setup, {col: col, row: row, first: 0, count: count})
         .then(function (answer) {
             inspector.show(JSON.parse(answer.json), panel.plan, panel.render.width, panel.render.height);
