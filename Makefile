@@ -495,9 +495,10 @@ $(LAB)/lab_worker.js: $(LAB)/embed $(LAB)/wasm/lab_module.js bench/lab/worker.js
 $(LAB)/lab_data.js: $(LAB)/embed $(wildcard scenes/*.scene) $(PROGRAMS) bench/lab/lab.c
 	{ $(LAB)/embed LAB_SCENES $(wildcard scenes/*.scene) && \
 	  last=$$(sed -n 's/^#define LAB_CHAPTERS \([0-9]*\)/\1/p' bench/lab/lab.c) && \
+	  speed=$$(sed -n 's/^#define LAB_SPEED_CHAPTER \([0-9]*\).*/\1/p' bench/lab/lab.c) && \
 	  printf 'var LAB_CHAPTERS = [\n' && \
 	  for p in $(PROGRAMS); do n=$$(basename $$p | sed 's/^ch0*\([0-9]*\)_.*/\1/'); \
-	      [ $$n -le $$last ] || continue; \
+	      [ $$n -le $$last ] && [ $$n -ne $$speed ] || continue; \
 	      scene=$$(sed -n 's/.*\.scene = "scenes\/\([^"]*\)".*/\1/p' $$p | head -n 1); \
 	      printf '{"number": %s, "program": "%s", "scene": "%s"},\n' $$n $$(basename $$p .c) $$scene; \
 	  done && printf '];\n'; } > $@.tmp && mv $@.tmp $@
@@ -518,7 +519,7 @@ $(LAB_REFERENCE): $(BUILD)/chapter$(FINAL)/bench/lab/lab_reference.o $(BUILD)/ch
 # References for the page (bench/lab/lab_reference.c), one for each comparison the page
 # offers (lab.js's PRESETS) and each chapter's own render (docs/lab.md): the room at depth
 # 8 (chapters 2-4 and 1 against 30 shadow rays, Schlick's; Schlick against exact Fresnel,
-# the exact one) and 64 (6-8), with the samples the chapter programs give them, so that
+# the exact one) and 64 (6-8; with the exact one, chapter 10 and uniform against adaptive), with the samples the chapter programs give them, so that
 # what `make figures` cached is found (a reference not cached is rendered), and chapter 5's
 # scene at depth 8 as the scene has it (chapter 5's figure sets a roughness: not shared). `make lab` gets them at the page's width, LAB_WIDTH (rendered once: the
 # reference cache keeps them); lab-references also at the widths LAB_SIZES (default 256
@@ -526,7 +527,7 @@ $(LAB_REFERENCE): $(BUILD)/chapter$(FINAL)/bench/lab/lab_reference.o $(BUILD)/ch
 LAB_WIDTH := 256
 LAB_SIZES ?= $(LAB_WIDTH) $(if $(QUICK),200,800)
 LAB_REFERENCE_SETTINGS := "--depth 8 --reference-spp 64" "--depth 8 --fresnel exact --reference-spp 128" \
-                          "--depth 64 --reference-spp 128" \
+                          "--depth 64 --reference-spp 128" "--depth 64 --fresnel exact --reference-spp 128" \
                           "--scene scenes/oren_nayar.scene --depth 8 --reference-spp 128"
 # The settings rendered, as the stamp of what is there (the cache finds any rendered before).
 $(LAB)/references/settings.txt: $(LAB_REFERENCE) $(REFERENCE_BIN) $(wildcard scenes/*.scene) Makefile

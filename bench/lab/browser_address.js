@@ -91,9 +91,9 @@ async function checkShared(browser, report, verdicts) {
 
 /* Each whole-number key's range (docs/lab.md), and where the address puts it. */
 const WHOLE = [
-    ["chapter", 1, 8], ["size", 1, 4096], ["depth", 1, 1000], ["spp", 1, 1048576], ["M", 0, 1000], ["mis", 0, 1],
+    ["chapter", 1, 10], ["size", 1, 4096], ["depth", 1, 1000], ["spp", 1, 1048576], ["M", 0, 1000], ["mis", 0, 1],
     ["mirror", 0, 1000], ["passes", 1, 1048576], ["photons", 1, 67108864], ["paths", 1, 64], ["workers", 0, 1024],
-    ["b.size", 1, 4096], ["b.chapter", 1, 8],
+    ["b.size", 1, 4096], ["b.chapter", 1, 10], ["max", 4, 65536],
 ];
 /* The real ones: the range in words, a value at each end and one past it. */
 const REAL = [
@@ -102,11 +102,14 @@ const REAL = [
     ["rr", "a number in (0, 1] or 'bounded'", ["1e-300", "1", "bounded"], ["0", "1.0000001"]],
     ["alpha", "a number in (0, 1]", ["0.001", "1"], ["0", "1.001"]],
     ["radius", "a number in (0, 1e+50]", ["1e-300", "1e50"], ["0", "1.0001e50"]],
+    ["target", "a number in [0, 1]", ["0", "1"], ["-0.001", "1.001"]],
 ];
 
 async function checkRanges(browser, report) {
     const cases = [];
-    const address = function (key, value) { return key === "chapter" ? "chapter=" + value : "chapter=8&" + key + "=" + value; };
+    const address = function (key, value) {
+        return key === "chapter" ? "chapter=" + value : (key === "max" ? "chapter=10&spp=1" : "chapter=8") + "&" + key + "=" + value;
+    };
     for (const [key, min, max] of WHOLE) {
         for (const value of [min, max]) cases.push({fragment: address(key, value), expected: ""});
         for (const value of [min - 1, max + 1])
@@ -133,9 +136,9 @@ async function checkRanges(browser, report) {
 /* Addresses that once killed the page or rendered the wrong thing, each with the message
  * the page must show; null where it renders, with what it must render. */
 const HOSTILE = [
-    ["chapter=99", "chapter: expected a whole number from 1 to 8, got '99'"],
-    ["chapter=2.5", "chapter: '2.5' is not a whole number; expected a whole number from 1 to 8"],
-    ["chapter=-1", "chapter: expected a whole number from 1 to 8, got '-1'"],
+    ["chapter=99", "chapter: expected a whole number from 1 to 10, got '99'"],
+    ["chapter=2.5", "chapter: '2.5' is not a whole number; expected a whole number from 1 to 10"],
+    ["chapter=-1", "chapter: expected a whole number from 1 to 10, got '-1'"],
     ["chapter=2&size=%zz", "settings: 'size=%zz' has a malformed escape: '%' must be followed by two hexadecimal digits, not 00"],
     ["chapter=2&size=16%", "settings: 'size=16%' has a malformed escape: '%' must be followed by two hexadecimal digits, not 00"],
     ["chapter=%00", "settings: 'chapter=%00' has a malformed escape: '%' must be followed by two hexadecimal digits, not 00"],
@@ -163,7 +166,14 @@ const HOSTILE = [
     ["chapter=6&rr=NaN", "rr: 'NaN' is not a decimal number (such as 16, 0.25 or 1e-3); expected a number in (0, 1] or 'bounded'"],
     ["guide=Infinity", "guide: 'Infinity' is not a decimal number (such as 16, 0.25 or 1e-3); expected a number in [0, 1000]"],
     ["chapter=2&M=1", "M: chapter 3 introduces it"],
-    ["b.chapter=9", "b.chapter: expected a whole number from 1 to 8, got '9'"],
+    ["b.chapter=11", "b.chapter: expected a whole number from 1 to 10, got '11'"],
+    ["chapter=9", "chapter: chapter 9 measures speed and has no estimator of its own (every chapter here renders with its four-wide tree)"],
+    ["chapter=10&rule=fair", "rule: expected 'biased' or 'unbiased', got 'fair'"],
+    ["chapter=10&passes=2", "passes: chapter 8's only"],
+    ["chapter=10&sampling=stratified", "sampling: chapter 10's passes take progressive samples"],
+    ["chapter=10&spp=64&max=32", "spp: the minimum samples per pixel, 64, is above max, 32"],
+    ["chapter=6&target=0.1", "target: chapter 7 introduces it"],
+    ["chapter=7&rule=biased", "rule: chapter 10 introduces it"],
     ["workers=abc", "workers: 'abc' is not a decimal number (such as 16, 0.25 or 1e-3); expected a whole number from 0 to 1024"],
     ["layout=three", "layout: expected 'one' or 'two', got 'three'"],
     ["chapter=2&size" , "settings: expected key=value, got 'size'"],

@@ -27,7 +27,12 @@
  *      and history, the inspector's and the editor's limits, equal time, the book's link;
  *   8. (first, on the page as make lab built it) every comparison the page offers and every
  *      chapter's own render show each panel's error against a reference, and a panel
- *      with no reference names the biases its standard error leaves out.
+ *      with no reference names the biases its standard error leaves out;
+ *   9. chapter 10 (its passes are lab-native's bit for bit, in check 2): its panel renders
+ *      to its target, its map of samples per pixel is drawn from its samples and is not
+ *      uniform, the unbiased rule's relative RMSE against a reference agrees with its own
+ *      estimate, and chapter 7 rendered to a target error stops there and says what it
+ *      cost, its estimate beside its error against the reference.
  * The agreement test (after Mitsuba's render tests): where two values differ, z = |a - b|
  * / (sqrt(2) se), se the page's per-pixel standard error (the same estimator and samples
  * on both sides), must not reject at the Sidak-corrected level 0.01 over all values.
@@ -70,6 +75,11 @@ function readPfm(file) {
             floats[3 * width * row + i] = little ? bytes.readFloatLE(at) : bytes.readFloatBE(at);
         }
     return {width: width, height: height, pixels: floats};
+}
+
+function doubles(base64) {
+    const buffer = Buffer.from(base64, "base64");
+    return new Float64Array(buffer.buffer.slice(buffer.byteOffset, buffer.byteOffset + buffer.length));
 }
 
 function floats(base64) {
@@ -133,6 +143,8 @@ const IMAGES = [
      again: 1, exact: true},
     {what: "chapter 8's photon map against lab-native", scene: "room.scene",
      settings: "chapter=8 size=48 spp=2 passes=3", workers: 2},
+    {what: "chapter 10's adaptive passes against lab-native", scene: "room.scene",
+     settings: "chapter=10 size=48 target=0.1", workers: 3, exact: true},
 ];
 
 /* Paths recorded by the page and by lab-native. */
@@ -144,10 +156,13 @@ const RECORDS = [
     {scene: "room.scene", settings: "chapter=7 size=48 spp=8 mis=1", col: 24, row: 2, first: 0, count: 8},
     {scene: "room.scene", settings: "chapter=7 size=48 spp=8", col: 18, row: 27, first: 0, count: 8},
     {scene: "room.scene", settings: "chapter=8 size=48 spp=2 passes=2", col: 32, row: 38, first: 1, count: 3},
+    {scene: "room.scene", settings: "chapter=10 size=48 spp=16 max=16", col: 20, row: 30, first: 0, count: 8},
 ];
 
 /* The reference of IMAGES[1]'s image (chapter 7: depth 64, Schlick), its error measured natively. */
 const REFERENCE = {args: ["--size", "48", "--depth", "64", "--reference-spp", "8"], settings: "chapter=7 size=48 spp=8"};
+/* Chapter 10's and chapter 7's renders to a target error are measured against this one. */
+const EXACT_REFERENCE = ["--size", "48", "--depth", "64", "--fresnel", "exact", "--reference-spp", "256"];
 
 /* Bad scenes for the editor: the room with one thing wrong. */
 const EDITS = [
@@ -219,8 +234,10 @@ function prepareNative() {
         ["--quiet", "--out", path.join(pageDir, "references")]));
     const measured = run(path.resolve(programsDir, "lab-reference"), REFERENCE.args.concat(
         ["--quiet", "--out", path.join(pageDir, "references"), "--error", path.join(nativeDir, "image1.pfm")]));
-    if (reference.status !== 0 || measured.status !== 0)
-        throw new Error("lab-reference failed: " + reference.stderr + measured.stderr);
+    const exact = run(path.resolve(programsDir, "lab-reference"), EXACT_REFERENCE.concat(
+        ["--quiet", "--out", path.join(pageDir, "references")]));
+    if (reference.status !== 0 || measured.status !== 0 || exact.status !== 0)
+        throw new Error("lab-reference failed: " + reference.stderr + measured.stderr + exact.stderr);
     const numbers = /rmse (\S+) rel_mse (\S+)/.exec(measured.stdout);
     REFERENCE.rmse = Number(numbers[1]);
     REFERENCE.relMse = Number(numbers[2]);
@@ -339,7 +356,8 @@ async function checkReference(browser, url) {
 }
 
 async function checkEditor(browser, url, last) {
-    await browser.navigate(url + "#chapter=" + last.number + "&size=64&spp=1&passes=1", 30);
+    await browser.navigate(url + "#chapter=" + last.number + "&size=64&spp=1" +
+                           (last.number === 10 ? "&target=0.5" : "&passes=1"), 30);
     await browser.until("labTest.state().panels.every(p => p.complete || p.error)", 60, "a render");
     for (const edit of EDITS) {
         const shown = await browser.evaluate("labTest.editScene(\"room.scene\", " + JSON.stringify(edit.text) + ")", 60);
@@ -442,6 +460,73 @@ async function checkPageReferences(browser, labUrl, chapters) {
     await browser.screenshot(path.join(outDir, "lab_no_reference.png"));
 }
 
+/* The panel of a fragment once its render is complete. */
+async function completed(browser, url, fragment, seconds) {
+    await browser.navigate(url + "#" + fragment, 30);
+    await browser.until("labTest.state().panels.every(p => p.error || p.complete)", seconds, fragment + "'s render");
+    await browser.evaluate("new Promise(r => setTimeout(r, 600))"); /* the stats shown after it */
+    return (await browser.evaluate("labTest.state()")).panels[0];
+}
+
+/* A render to a target stopped at the first estimate at most the target. */
+function stoppedAt(list, target) {
+    return list.length >= 2 && list[list.length - 1] <= target && list.slice(0, -1).every(function (e) { return e > target; });
+}
+
+function estimates(panel) {
+    return panel.estimates.slice(-3).map(function (e) { return e.toFixed(4); }).join(", ") +
+           (panel.estimates.length > 3 ? " (the last three of " + panel.estimates.length + ")" : "");
+}
+
+async function checkAdaptive(browser, url) {
+    const target = 0.1, fragment = "chapter=10&size=48&target=" + target;
+    let panel = await completed(browser, url, fragment, 300);
+    const line = panel.stats.split("\n").slice(-1)[0];
+    report(!panel.error && panel.done >= 2 && panel.reached && stoppedAt(panel.estimates, target) &&
+           line.indexOf("target " + target + " reached: estimated relative RMSE") === 0,
+           "chapter 10's panel (#" + fragment + ") renders to its target in " + panel.done + " passes, its estimates " +
+           estimates(panel) + ": '" + line + "'");
+
+    const map = await browser.evaluate("labTest.samplesMap()");
+    const most = Math.max.apply(null, map.samples), least = Math.min.apply(null, map.samples);
+    const wrong = map.samples.filter(function (n, i) { return map.drawn[i] !== Math.round(255 * n / most); }).length;
+    report(most > least && wrong === 0, "chapter 10's map of samples per pixel: " + least + " to " + most +
+           " samples (not uniform), drawn grey from the samples (" + wrong + " of " + map.samples.length + " pixels otherwise)");
+    await box(browser, "#panel-a");
+    await browser.screenshot(path.join(outDir, "lab_adaptive_samples.png"));
+    await browser.evaluate("($('view').value = 'image', $('view').onchange(), 0)");
+
+    /* The unbiased rule's image against the reference: the mean of the differences over
+     * all values, in units of its standard error (the values' spread over sqrt N), within
+     * 3.29 (p = 0.001 either way); its relative RMSE (the reference's noise taken out)
+     * within a factor of 2 of its own estimate. */
+    const images = await browser.evaluate("labTest.images()");
+    const kept = doubles(images.image), truth = images.reference ? floats(images.reference) : [];
+    let sum = 0, squares = 0;
+    for (let i = 0; i < truth.length; i++) {
+        const d = kept[i] - truth[i];
+        sum += d;
+        squares += d * d;
+    }
+    const n = truth.length, mean = sum / n, z = mean / Math.sqrt((squares / n - mean * mean) / (n - 1));
+    const measured = Math.sqrt(Math.max(0, panel.relMse)), ratio = measured / panel.estimated;
+    report(panel.reference && n === kept.length && Math.abs(z) < 3.29 && ratio > 0.5 && ratio < 2,
+           "chapter 10, unbiased rule, against the reference (depth 64, exact Fresnel, 256 spp): mean difference " +
+           mean.toExponential(2) + " (z = " + z.toFixed(2) + ", within 3.29); relative RMSE " + measured.toFixed(4) +
+           ", its own estimate " + Number(panel.estimated).toFixed(4) + " (ratio " + ratio.toFixed(2) + ", within 2 either way)");
+
+    const uniform = "chapter=7&size=48&fresnel=exact&spp=1024&target=" + target;
+    panel = await completed(browser, url, uniform, 300);
+    const said = panel.stats.split("\n").slice(-1)[0];
+    report(!panel.error && panel.reached && panel.reached.steps < 1024 && panel.reached.steps % 2 === 0 &&
+           stoppedAt(panel.estimates, target) && said.indexOf("target " + target + " reached") === 0 &&
+           / it cost \S+ processor s/.test(said) && /against the reference: relative RMSE/.test(said),
+           "chapter 7 rendered to a target (#" + uniform + ") stops at " + (panel.reached ? panel.reached.steps : panel.done) +
+           " spp, its estimates " + estimates(panel) + ": '" + said + "'");
+    await box(browser, "#panel-a");
+    await browser.screenshot(path.join(outDir, "lab_target.png"));
+}
+
 (async function main() {
     fs.mkdirSync(outDir, {recursive: true});
     const last = prepareNative();
@@ -455,6 +540,7 @@ async function checkPageReferences(browser, labUrl, chapters) {
         await checkRecords(browser);
         await checkReference(browser, url);
         await checkEditor(browser, url, last);
+        await checkAdaptive(browser, url);
         await screenshots(browser, url);
         await address.checkShared(browser, report, last.verdicts);
         await address.checkRanges(browser, report);

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "adaptive.h"
 #include "json.h"
 #include "path_caustics.h"
 #include "path_direct.h"
@@ -28,7 +29,8 @@
 #include "sphere_guide.h"
 #include "whitted_estimator.h"
 
-#define LAB_CHAPTERS 8
+#define LAB_CHAPTERS 10
+#define LAB_SPEED_CHAPTER 9 /* measures speed: no estimator of its own */
 #define LAB_SIZE_MAX 4096
 
 /* Settings text and addresses: characters and key=value words at most. The inspector's
@@ -47,6 +49,12 @@
  * chapters/ch08_photon_map.c sets them: they scale with the image (docs/chapter8.md). */
 #define PHOTONS_PER_PIXEL 0.5
 
+/* Chapter 10's rule, as chapters/ch10_adaptive.c sets it: samples per pass where a pixel
+ * is above the threshold, at most per pixel, and the target of its figure. */
+#define ADAPTIVE_PASS_SAMPLES 8
+#define MAX_SAMPLES (1 << 16)
+#define ADAPTIVE_TARGET 0.02
+
 typedef struct {
     int chapter;
     int size;   /* image width */
@@ -60,6 +68,9 @@ typedef struct {
     int photons;       /* per pass; 0: PHOTONS_PER_PIXEL per pixel */
     double radius;     /* the first radius; 0: PPM_FIRST_RADIUS_AT_800 scaled */
     double alpha;      /* of the radius schedule */
+    double target;   /* chapters 7-10: the image's estimated relative RMSE to stop at; 0: off */
+    int max_samples; /* chapter 10: per pixel */
+    AdaptiveRule rule; /* chapter 10 */
     char program[64];  /* the chapter program, named in messages */
 } LabSettings;
 
@@ -82,6 +93,9 @@ struct Lab {
     uint64_t pass_image_seed;
     double rays[4];
     Json json;
+    AdaptivePixel *pixels; /* chapter 10: a band's pixels while it is sampled */
+    int *to_add;
+    double estimated_error; /* chapter 10: the last plan's, of the image */
     char hash[17];
     const char *prefix; /* of the keys in messages: "" or "b." */
     char words[LAB_TEXT_MAX + 1], raw_words[LAB_TEXT_MAX + 1]; /* split_words' */
@@ -135,6 +149,8 @@ void lab_free(Lab *lab)
     if (!lab)
         return;
     free_scene(lab);
+    free(lab->pixels);
+    free(lab->to_add);
     json_free(&lab->json);
     free(lab);
 }
@@ -182,8 +198,8 @@ static LabSettings chapter_defaults(int chapter)
                      .alpha = PPM_ALPHA,
                      .program = "lab"};
     s.path.max_depth = chapter == 1 ? 10 : chapter >= 6 ? 64 : 8;
-    static const int spp[LAB_CHAPTERS + 1] = {0, 1, 64, 4, 4, 16, 4, 64, 8};
-    static const int shadow_rays[LAB_CHAPTERS + 1] = {0, 0, 0, 1, 1, 4, 1, 1, 1};
+    static const int spp[LAB_CHAPTERS + 1] = {0, 1, 64, 4, 4, 16, 4, 64, 8, 0, 16};
+    static const int shadow_rays[LAB_CHAPTERS + 1] = {0, 0, 0, 1, 1, 4, 1, 1, 1, 0, 1};
     s.spp = spp[chapter];
     s.path.shadow_rays = shadow_rays[chapter];
     if (chapter >= 2)
@@ -201,6 +217,13 @@ static LabSettings chapter_defaults(int chapter)
         s.mirror_given = 1;
         s.sampling = PIXEL_PROGRESSIVE;
         s.passes = 16;
+    }
+    if (chapter == 10) { /* chapters/ch10_adaptive.c: exact Fresnel, to its target */
+        s.path.fresnel = FRESNEL_EXACT;
+        s.sampling = PIXEL_PROGRESSIVE;
+        s.target = ADAPTIVE_TARGET;
+        s.max_samples = MAX_SAMPLES;
+        s.rule = ADAPTIVE_UNBIASED;
     }
     return s;
 }
@@ -336,7 +359,16 @@ static const struct {
     {"photons", 8, NUMBER, offsetof(LabSettings, photons), {1, 1 << 26, 1, 0, NULL}},
     {"radius", 8, NUMBER, offsetof(LabSettings, radius), {0, 1e50, 0, 1, NULL}},
     {"alpha", 8, NUMBER, offsetof(LabSettings, alpha), {0, 1, 0, 1, NULL}},
+    {"target", 7, NUMBER, offsetof(LabSettings, target), {0, 1, 0, 0, NULL}},
+    {"max", 10, NUMBER, offsetof(LabSettings, max_samples), {4, MAX_SAMPLES, 1, 0, NULL}},
+    {"rule", 10, WORD, 0, {0, 0, 0, 0, NULL}},
 };
+
+/* Chapter 8's photon map is its own: chapter 10 builds on chapter 7's estimator. */
+static int key_in_chapter(int key_chapter, int chapter)
+{
+    return key_chapter <= chapter && (key_chapter != 8 || chapter == 8);
+}
 
 static int set_sampling(Lab *lab, LabSettings *s, const char *value)
 {
@@ -350,6 +382,8 @@ static int set_sampling(Lab *lab, LabSettings *s, const char *value)
         return -1;
     if (chapters[i] > s->chapter)
         return fail_key(lab, "sampling", "%s is chapter %d's", value, chapters[i]);
+    if (s->chapter == 10 && modes[i] != PIXEL_PROGRESSIVE)
+        return fail_key(lab, "sampling", "chapter 10's passes take progressive samples");
     s->sampling = modes[i];
     return 0;
 }
@@ -368,6 +402,12 @@ static int set_word(Lab *lab, LabSettings *s, const char *key, const char *value
         snprintf(s->program, sizeof s->program, "%s", value);
     } else if (strcmp(key, "sampling") == 0) {
         return set_sampling(lab, s, value);
+    } else if (strcmp(key, "rule") == 0) {
+        static const char *const rules[] = {"biased", "unbiased"};
+        int unbiased;
+        if (choice(lab, key, value, rules, 2, &unbiased) != 0)
+            return -1;
+        s->rule = unbiased ? ADAPTIVE_UNBIASED : ADAPTIVE_BIASED;
     } else { /* fresnel */
         static const char *const modes[] = {"schlick", "exact"};
         int exact;
@@ -388,6 +428,8 @@ static int set_key(Lab *lab, LabSettings *s, const char *key, const char *value)
         return fail(lab, "unknown setting '%s%s'", lab->prefix, key);
     if (KEYS[i].chapter > s->chapter)
         return fail_key(lab, key, "chapter %d introduces it", KEYS[i].chapter);
+    if (!key_in_chapter(KEYS[i].chapter, s->chapter))
+        return fail_key(lab, key, "chapter %d's only", KEYS[i].chapter);
     if (strcmp(key, "mirror") == 0)
         s->mirror_given = 1;
     if (KEYS[i].kind == WORD)
@@ -492,12 +534,25 @@ static const char *word_value(const Words *w, const char *key)
     return NULL;
 }
 
+/* A chapter the lab renders, 1 to LAB_CHAPTERS but the one that measures speed. */
+static int chapter_number(Lab *lab, const char *text, int *chapter)
+{
+    if (whole(lab, "chapter", text, 1, LAB_CHAPTERS, chapter) != 0)
+        return -1;
+    if (*chapter == LAB_SPEED_CHAPTER)
+        return fail_key(lab, "chapter",
+                        "chapter %d measures speed and has no estimator of its own (every "
+                        "chapter here renders with its four-wide tree)",
+                        LAB_SPEED_CHAPTER);
+    return 0;
+}
+
 /* The words into *s: chapter first (`chapter`, when the words have none; 0: required),
  * then the others over its defaults. */
 static int parse_settings(Lab *lab, const Words *w, int chapter, LabSettings *s)
 {
     const char *given = word_value(w, "chapter");
-    if (given && whole(lab, "chapter", given, 1, LAB_CHAPTERS, &chapter) != 0)
+    if (given && chapter_number(lab, given, &chapter) != 0)
         return -1;
     if (chapter == 0)
         return fail(lab, "settings: chapter=N is missing");
@@ -505,8 +560,11 @@ static int parse_settings(Lab *lab, const Words *w, int chapter, LabSettings *s)
     for (int i = 0; i < w->count; i++)
         if (strcmp(w->key[i], "chapter") != 0 && set_key(lab, s, w->key[i], w->value[i]) != 0)
             return -1;
-    if (chapter == 7 && !s->mirror_given)
+    if ((chapter == 7 || chapter == 10) && !s->mirror_given)
         s->path.mirror_light = s->path.max_depth;
+    if (chapter == 10 && (s->spp + 3) / 4 * 4 > s->max_samples)
+        return fail_key(lab, "spp", "the minimum samples per pixel, %d, is above max, %d",
+                        s->spp, s->max_samples);
     return 0;
 }
 
@@ -568,6 +626,7 @@ static void choose_estimator(Lab *lab)
         lab->estimate = path_roulette_radiance;
         break;
     case 7:
+    case 10:
         lab->estimate = path_final_radiance;
         break;
     default:
@@ -588,6 +647,10 @@ int lab_configure(Lab *lab, const char *text)
         check_scene(lab, &s) != 0)
         return -1;
     free_maps(lab);
+    free(lab->pixels);
+    free(lab->to_add);
+    lab->pixels = NULL;
+    lab->to_add = NULL;
     lab->settings = s;
     apply_sigma(lab, &s);
     lab->width = s.size;
@@ -646,9 +709,12 @@ const char *lab_settings(Lab *lab)
             ? json_text(json, ",\"rr\":\"bounded\"")
             : json_text(json, ",\"rr\":%.17g", p->rr_survival > 0.0 ? p->rr_survival : 1.0);
     if (s->chapter >= 7)
-        json_text(json, ",\"mis\":%d,\"mirror\":%d,\"guide\":%.17g", p->mis, p->mirror_light,
-                  p->sphere_guide);
-    if (s->chapter >= 8)
+        json_text(json, ",\"mis\":%d,\"mirror\":%d,\"guide\":%.17g,\"target\":%.17g", p->mis,
+                  p->mirror_light, p->sphere_guide, s->target);
+    if (s->chapter == 10)
+        json_text(json, ",\"max\":%d,\"rule\":\"%s\"", s->max_samples,
+                  s->rule == ADAPTIVE_UNBIASED ? "unbiased" : "biased");
+    if (s->chapter == 8)
         json_text(json, ",\"passes\":%d,\"photons\":%d,\"radius\":%.17g,\"alpha\":%.17g",
                   s->passes, s->photons, s->radius, s->alpha);
     json_text(json, "}");
@@ -682,6 +748,11 @@ const char *lab_biases(Lab *lab)
             json_string(json, "the difference between Schlick's reflectance of the glass and "
                               "the exact Fresnel one");
         }
+        if (s->chapter == 10 && s->rule == ADAPTIVE_BIASED) {
+            json_text(json, ",");
+            json_string(json, "the biased rule's: a pixel whose samples happen to look "
+                              "converged stops early, and dark pixels stay darker");
+        }
         if (s->chapter == 8) {
             json_text(json, ",");
             json_string(json, "the photon map's blur of the caustics over its radius "
@@ -696,9 +767,15 @@ int lab_width(const Lab *lab) { return lab->width; }
 
 int lab_height(const Lab *lab) { return lab->height; }
 
+/* Chapter 10's minimum samples per pixel: spp in whole quarters, as its program has it. */
+static int adaptive_min_samples(const LabSettings *s) { return (s->spp + 3) / 4 * 4; }
+
 int lab_steps(const Lab *lab)
 {
     const LabSettings *s = &lab->settings;
+    if (s->chapter == 10) /* the first pass to the minimum, then a pass's samples each */
+        return 1 + (s->max_samples - adaptive_min_samples(s) + ADAPTIVE_PASS_SAMPLES - 1) /
+                       ADAPTIVE_PASS_SAMPLES;
     return s->chapter == 1 ? 1 : s->chapter == 8 ? s->passes : s->spp;
 }
 
@@ -841,7 +918,7 @@ const char *lab_fragment(Lab *lab, const char *fragment, const char *scenes, int
     int b_chapter = sa.chapter;
     const char *given = word_value(&own, "chapter");
     lab->prefix = "b.";
-    if (given && whole(lab, "chapter", given, 1, LAB_CHAPTERS, &b_chapter) != 0)
+    if (given && chapter_number(lab, given, &b_chapter) != 0)
         return lab->prefix = "", NULL;
     panel_b_words(&a, sa.chapter, &own, b_chapter, &b);
     status = parse_settings(lab, &b, b_chapter, &sb);
@@ -896,6 +973,11 @@ static ImageSettings image_of(const Lab *lab, int sample, int *index)
     const LabSettings *s = &lab->settings;
     ImageSettings image = {lab->width, lab->height, s->spp, s->sampling, s->seed};
     *index = sample;
+    if (s->chapter == 10) { /* adaptive.c's quarters: sample s is s / 4 of quarter s mod 4 */
+        image.spp = 0;
+        image.seed = rng_hash(s->seed * 4 + (uint64_t)(sample % 4));
+        *index = sample / 4;
+    }
     if (s->chapter == 8 && s->sampling != PIXEL_PROGRESSIVE) { /* ppm.c's independent passes */
         image.seed = lab->pass_image_seed;
         *index = sample % s->spp;
@@ -928,6 +1010,8 @@ int lab_render_band(Lab *lab, int step, int row0, int rows, double *out)
         return fail(lab, "not configured");
     if (row0 < 0 || rows < 1 || row0 + rows > lab->height || step < 0 || step >= lab_steps(lab))
         return fail(lab, "no step %d of rows %d to %d", step, row0, row0 + rows - 1);
+    if (lab->settings.chapter == 10)
+        return fail(lab, "chapter 10 renders in passes (lab_adaptive_band)");
     lab->rays[3] = 0.0;
     int chapter8 = lab->settings.chapter == 8;
     if (chapter8 && build_pass(lab, step + 1) != 0)
@@ -955,6 +1039,107 @@ int lab_render_band(Lab *lab, int step, int row0, int rows, double *out)
     return 0;
 }
 
+/* ---- chapter 10's passes ------------------------------------------------------------- */
+
+/* The rule of adaptive.h, as chapters/ch10_adaptive.c sets it: its threshold the target's
+ * square. */
+static AdaptiveSettings adaptive_settings(const LabSettings *s)
+{
+    return (AdaptiveSettings){s->rule, adaptive_min_samples(s), s->max_samples,
+                              ADAPTIVE_PASS_SAMPLES, s->target * s->target};
+}
+
+/* The lab's pixels of the whole image (a band's are copied in and out), allocated once. */
+static int adaptive_buffers(Lab *lab)
+{
+    size_t count = (size_t)lab->width * (size_t)lab->height;
+    free(lab->pixels);
+    free(lab->to_add);
+    lab->pixels = calloc(count, sizeof *lab->pixels);
+    lab->to_add = calloc(count, sizeof *lab->to_add);
+    if (!lab->pixels || !lab->to_add)
+        return fail(lab, "out of memory for %zu pixels", count);
+    return 0;
+}
+
+/* Pixel p from or into the page's arrays: 12 sums (quarter q's r, g, b at 3q) and a count. */
+static void pixel_in(AdaptivePixel *pixel, const double *sums, int samples)
+{
+    for (int q = 0; q < 4; q++)
+        pixel->sum[q] = vec3(sums[3 * q], sums[3 * q + 1], sums[3 * q + 2]);
+    pixel->samples = samples;
+}
+
+static void pixel_out(const AdaptivePixel *pixel, double *sums)
+{
+    for (int q = 0; q < 4; q++) {
+        sums[3 * q] = pixel->sum[q].x;
+        sums[3 * q + 1] = pixel->sum[q].y;
+        sums[3 * q + 2] = pixel->sum[q].z;
+    }
+}
+
+long lab_adaptive_plan(Lab *lab, int pass, const double *sums, const int *samples,
+                       double *estimate, int *to_add)
+{
+    if (!lab->configured || lab->settings.chapter != 10)
+        return fail(lab, "chapter 10 is not configured");
+    long count = (long)lab->width * lab->height;
+    if (!lab->pixels && adaptive_buffers(lab) != 0)
+        return -1;
+    for (long p = 0; p < count; p++)
+        pixel_in(&lab->pixels[p], sums + 12 * p, samples[p]);
+    AdaptiveSettings rule = adaptive_settings(&lab->settings);
+    long active = adaptive_plan(&rule, lab->pixels, lab->width, lab->height, estimate, to_add);
+    if (active < 0)
+        return fail(lab, "out of memory for the plan");
+    double sum = 0.0;
+    for (long p = 0; p < count; p++)
+        sum += estimate[p];
+    lab->estimated_error = sqrt(sum / count);
+    if (pass > 0 && lab->estimated_error <= lab->settings.target) /* adaptive_renderer.h */
+        return 0;
+    return active;
+}
+
+double lab_estimated_error(const Lab *lab) { return lab->estimated_error; }
+
+int lab_adaptive_band(Lab *lab, int row0, int rows, double *sums, int *samples,
+                      const int *to_add, double *values)
+{
+    if (!lab->configured || lab->settings.chapter != 10)
+        return fail(lab, "chapter 10 is not configured");
+    if (row0 < 0 || rows < 1 || row0 + rows > lab->height)
+        return fail(lab, "no rows %d to %d", row0, row0 + rows - 1);
+    if (!lab->pixels && adaptive_buffers(lab) != 0)
+        return -1;
+    long first = (long)row0 * lab->width, count = (long)rows * lab->width;
+    for (long i = 0; i < count; i++) {
+        pixel_in(&lab->pixels[first + i], sums + 12 * i, samples[i]);
+        lab->to_add[first + i] = to_add[i];
+    }
+    int pass;
+    ImageSettings image = image_of(lab, 0, &pass);
+    image.seed = lab->settings.seed; /* adaptive_sample_rows makes the quarters' seeds */
+    RayCounts counts = {0, 0, 0};
+    adaptive_sample_rows(&lab->scene, &image, lab->estimate, lab->estimator_settings,
+                         lab->pixels, lab->to_add, row0, row0 + rows, &counts);
+    for (long i = 0; i < count; i++) {
+        const AdaptivePixel *pixel = &lab->pixels[first + i];
+        pixel_out(pixel, sums + 12 * i);
+        samples[i] = pixel->samples;
+        Vec3 value = adaptive_pixel_value(pixel, lab->settings.rule);
+        values[3 * i] = value.x;
+        values[3 * i + 1] = value.y;
+        values[3 * i + 2] = value.z;
+    }
+    lab->rays[0] = (double)counts.camera;
+    lab->rays[1] = (double)counts.bounce;
+    lab->rays[2] = (double)counts.shadow;
+    lab->rays[3] = 0.0;
+    return 0;
+}
+
 double lab_rays(const Lab *lab, int kind)
 {
     return kind >= 0 && kind < 4 ? lab->rays[kind] : 0.0;
@@ -968,7 +1153,9 @@ const char *lab_record(Lab *lab, int col, int row, int first, int count)
         return fail(lab, "not configured"), NULL;
     const LabSettings *s = &lab->settings;
     /* The render's samples of a pixel, as many as an int counts. */
-    long long samples = (long long)lab_steps(lab) * (s->chapter == 8 ? s->spp : 1);
+    long long samples = s->chapter == 10
+                            ? adaptive_min_samples(s)
+                            : (long long)lab_steps(lab) * (s->chapter == 8 ? s->spp : 1);
     if (samples > INT_MAX)
         samples = INT_MAX;
     if (col < 0 || col >= lab->width || row < 0 || row >= lab->height)

@@ -1,6 +1,6 @@
 /* lab.h (bench, chapter 8): the lab's renderer, the part of its page that is C.
  *
- * One chapter's estimator (1 to 8) with that chapter's settings, on a scene read from
+ * One chapter's estimator (1 to 8, 10) with that chapter's settings, on a scene read from
  * text, rendered a band of rows at a time for one step: a step is one sample of every
  * pixel (chapters 1-7), or one pass of progressive photon mapping (chapter 8, its
  * mean over the pass's samples rounded as ppm.h's pass image is). Whoever takes the
@@ -76,8 +76,26 @@ int lab_steps(const Lab *lab);
  * the image). */
 int lab_render_band(Lab *lab, int step, int row0, int rows, double *out);
 
-/* Rays traced by the last lab_render_band: 0 camera, 1 bounce, 2 shadow, 3 photon
- * rays (of the pass's photon maps, chapter 8, counted by the band that built them). */
+/* Chapter 10's pass `pass` (from 0) planned (adaptive_plan, with chapters/ch10_adaptive.c's
+ * rule: the threshold the target's square): the pixels' state as the page keeps it, sums
+ * (12 per pixel: quarter q's r, g, b at 12 p + 3 q) and samples, in; each pixel's estimated
+ * relative MSE and the samples to add, out. Returns the pixels that get samples, 0 when the
+ * render is done (none does, or after the first pass the image's estimated relative RMSE,
+ * lab_estimated_error, is at most the target), or -1. */
+long lab_adaptive_plan(Lab *lab, int pass, const double *sums, const int *samples,
+                       double *estimate, int *to_add);
+
+/* The image's estimated relative RMSE at the last plan: sqrt(mean of the estimates). */
+double lab_estimated_error(const Lab *lab);
+
+/* The planned samples of rows row0 .. row0 + rows - 1 (adaptive_sample_rows): the band's
+ * sums and samples (as lab_adaptive_plan's, the band's only) updated in place, and each
+ * pixel's value as the rule keeps it into values (3 per pixel). Returns 0, or -1. */
+int lab_adaptive_band(Lab *lab, int row0, int rows, double *sums, int *samples,
+                      const int *to_add, double *values);
+
+/* Rays traced by the last lab_render_band or lab_adaptive_band: 0 camera, 1 bounce, 2 shadow, 3
+ * photon rays (of the pass's photon maps, chapter 8, counted by the band that built them). */
 double lab_rays(const Lab *lab, int kind);
 
 /* Samples first .. first + count - 1 (count at most 64, all among the render's samples

@@ -35,7 +35,16 @@ const FIELDS = [
     {key: "photons", chapter: 8, label: "photons per pass"},
     {key: "radius", chapter: 8, label: "first radius"},
     {key: "alpha", chapter: 8, label: "radius \u03b1"},
+    {key: "target", chapter: 7, label: "target error (relative RMSE)"},
+    {key: "max", chapter: 10, label: "max spp"},
+    {key: "rule", chapter: 10, label: "rule", choices: [["unbiased", 10], ["biased", 10]]},
 ];
+
+/* A field the panel's chapter has: chapter 8's photon map is its own (chapter 10 builds on
+ * chapter 7's estimator), as lab.c's keys. */
+function hasField(field, chapter) {
+    return field.chapter <= chapter && (field.chapter !== 8 || chapter === 8);
+}
 
 /* The report's comparisons as fragments. */
 const PRESETS = [
@@ -44,6 +53,8 @@ const PRESETS = [
     ["chapter=4&fresnel=schlick&b.fresnel=exact&reference=exact&fairness=time", "Schlick against exact Fresnel"],
     ["chapter=6&rr=0.25&b.rr=0.75&spp=64&fairness=time", "roulette \u03b1 = 0.25 against 0.75"],
     ["chapter=7&spp=256&b.chapter=8&b.passes=32&fairness=time", "chapter 7 against chapter 8, equal time"],
+    ["chapter=7&fresnel=exact&spp=1024&b.chapter=10&b.target=0.1&fairness=time",
+     "uniform (chapter 7) against adaptive (chapter 10), equal time"],
 ];
 
 const PANEL_COLOURS = {a: "#d23030", b: "#2f6fd0"};
@@ -115,7 +126,7 @@ function buildForm(panel) {
     const form = panel.form, effective = panel.info ? panel.info.settings : {};
     form.textContent = "";
     for (const field of FIELDS) {
-        if (field.chapter > panel.chapter) continue;
+        if (!hasField(field, panel.chapter)) continue;
         const label = document.createElement("label");
         label.textContent = field.label + " ";
         let input;
@@ -224,7 +235,8 @@ function startRenders() {
         return helper.ask("scene", setup).then(function (answer) {
             panel.info = answer.info;
             panel.plan = answer.plan;
-            panel.render = new Render(setup, answer.info);
+            panel.render = answer.info.settings.chapter === 10 ? new AdaptiveRender(setup, answer.info)
+                                                               : new Render(setup, answer.info);
             panel.image.width = answer.info.width;
             panel.image.height = answer.info.height;
             const scale = Math.max(1, Math.ceil(640 / answer.info.width));
@@ -274,10 +286,27 @@ function tonemap(value, exposure) {
     return Math.floor(255 * encoded + 0.5);
 }
 
+/* The map the page shows instead of the image ("show"), or null: each pixel's samples,
+ * or chapter 10's estimated relative RMSE at its last plan. */
+function shownMap(render) {
+    const view = $("view").value;
+    if (view === "samples") return render.count;
+    if (view === "error" && render.estimate) return render.estimate.map(Math.sqrt);
+    return null;
+}
+
 /* Draw the bands whose pixels changed (all of them with `all`), in the frame's budget of
- * milliseconds: the rest wait for the next frame, so that the page stays responsive. */
+ * milliseconds: the rest wait for the next frame, so that the page stays responsive. A map
+ * is drawn in grey, its largest value white (all bands again when that changes). */
 function drawBands(panel, all, budget) {
     const render = panel.render, exposure = Math.pow(2, Number($("exposure").value));
+    const map = shownMap(render);
+    let largest = 0;
+    if (map) {
+        for (let p = 0; p < map.length; p++) largest = Math.max(largest, map[p]);
+        if (largest !== render.mapLargest) all = true;
+    }
+    render.mapLargest = largest;
     const context = panel.image.getContext("2d"), start = performance.now();
     if (!render.imageData)
         render.imageData = context.createImageData(render.width, render.bandRows);
@@ -291,7 +320,8 @@ function drawBands(panel, all, budget) {
         for (let i = 0; i < render.width * rows; i++) {
             const p = row0 * render.width + i;
             for (let c = 0; c < 3; c++)
-                pixels[4 * i + c] = render.count[p] ? tonemap(render.mean[3 * p + c], exposure) : 0;
+                pixels[4 * i + c] = map ? (largest > 0 ? Math.round(255 * map[p] / largest) : 0)
+                                  : render.count[p] ? tonemap(render.mean[3 * p + c], exposure) : 0;
             pixels[4 * i + 3] = 255;
         }
         context.putImageData(data, 0, row0, 0, 0, render.width, rows);
@@ -313,9 +343,29 @@ function currentError(panel) {
     if (render.info.settings.chapter === 1)
         return {value: NaN, text: "Whitted's image is deterministic: no noise to measure; its error is all bias" +
                                   (biases.length ? ": it leaves out " + biases.join("; ") : "")};
+    if (render instanceof AdaptiveRender)
+        return {value: render.estimated, text: "estimated relative RMSE " + number(render.estimated, 4) +
+                " from its own samples (no reference for these settings)" + leftOut};
     const se = render.standardError();
     return {value: se, text: (isNaN(se) ? "error: waiting for two samples in every pixel"
                                         : "standard error " + number(se, 4) + " from the samples (no reference for these settings)") + leftOut};
+}
+
+/* A render to a target error: its estimate from its own samples, what reaching the target
+ * cost, and the relative RMSE against the reference beside the estimate where there is one. */
+function targetText(render, error) {
+    if (!(render.target > 0)) return "";
+    const against = render.reference && !isNaN(error.relMse)
+        ? "; against the reference: relative RMSE " + number(Math.sqrt(Math.max(0, error.relMse)), 4) : "";
+    const reached = render.reached;
+    if (!reached)
+        return "\ntarget " + render.target + ": estimated relative RMSE " +
+               (isNaN(render.estimated) ? "(after two steps)" : number(render.estimated, 4)) + " so far" + against +
+               (render.finished && !render.stopped ? "; not reached within the render's samples" : "");
+    return "\ntarget " + render.target + " reached: estimated relative RMSE " + number(reached.estimate, 4) +
+           (render instanceof AdaptiveRender ? " (its passes' estimate)" : " (two interleaved half-images)") + against + "; it cost " + number(reached.seconds, 3) +
+           " processor s (" + number(reached.wall, 3) + " s wall), " + number(reached.steps, 4) +
+           (render instanceof AdaptiveRender ? " spp on average" : render.info.settings.chapter === 8 ? " passes" : " spp");
 }
 
 function showStats(panel) {
@@ -325,17 +375,20 @@ function showStats(panel) {
         stats.textContent = panel.error ? "cannot render: " + panel.error : "starting\u2026";
         return;
     }
-    const chapter8 = render.info.settings.chapter === 8, done = render.stepsDone();
+    const chapter = render.info.settings.chapter, done = render.stepsDone();
     const rays = render.rays[0] + render.rays[1] + render.rays[2] + render.rays[3];
     const wall = render.wallSeconds(), error = currentError(panel);
     panel.measured = error;
     stats.textContent =
-        (chapter8 ? "passes " + number(done, 3) + " of " + render.steps + " (" +
-                    number(done * render.info.settings.spp, 4) + " spp)"
-                  : "spp " + number(done, 3) + " of " + render.steps) +
-        (render.stopped ? ", stopped at equal time" : render.finished ? ", done" : "") + "  " + wall.toFixed(2) + " s  " +
+        (chapter === 10 ? "passes " + done + ", " + number(render.meanSamples(), 4) + " spp on average (" +
+                          render.active + " pixels sampled in the last pass)"
+         : chapter === 8 ? "passes " + number(done, 3) + " of " + render.steps + " (" +
+                           number(done * render.info.settings.spp, 4) + " spp)"
+         : "spp " + number(done, 3) + " of " + render.steps) +
+        (render.stopped ? ", stopped at equal time" : render.reached ? ", target reached"
+         : render.finished ? ", done" : "") + "  " + wall.toFixed(2) + " s  " +
         number(rays / wall / 1e6, 3) + " Mrays/s (" + number(rays / Math.max(render.seconds, 1e-9) / 1e6, 3) +
-        " per worker)\n" + error.text;
+        " per worker)\n" + error.text + targetText(render, error);
     if (!isNaN(error.value) && error.value > 0) {
         const last = render.history[render.history.length - 1];
         if (!last || last[0] !== render.seconds)
@@ -347,7 +400,8 @@ function drawPlot() {
     const series = activePanels().filter(function (p) { return p.render; }).map(function (panel) {
         const s = panel.render.info.settings;
         return {label: panel.name.toUpperCase() + ": " + settingsText(panel).replace(/ program=\S+/, "") +
-                       (panel.render.reference ? " (RMSE)" : panel.render.info.biases.length
+                       (panel.render.reference ? " (RMSE)" : panel.render instanceof AdaptiveRender
+                                                   ? " (estimated relative RMSE)" : panel.render.info.biases.length
                                                    ? " (standard error, bias left out)" : " (standard error)"),
                 colour: PANEL_COLOURS[panel.name],
                 points: panel.render.history.map(function (h) { return [h[0], h[2]]; })};
@@ -381,7 +435,8 @@ function inspect(panel, col, row) {
             other.overlay.getContext("2d").clearRect(0, 0, other.overlay.width, other.overlay.height);
     inspector.elements.overlay = panel.overlay;
     const s = panel.render.info.settings; /* paths among the render's samples */
-    const count = Math.min(page.paths, panel.render.steps * (s.chapter === 8 ? s.spp : 1));
+    const count = Math.min(page.paths, s.chapter === 10 ? Math.ceil(s.spp / 4) * 4 /* the first pass's */
+                                                         : panel.render.steps * (s.chapter === 8 ? s.spp : 1));
     return helper.ask("record", panel.render.setup, {col: col, row: row, first: 0, count: count})
         .then(function (answer) {
             inspector.show(JSON.parse(answer.json), panel.plan, panel.render.width, panel.render.height);
@@ -560,7 +615,8 @@ window.labTest = {
                        settings: settings};
         return helper.ask("scene", setup).then(function (answer) {
             return new Promise(function (resolve, reject) {
-                const render = new Render(setup, answer.info, bandRows);
+                const render = answer.info.settings.chapter === 10 ? new AdaptiveRender(setup, answer.info, bandRows)
+                                                                  : new Render(setup, answer.info, bandRows);
                 const own = new Pool(workers, function () {
                     if (!render.complete()) return;
                     const image = Float32Array.from(render.mean), se = new Float32Array(render.mean.length);
@@ -622,6 +678,23 @@ window.labTest = {
         probe.workers = [{render: a, sent: performance.now() - 2000}];
         return {chose: probe.choose() === a ? "A" : "B", used: [probe.secondsUsed(a), probe.secondsUsed(b)]};
     },
+    /* Panel A's map of samples per pixel as drawn on its canvas ("show": samples per pixel,
+     * grey, the red channel's byte) and the samples it is drawn from. */
+    samplesMap: function () {
+        const panel = panels.a, render = panel.render;
+        $("view").value = "samples";
+        drawBands(panel, true);
+        const data = panel.image.getContext("2d").getImageData(0, 0, render.width, render.height).data;
+        const drawn = [];
+        for (let i = 0; i < data.length; i += 4) drawn.push(data[i]);
+        return {samples: Array.from(render.count), drawn: drawn};
+    },
+    /* Panel A's image as the page keeps it (float64) and its reference's (float32), as
+     * base64; the reference's is "" when there is none. */
+    images: function () {
+        const render = panels.a.render;
+        return {image: base64(render.mean), reference: render.reference ? base64(render.reference.image) : ""};
+    },
     release: function () {
         if (labTest.kept) labTest.kept.setWorkers(0);
         labTest.kept = null;
@@ -642,7 +715,10 @@ window.labTest = {
                         chapter: r ? r.info.settings.chapter : null, settings: r ? r.info.settings : null,
                         rmse: panel.measured ? panel.measured.rmse : null,
                         relMse: panel.measured ? panel.measured.relMse : null,
-                        history: r ? r.history.length : 0};
+                        history: r ? r.history.length : 0, target: r ? r.target : 0,
+                        estimated: r ? r.estimated : null, estimates: r ? r.estimates : [],
+                        reached: r ? r.reached : null,
+                        meanSamples: r instanceof AdaptiveRender ? r.meanSamples() : null};
             }),
             inspector: {summary: $("path-summary").textContent, rows: $("path-table").rows.length,
                         hint: $("inspector-hint").textContent},
@@ -709,6 +785,7 @@ function start() {
     $("exposure").oninput = function () {
         for (const panel of activePanels()) if (panel.render) drawBands(panel, true);
     };
+    $("view").onchange = $("exposure").oninput;
     $("restart").onclick = restart;
     $("paths").onchange = function () {
         page.paths = this.value;

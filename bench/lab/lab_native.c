@@ -8,8 +8,9 @@
  *
  * SETTINGS are the page's (lab.h, docs/lab.md), e.g. "chapter=2 size=64 spp=8". The
  * image is rendered as the page renders it: the steps of each pixel in order, averaged
- * by Welford's update (renderer.h), on one thread. Errors: "lab-native: what is wrong"
- * on stderr, exit status 2 (bad input) or 1.
+ * by Welford's update (renderer.h), on one thread; chapter 10's passes as the page takes
+ * them (lab_adaptive_plan, then lab_adaptive_band over the bands). Errors: "lab-native: what is
+ * wrong" on stderr, exit status 2 (bad input) or 1.
  */
 #include <errno.h>
 #include <limits.h>
@@ -87,6 +88,41 @@ static double render_all(Lab *lab, PixelSum *pixels, double *out)
     return rays;
 }
 
+/* Chapter 10's passes, planned and sampled band by band, into result->image; returns the
+ * rays traced. */
+static double render_adaptive(Lab *lab, RenderResult *result)
+{
+    long count = (long)lab_width(lab) * lab_height(lab);
+    double *sums = calloc((size_t)count, 12 * sizeof *sums),
+           *estimate = malloc((size_t)count * sizeof *estimate),
+           *values = malloc((size_t)count * 3 * sizeof *values), rays = 0.0;
+    int *samples = calloc((size_t)count, sizeof *samples),
+        *to_add = malloc((size_t)count * sizeof *to_add);
+    if (!sums || !estimate || !values || !samples || !to_add)
+        fail(1, "out of memory");
+    long active;
+    for (int pass = 0;
+         (active = lab_adaptive_plan(lab, pass, sums, samples, estimate, to_add)) > 0; pass++)
+        for (int row0 = 0; row0 < lab_height(lab); row0 += BAND) {
+            int rows = lab_height(lab) - row0 < BAND ? lab_height(lab) - row0 : BAND;
+            long first = (long)row0 * lab_width(lab);
+            if (lab_adaptive_band(lab, row0, rows, sums + 12 * first, samples + first,
+                                  to_add + first, values + 3 * first) != 0)
+                fail(1, lab_error(lab));
+            rays += lab_rays(lab, 0) + lab_rays(lab, 1) + lab_rays(lab, 2);
+        }
+    if (active < 0)
+        fail(1, lab_error(lab));
+    for (long i = 0; i < 3 * count; i++)
+        result->image.pixels[i] = (float)values[i];
+    free(sums);
+    free(estimate);
+    free(values);
+    free(samples);
+    free(to_add);
+    return rays;
+}
+
 static void render_command(Lab *lab, const char *path)
 {
     int width = lab_width(lab), height = lab_height(lab);
@@ -99,8 +135,13 @@ static void render_command(Lab *lab, const char *path)
     if (!pixels || !out || !result.image.pixels || !result.std_error.pixels ||
         !result.average_std_error.pixels)
         fail(1, "out of memory");
-    double start = stats_now(), rays = render_all(lab, pixels, out);
-    pixel_sums_finish(pixels, &result);
+    double start = stats_now(), rays;
+    if (strstr(lab_settings(lab), "\"chapter\":10,")) {
+        rays = render_adaptive(lab, &result);
+    } else {
+        rays = render_all(lab, pixels, out);
+        pixel_sums_finish(pixels, &result);
+    }
     if (image_write_pfm(&result.image, path) != 0)
         fail(1, "cannot write the image");
     printf("wrote %s: %d steps, %.0f rays in %.2f s\n", path, lab_steps(lab), rays,

@@ -10,6 +10,13 @@
  * processor time (the one that has used less, a task in flight counting from the moment
  * it was sent; when one has taken all its samples, the other takes tasks until it has
  * used as much, and stops when those are in).
+ *
+ * A render to a target error (chapters 7 and 8: target=E) keeps its steps in two
+ * interleaved half-images, A the even steps and B the odd ones, and stops at the first
+ * even step where their estimate of its relative RMSE is at most E: the root of the mean
+ * over pixels and channels of ((A - B) / 2)^2 / (F^2 + 0.01), F = (A + B) / 2, the
+ * relative MSE of bench/measure.h. Chapter 10's render (AdaptiveRender) has its own
+ * estimate and rule, lab.h's.
  */
 "use strict";
 
@@ -66,10 +73,17 @@ class Render {
         this.variance = 0;                         /* the sum of the pixels' squared standard errors */
         this.reference = null;
         this.spare = [];                           /* result buffers to give back to workers */
+        this.target = info.settings.target || 0;   /* of the estimated relative RMSE; 0: none */
+        this.halves = [new Float64Array(3 * pixels), new Float64Array(3 * pixels)];
+        this.halfCounts = [new Uint32Array(pixels), new Uint32Array(pixels)];
+        this.estimated = NaN;                      /* from the halves, at the last even step */
+        this.estimates = [];                       /* each one made, in order */
+        this.reached = null;                       /* the target: {seconds, wall, steps, estimate} */
     }
 
     tasksLeft() {
-        return !this.error && !this.stopped && !this.stopping && this.issued < this.steps * this.bands;
+        return !this.error && !this.stopped && !this.stopping && !this.finished &&
+               this.issued < this.steps * this.bands;
     }
 
     /* Stop here: the other panel, at equal time, has finished. */
@@ -97,6 +111,7 @@ class Render {
     /* A band's result: kept until its turn, then added. */
     accept(result) {
         this.inFlight--;
+        if (this.finished) return; /* reached its target: what it cost is counted */
         this.seconds += result.seconds;
         this.longest = Math.max(this.longest, result.seconds);
         for (let k = 0; k < 4; k++)
@@ -110,10 +125,31 @@ class Render {
             this.added[band]++;
             this.dirty.add(band);
         }
+        if (this.target > 0) this.checkTarget();
         if (this.complete())
             this.finished = performance.now();
         else if (this.stopping && this.inFlight === 0)
             this.stop();
+    }
+
+    /* At each even number of steps that every pixel has, the estimate from the halves; the
+     * target reached when it is at most the target. */
+    checkTarget() {
+        const steps = Math.min.apply(null, this.added);
+        if (steps < 2 || steps % 2 !== 0 || steps === this.estimatedAt) return;
+        this.estimatedAt = steps;
+        let sum = 0;
+        for (let p = 0; p < this.count.length; p++)
+            for (let c = 0; c < 3; c++) {
+                const a = this.halves[0][3 * p + c] / this.halfCounts[0][p],
+                      b = this.halves[1][3 * p + c] / this.halfCounts[1][p], f = (a + b) / 2;
+                sum += (a - b) * (a - b) / 4 / (f * f + 0.01);
+            }
+        this.estimated = Math.sqrt(sum / (3 * this.count.length));
+        this.estimates.push(this.estimated);
+        if (this.estimated <= this.target)
+            this.reached = {seconds: this.seconds, wall: this.wallSeconds(), steps: steps,
+                            estimate: this.estimated};
     }
 
     /* Measure against this reference from now on: {image, mse, relMse} (bench/measure.h). */
@@ -140,7 +176,10 @@ class Render {
             const r = values[3 * i], g = values[3 * i + 1], b = values[3 * i + 2];
             if (!(isFinite(r) && isFinite(g) && isFinite(b)))
                 continue;
-            const p = first + i, n = ++this.count[p];
+            const p = first + i, n = ++this.count[p], half = result.step % 2;
+            this.halfCounts[half][p]++;
+            for (let c = 0; c < 3; c++)
+                this.halves[half][3 * p + c] += values[3 * i + c];
             if (n === 1) this.empty--;
             if (n === 2) this.single--;
             for (let c = 0; c < 3; c++) {
@@ -156,7 +195,7 @@ class Render {
     }
 
     complete() {
-        return this.added.every(function (step) { return step >= this.steps; }, this);
+        return !!this.reached || this.added.every(function (step) { return step >= this.steps; }, this);
     }
 
     /* Steps every pixel has (fractional: the bands ahead count in part). */
@@ -187,6 +226,113 @@ class Render {
         return {rmse: mse > 0 ? Math.sqrt(mse) : 0,
                 relMse: this.relative / this.mean.length - this.reference.relMse};
     }
+}
+
+/* Chapter 10's render: passes, each planned in a worker from every pixel's sums and
+ * samples (lab_adaptive_plan), then its bands sampled (lab_adaptive_band), the next plan
+ * waiting for the last band. Its tasks are the plan and the bands; the plan says when
+ * the render is done (lab.h's rule and target). `mean` is each pixel's value as the rule
+ * keeps it, `count` its samples, `estimate` its estimated relative MSE at the last plan. */
+class AdaptiveRender extends Render {
+    constructor(setup, info, bandRows) {
+        super(setup, info, bandRows || Math.max(1, Math.round(TASK_SAMPLES / (8 * info.width))));
+        const pixels = this.width * this.height;
+        this.sums = new Float64Array(12 * pixels); /* quarter q's r, g, b at 12 p + 3 q */
+        this.estimate = new Float64Array(pixels);
+        this.toAdd = null;
+        this.pass = 0;                             /* passes planned */
+        this.passesDone = 0;                       /* passes whose bands are all in */
+        this.phase = "plan";                       /* plan, planning, sampling */
+        this.bandsSent = this.bandsIn = 0;         /* of the pass being sampled */
+        this.active = 0;                           /* pixels the last pass sampled */
+    }
+
+    tasksLeft() {
+        return !this.error && !this.stopped && !this.stopping && !this.finished &&
+               (this.phase === "plan" || (this.phase === "sampling" && this.bandsSent < this.bands));
+    }
+
+    nextTask() {
+        this.inFlight++;
+        if (this.phase === "plan") {
+            this.phase = "planning";
+            const sums = this.sums.slice(), samples = Int32Array.from(this.count);
+            return {type: "plan", pass: this.pass, sums: sums, samples: samples,
+                    transfer: [sums.buffer, samples.buffer]};
+        }
+        const row0 = this.bandsSent++ * this.bandRows, rows = Math.min(this.bandRows, this.height - row0);
+        const from = row0 * this.width, to = from + rows * this.width;
+        this.issued++;
+        const sums = this.sums.slice(12 * from, 12 * to), samples = Int32Array.from(this.count.subarray(from, to)),
+              toAdd = this.toAdd.slice(from, to);
+        return {type: "adaptive", row0: row0, rows: rows, sums: sums, samples: samples, toAdd: toAdd,
+                transfer: [sums.buffer, samples.buffer, toAdd.buffer]};
+    }
+
+    accept(result) {
+        this.inFlight--;
+        if (this.finished) return;
+        this.seconds += result.seconds;
+        this.longest = Math.max(this.longest, result.seconds);
+        for (let k = 0; k < 4; k++)
+            this.rays[k] += result.rays[k];
+        if (result.type === "plan") {
+            this.estimate = result.estimate;
+            this.toAdd = result.toAdd;
+            if (result.pass > 0) { /* the first plan has no samples to estimate from */
+                this.estimated = result.error;
+                this.estimates.push(result.error);
+            }
+            if (result.active > 0) this.active = result.active;
+            this.pass++;
+            this.phase = "sampling";
+            this.bandsSent = this.bandsIn = 0;
+            if (result.active === 0) {
+                if (result.pass > 0 && result.error <= this.target)
+                    this.reached = {seconds: this.seconds, wall: this.wallSeconds(),
+                                    steps: this.meanSamples(), estimate: result.error};
+                this.finished = performance.now();
+            }
+        } else {
+            this.take(result);
+            if (++this.bandsIn === this.bands) {
+                this.phase = "plan";
+                this.passesDone++;
+            }
+        }
+        if (this.stopping && this.inFlight === 0)
+            this.stop();
+    }
+
+    /* A band's new sums, samples and values, the errors' sums following each pixel. */
+    take(result) {
+        const first = result.row0 * this.width, reference = this.reference;
+        this.sums.set(result.sums, 12 * first);
+        for (let i = 0; i < result.rows * this.width; i++) {
+            const p = first + i;
+            if (this.count[p] === 0 && result.samples[i] > 0) this.empty--;
+            this.count[p] = result.samples[i];
+            for (let c = 0; c < 3; c++) {
+                if (reference) this.addDifference(3 * p + c, -1);
+                this.mean[3 * p + c] = result.values[3 * i + c];
+                if (reference) this.addDifference(3 * p + c, 1);
+            }
+        }
+        this.dirty.add(result.row0 / this.bandRows);
+    }
+
+    complete() { return !!this.finished; }
+
+    stepsDone() { return this.passesDone; }
+
+    meanSamples() {
+        let sum = 0;
+        for (let p = 0; p < this.count.length; p++) sum += this.count[p];
+        return sum / this.count.length;
+    }
+
+    /* Its estimate, which the rule's samples are spread by, stands for the standard error. */
+    standardError() { return this.estimated; }
 }
 
 class Pool {
@@ -262,16 +408,19 @@ class Pool {
             if (!render)
                 return;
             const task = render.nextTask();
-            task.type = "band";
+            task.type = task.type || "band";
             task.job = render.setup.key;
-            task.buffer = render.spare.pop() || null; /* filled and sent back: less garbage */
+            if (task.type === "band")
+                task.buffer = render.spare.pop() || null; /* filled and sent back: less garbage */
+            const transfer = task.transfer || (task.buffer ? [task.buffer] : []);
+            delete task.transfer;
             if (slot.key !== render.setup.key) {
                 task.setup = render.setup;
                 slot.key = render.setup.key;
             }
             slot.render = render;
             slot.sent = performance.now();
-            slot.worker.postMessage(task, task.buffer ? [task.buffer] : []);
+            slot.worker.postMessage(task, transfer);
         }
     }
 
@@ -290,7 +439,7 @@ class Pool {
     deliver(render, message) {
         if (render && !render.stopped && this.renders.indexOf(render) >= 0 &&
             message.job === render.setup.key) {
-            if (message.type === "band") {
+            if (message.type !== "error") {
                 render.accept(message);
                 if (render.finished && !render.stopped && this.mode === "time") /* its time is the budget */
                     for (const other of this.renders)

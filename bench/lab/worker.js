@@ -6,10 +6,15 @@
  *   {type: "band", job, setup?, step, row0, rows, buffer}   render a band (setup: the
  *                      job's scene and settings, when they are new here; buffer: an
  *                      earlier result's, to fill again if it has the size)
+ *   {type: "plan", job, setup?, pass, sums, samples}  chapter 10: plan a pass
+ *   {type: "adaptive", job, setup?, row0, rows, sums, samples, toAdd}   chapter 10: sample
+ *                      a band as planned (sums and samples: the band's, 12 and 1 per pixel)
  *   {type: "record", id, setup, col, row, first, count}   record paths (record.h)
  *   {type: "scene", id, setup}                      the scene's plan (lab_scene)
  *   {type: "fragment", id, fragment, scenes, cores} the address checked (lab_fragment)
- * and out: {type: "band", job, step, row0, rows, values, rays, seconds}, {type: "record",
+ * and out: {type: "band", job, step, row0, rows, values, rays, seconds}, {type: "plan",
+ * job, pass, active, error, estimate, toAdd, rays, seconds}, {type: "adaptive", job, row0,
+ * rows, sums, samples, values, rays, seconds}, {type: "record",
  * id, json, info}, {type: "scene", id, plan, info}, {type: "fragment", id, state}, or
  * {type: "error", job | id, message} with lab_error's text. Text is read here, in the
  * worker, as JSON: a big scene's plan or reading keeps the page's own thread free.
@@ -91,10 +96,64 @@ function renderBand(message) {
         ? new Float64Array(message.buffer) : new Float64Array(count);
     values.set(result);
     M._free(out);
-    const rays = [0, 1, 2, 3].map(function (kind) { return M._lab_rays(lab, kind); });
     postMessage({type: "band", job: message.job, step: message.step, row0: message.row0,
-                 rows: message.rows, values: values, rays: rays, seconds: seconds},
+                 rows: message.rows, values: values, rays: rays(), seconds: seconds},
                 [values.buffer]);
+}
+
+/* Typed arrays copied into the module's memory: their addresses (free them). */
+function arraysIn(arrays) {
+    return arrays.map(function (array) {
+        const pointer = M._malloc(Math.max(1, array.byteLength));
+        if (!pointer)
+            throw new Error("out of memory for " + array.byteLength + " bytes");
+        new Uint8Array(M.HEAPU8.buffer, pointer, array.byteLength)
+            .set(new Uint8Array(array.buffer, array.byteOffset, array.byteLength));
+        return pointer;
+    });
+}
+
+/* A copy of `count` elements of type Type at `pointer` in the module's memory. */
+function arrayOut(Type, pointer, count) {
+    return new Type(M.HEAPU8.buffer.slice(pointer, pointer + count * Type.BYTES_PER_ELEMENT));
+}
+
+function rays() {
+    return [0, 1, 2, 3].map(function (kind) { return M._lab_rays(lab, kind); });
+}
+
+/* Chapter 10: pass `pass` planned from every pixel's sums and samples (lab_adaptive_plan). */
+function planPass(message) {
+    const pixels = info.width * info.height;
+    const [sums, samples, estimate, toAdd] =
+        arraysIn([message.sums, message.samples, new Float64Array(pixels), new Int32Array(pixels)]);
+    const start = performance.now();
+    const active = M._lab_adaptive_plan(lab, message.pass, sums, samples, estimate, toAdd);
+    const seconds = (performance.now() - start) / 1000;
+    const reply = {type: "plan", job: message.job, pass: message.pass, active: active,
+                   error: M._lab_estimated_error(lab), estimate: arrayOut(Float64Array, estimate, pixels),
+                   toAdd: arrayOut(Int32Array, toAdd, pixels), rays: [0, 0, 0, 0], seconds: seconds};
+    [sums, samples, estimate, toAdd].forEach(function (pointer) { M._free(pointer); });
+    if (active < 0)
+        throw failure();
+    postMessage(reply, [reply.estimate.buffer, reply.toAdd.buffer]);
+}
+
+/* Chapter 10: a band's planned samples (lab_adaptive_band). */
+function sampleBand(message) {
+    const pixels = info.width * message.rows;
+    const [sums, samples, toAdd, values] =
+        arraysIn([message.sums, message.samples, message.toAdd, new Float64Array(3 * pixels)]);
+    const start = performance.now();
+    const status = M._lab_adaptive_band(lab, message.row0, message.rows, sums, samples, toAdd, values);
+    const seconds = (performance.now() - start) / 1000;
+    const reply = {type: "adaptive", job: message.job, row0: message.row0, rows: message.rows,
+                   sums: arrayOut(Float64Array, sums, 12 * pixels), samples: arrayOut(Int32Array, samples, pixels),
+                   values: arrayOut(Float64Array, values, 3 * pixels), rays: rays(), seconds: seconds};
+    [sums, samples, toAdd, values].forEach(function (pointer) { M._free(pointer); });
+    if (status !== 0)
+        throw failure();
+    postMessage(reply, [reply.sums.buffer, reply.samples.buffer, reply.values.buffer]);
 }
 
 /* The answer to a question: the JSON text at `json` in the module's memory, as text
@@ -126,6 +185,10 @@ onmessage = function (event) {
                 configure(message.setup);
             if (message.type === "band")
                 renderBand(message);
+            else if (message.type === "plan")
+                planPass(message);
+            else if (message.type === "adaptive")
+                sampleBand(message);
             else if (message.type === "record")
                 answer(message, M._lab_record(lab, message.col, message.row, message.first,
                                               message.count));
