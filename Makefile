@@ -265,8 +265,8 @@ grade-class: $(if $(filter $(CHAPTER),$(EXERCISE_CHAPTERS)),$(call grader_of,$(C
 	    env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL $(MAKE) --no-print-directory -s BUILD=$(BUILD) \
 	    CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" CC="$(CC)" check-exercise-chapter$(CHAPTER)
 
-# The solution of chapter $(CHAPTER) graded under SEEDS grading seeds (GRADE_SEED = 1 .. SEEDS):
-# every FAIL is a false alarm (bench/exercise/false_alarms.sh).
+# The solution of chapter $(CHAPTER) graded under SEEDS grading seeds (GRADE_SEED = 1 .. SEEDS,
+# or FIRST_SEED on): every FAIL is a false alarm (bench/exercise/false_alarms.sh).
 SEEDS ?= 200
 false-alarms: $(if $(filter $(CHAPTER),$(EXERCISE_CHAPTERS)),source-chapter$(CHAPTER) $(call grader_of,$(CHAPTER)))
 	@if [ -z "$(filter $(CHAPTER),$(EXERCISE_CHAPTERS))" ]; then \
