@@ -12,6 +12,7 @@
 #ifndef PPM_H
 #define PPM_H
 
+#include "error_estimate.h"
 #include "path_caustics.h"
 #include "photon_estimate.h"
 #include "renderer.h"
@@ -31,6 +32,10 @@ typedef struct {
     double cpu_seconds; /* > 0: a budget of processor time (stats_cpu_now): passes are
                          * rendered while one more would end nearer the budget than
                          * stopping (judged by the mean pass so far); at least one */
+    double target_error; /* > 0: stop after a pair of passes whose estimate from the
+                          * halves (odd and even passes, error_estimate.h) is at most this */
+    double time_limit;   /* > 0: start a pair of passes only if it ends within this many
+                          * seconds of the start (judged by the mean pass so far) */
 } PpmSettings;
 
 typedef struct {
@@ -39,6 +44,8 @@ typedef struct {
     double cpu_seconds;  /* processor time used, all threads together */
     double radius;       /* the last pass's radius */
     double stored;       /* photons stored per pass in the caustic map, on average */
+    RelativeError estimate; /* from the odd and even passes (with a target or time limit) */
+    TargetStop stop;        /* and why the passes stopped then */
 } PpmResult;
 
 /* The map of settings->emitted photons for estimates of `radius`, shot by `threads`
