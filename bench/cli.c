@@ -60,8 +60,11 @@ static const FlagSpec FLAG_SPECS[] = {
      "on|off  the final estimator's lamp points and bounces stratified across a pixel's "
      "samples"},
     {FLAG_TARGET_ERROR, "--target-error", VALUE_REAL, 0, 1,
-     "E       render until the image's estimated relative RMSE is E (0: off)"},
-    {FLAG_TIME, "--time", VALUE_REAL, 0, 1e6, "T       render for at most T seconds (0: off)"},
+     "E       render the main image in passes until its relative RMSE, estimated from its "
+     "own samples, is at most E (0.01: 1 %), or --time is up; print what it cost"},
+    {FLAG_TIME, "--time", VALUE_REAL, 0, DBL_MAX,
+     "T       render the main image in passes for at most T seconds (or until --target-error "
+     "is reached)"},
 };
 #define FLAG_SPEC_COUNT ((int)(sizeof FLAG_SPECS / sizeof FLAG_SPECS[0]))
 
@@ -121,6 +124,10 @@ static void print_default(const FlagSpec *spec, const Options *d)
     case FLAG_STRATA:
         printf(" (default %s)", d->strata ? "on" : "off");
         break;
+    case FLAG_TARGET_ERROR:
+    case FLAG_TIME:
+        printf(" (default off)");
+        break;
 #endif
     default:
         break;
@@ -141,15 +148,26 @@ static void print_usage(const ProgramInfo *info)
     printf("  %-15s         this help\n", "--help");
 }
 
+/* Whether a flag's lowest value is left out of its range: --rr's, --target-error's and
+ * --time's 0. */
+static int open_below(const FlagSpec *spec)
+{
+    return spec->bit == FLAG_RR || spec->bit == FLAG_TARGET_ERROR || spec->bit == FLAG_TIME;
+}
+
 /* The range a flag takes, in words: "a whole number from 8 to 16384", "a number in
- * (0, 1]". */
+ * (0, 1]", "a number in (0, 1)". */
 static void describe_range(const FlagSpec *spec, char *text, size_t size)
 {
     if (spec->kind == VALUE_INT)
         snprintf(text, size, "a whole number from %.0f to %.0f", spec->min, spec->max);
+    else if (spec->bit == FLAG_TARGET_ERROR)
+        snprintf(text, size, "a number in (%g, %g)", spec->min, spec->max);
+    else if (spec->bit == FLAG_TIME)
+        snprintf(text, size, "a number of seconds above 0");
     else
-        snprintf(text, size, "a number in %s%g, %g]", spec->bit == FLAG_RR ? "(" : "[",
-                 spec->min, spec->max);
+        snprintf(text, size, "a number in %s%g, %g]", open_below(spec) ? "(" : "[", spec->min,
+                 spec->max);
 }
 
 /* A whole number or a real in the flag's range, the whole text and nothing else, in
@@ -184,7 +202,9 @@ static double parse_number(const FlagSpec *spec, const char *text)
                  text, DBL_MAX, range);
     if (spec->kind == VALUE_INT && value != floor(value))
         cli_fail(2, "%s: '%s' is not a whole number; expected %s", spec->name, text, range);
-    if (!(value >= spec->min && value <= spec->max) || (spec->bit == FLAG_RR && !(value > 0.0)))
+    if (!(value >= spec->min && value <= spec->max) ||
+        (open_below(spec) && !(value > spec->min)) ||
+        (spec->bit == FLAG_TARGET_ERROR && !(value < spec->max)))
         cli_fail(2, "%s: expected %s, got '%s'", spec->name, range, text);
     return value;
 }

@@ -32,8 +32,9 @@ enum {
     FLAG_REFERENCE_SPP = 1u << 12, /* --reference-spp N: samples of the reference image */
     FLAG_RUNS = 1u << 13,          /* --runs N: independent runs of each measured setting */
     FLAG_STRATA = 1u << 14,        /* --strata on|off: stratified pairs (chapter 7; sobol.h) */
-    FLAG_TARGET_ERROR = 1u << 15,  /* --target-error E: render until the relative RMSE is E */
-    FLAG_TIME = 1u << 16           /* --time T: render for T seconds */
+    FLAG_TARGET_ERROR = 1u << 15,  /* --target-error E: render to a relative RMSE (chapter 7 on;
+                                      error_estimate.h) */
+    FLAG_TIME = 1u << 16           /* --time T: render for T seconds (chapter 7 on) */
 };
 
 /* --runs: at most; by default, two (at the report's 800 x 800 a run of Figure 7 is long,
@@ -66,8 +67,9 @@ typedef struct {
     int runs;
 #if CHAPTER >= 7
     int strata; /* 1: the estimator's pairs of numbers stratified across a pixel's samples */
-    double target_error; /* the image's estimated relative RMSE to stop at; 0: off */
-    double time_limit;   /* seconds to stop after; 0: off */
+    double
+        target_error;  /* the relative RMSE to render to, estimated from the samples; 0: off */
+    double time_limit; /* seconds to render for at most; 0: off */
 #endif
     unsigned given;      /* the FLAG_ bits the user set on the command line */
     uint64_t scene_hash; /* of the scene file's bytes (scene_file.h), once it is read */

@@ -489,6 +489,60 @@ PathSettings experiment_final_estimator(const Options *options, const MirrorPlan
         path.rr_throughput = 1;
     return path;
 }
+
+int experiment_to_target(const Options *options)
+{
+    return options->target_error > 0.0 || options->time_limit > 0.0;
+}
+
+TargetSettings experiment_target_settings(const Options *options, int first_spp, int grow)
+{
+    return (TargetSettings){options->target_error, options->time_limit, first_spp, grow, 0};
+}
+
+void experiment_render_to_target(const Options *options, const Scene *scene,
+                                 const RenderSettings *settings, Estimator estimate,
+                                 const void *estimator_settings, const char *name,
+                                 const char *settings_text, const Reference *reference)
+{
+    TargetSettings target = experiment_target_settings(options, TARGET_FIRST_SPP, 1);
+    TargetResult result;
+    render_install_interrupt();
+    if (render_to_target(scene, settings, estimate, estimator_settings, &target, &result) != 0)
+        cli_fail(1, "out of memory rendering %d x %d", settings->image.width,
+                 settings->image.height);
+    if (result.render.nonfinite > 0)
+        fprintf(stderr, "%s: %s: dropped %llu non-finite samples of %llu\n", cli_program,
+                settings->label, (unsigned long long)result.render.nonfinite,
+                (unsigned long long)result.render.samples);
+    if (!result.render.interrupted || result.passes >= 2)
+        experiment_write_image(options, name, &result.render.image, PANEL_EXPOSURE);
+    experiment_exit_if_interrupted(&result.render, result.passes >= 2 ? name : NULL);
+    experiment_report_target(options, name, settings_text, &target, &result.estimate,
+                             result.stop, result.passes, &result.render, reference);
+    render_result_free(&result.render);
+}
+
+void experiment_report_target(const Options *options, const char *name,
+                              const char *settings_text, const TargetSettings *target,
+                              const RelativeError *estimate, TargetStop stop, int passes,
+                              const RenderResult *render, const Reference *reference)
+{
+    RelativeError against = {NAN, NAN};
+    if (reference)
+        against = error_against_reference(&render->image, reference);
+    char line[512];
+    target_describe(target, estimate, reference ? &against : NULL, stop, render->seconds,
+                    render_samples_per_pixel(render), (double)ray_counts_total(render->rays),
+                    passes, line, sizeof line);
+    printf("%s\n", line);
+    TableRow row = experiment_row(name, settings_text, render);
+    if (reference)
+        measure_fill_row(&row, &render->image, reference);
+    char table[256];
+    snprintf(table, sizeof table, "%s_target", name);
+    experiment_write_table(options, table, &row, 1);
+}
 #endif
 
 #if CHAPTER >= 8
@@ -504,6 +558,8 @@ PpmSettings experiment_photon_settings(const PathSettings *path, const Scene *sc
                        PPM_ALPHA,
                        spp,
                        passes,
+                       0.0,
+                       0.0,
                        0.0};
     ppm.path.mirror_light = 1;
     return ppm;

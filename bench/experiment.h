@@ -21,6 +21,9 @@
 #if CHAPTER >= 4
 #include "plot.h"
 #endif
+#if CHAPTER >= 7
+#include "error_estimate.h"
+#endif
 #if CHAPTER >= 8
 #include "bias_variance.h"
 #include "ppm.h"
@@ -184,6 +187,32 @@ int experiment_infinite_variance(const Scene *scene, const PathSettings *path);
  * hit, bounces aimed at the spheres; no mis, which in the room changes nothing
  * measurable (chapter 7's levers table) for about 2% more work. */
 PathSettings experiment_final_estimator(const Options *options, const MirrorPlanes *mirrors);
+
+/* Samples per pixel of each of the first two passes of a render to --target-error or
+ * --time (error_estimate.h); each later pair adds an eighth of the samples so far. */
+#define TARGET_FIRST_SPP 4
+
+/* Whether --target-error or --time was given: then the program renders its main image
+ * to them and skips the rest of its figure (docs/running.md). */
+int experiment_to_target(const Options *options);
+
+/* The options' target: --target-error, --time, first passes of `first_spp`, growing
+ * (grow) or all alike. */
+TargetSettings experiment_target_settings(const Options *options, int first_spp, int grow);
+
+/* Render the main image NAME to the options' target (render_to_target), write it as
+ * NAME.png/.pfm (an interruption: what it has, then exit), then report (below). */
+void experiment_render_to_target(const Options *options, const Scene *scene,
+                                 const RenderSettings *settings, Estimator estimate,
+                                 const void *estimator_settings, const char *name,
+                                 const char *settings_text, const Reference *reference);
+
+/* Print the line of a render to a target (target_describe), with its error measured
+ * against `reference` (NULL: none), and write it as a table row NAME_target.csv. */
+void experiment_report_target(const Options *options, const char *name,
+                              const char *settings_text, const TargetSettings *target,
+                              const RelativeError *estimate, TargetStop stop, int passes,
+                              const RenderResult *render, const Reference *reference);
 #endif
 
 #if CHAPTER >= 8

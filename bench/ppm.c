@@ -1,6 +1,7 @@
 /* ppm.c (bench, chapter 8): progressive photon mapping, pass by pass. See ppm.h. */
 #include "ppm.h"
 
+#include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -188,6 +189,15 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
     int show = render->progress && isatty(STDERR_FILENO);
     double start = stats_now(), cpu_start = stats_cpu_now();
     long stored = 0;
+    /* With a target or a time limit, the passes go in pairs, in turn into two halves. */
+    TargetSettings target = {settings->target_error, settings->time_limit, settings->spp, 0,
+                             settings->passes};
+    int in_pairs = target.target_error > 0.0 || target.time_limit > 0.0;
+    HalfImages halves = {{{0, 0, NULL}, {0, 0, NULL}}, {0, 0}, 0};
+    if (in_pairs && status == 0 && half_images_begin(&halves, width, height) != 0)
+        status = -1;
+    r.estimate = (RelativeError){NAN, NAN};
+    r.stop = TARGET_MOST_PASSES;
     while (status == 0 && ppm_budget_allows(settings, r.passes, stats_cpu_now() - cpu_start)) {
         RenderResult pass;
         int pass_stored;
@@ -198,9 +208,12 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
         }
         if (pass.interrupted) {
             r.render.interrupted = 1;
+            r.stop = TARGET_INTERRUPTED;
             render_result_free(&pass);
             break;
         }
+        if (in_pairs)
+            half_images_add(&halves, &pass.image, settings->spp);
         for (int row = 0; row < height; row++)
             for (int col = 0; col < width; col++)
                 pixel_sum_add(&passes[(long)row * width + col],
@@ -215,7 +228,15 @@ int ppm_render(const Scene *scene, const RenderSettings *render, const PpmSettin
         if (show)
             fprintf(stderr, "\r%s: pass %d, %.1f s   ", render->label ? render->label : "ppm",
                     r.passes, stats_now() - start);
+        int next_spp;
+        if (in_pairs && r.passes % 2 == 0) {
+            r.estimate = half_images_estimate(&halves);
+            if (target_should_stop(&target, &r.estimate, r.passes, stats_now() - start,
+                                   (double)r.passes * settings->spp, &next_spp, &r.stop))
+                break;
+        }
     }
+    half_images_free(&halves);
     if (show)
         fprintf(stderr, "\r%*s\r", 40, "");
     r.render.seconds = stats_now() - start;

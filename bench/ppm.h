@@ -12,6 +12,7 @@
 #ifndef PPM_H
 #define PPM_H
 
+#include "error_estimate.h"
 #include "path_caustics.h"
 #include "photon_estimate.h"
 #include "renderer.h"
@@ -22,23 +23,29 @@
 #define PPM_FIRST_RADIUS_AT_800 0.0034
 
 typedef struct {
-    PathSettings path;  /* the path tracer's settings (its fresnel also for photons) */
-    int photons;        /* emitted per pass */
-    double radius;      /* r_1 */
-    double alpha;       /* of the radius schedule */
-    int spp;            /* camera samples per pixel per pass */
-    int passes;         /* passes to render */
-    double cpu_seconds; /* > 0: a budget of processor time (stats_cpu_now): passes are
-                         * rendered while one more would end nearer the budget than
-                         * stopping (judged by the mean pass so far); at least one */
+    PathSettings path;   /* the path tracer's settings (its fresnel also for photons) */
+    int photons;         /* emitted per pass */
+    double radius;       /* r_1 */
+    double alpha;        /* of the radius schedule */
+    int spp;             /* camera samples per pixel per pass */
+    int passes;          /* passes to render */
+    double cpu_seconds;  /* > 0: a budget of processor time (stats_cpu_now): passes are
+                          * rendered while one more would end nearer the budget than
+                          * stopping (judged by the mean pass so far); at least one */
+    double target_error; /* > 0: stop after a pair of passes whose estimate from the
+                          * halves (odd and even passes, error_estimate.h) is at most this */
+    double time_limit;   /* > 0: start a pair of passes only if it ends within this many
+                          * seconds of the start (judged by the mean pass so far) */
 } PpmSettings;
 
 typedef struct {
-    RenderResult render; /* the mean of the passes and its standard error; time, rays */
-    int passes;          /* passes rendered */
-    double cpu_seconds;  /* processor time used, all threads together */
-    double radius;       /* the last pass's radius */
-    double stored;       /* photons stored per pass in the caustic map, on average */
+    RenderResult render;    /* the mean of the passes and its standard error; time, rays */
+    int passes;             /* passes rendered */
+    double cpu_seconds;     /* processor time used, all threads together */
+    double radius;          /* the last pass's radius */
+    double stored;          /* photons stored per pass in the caustic map, on average */
+    RelativeError estimate; /* from the odd and even passes (with a target or time limit) */
+    TargetStop stop;        /* and why the passes stopped then */
 } PpmResult;
 
 /* The map of settings->emitted photons for estimates of `radius`, shot by `threads`

@@ -37,6 +37,7 @@
 #include <sys/prctl.h>
 #endif
 
+#include "error_estimate.h"
 #include "measure.h"
 #include "path_final.h"
 #include "render_batches.h"
@@ -60,6 +61,7 @@ static void fail(int status, const char *format, const char *detail)
 typedef struct {
     const char *scene, *name, *fresnel, *sigma, *out, *fallback;
     long size, spp, depth, parent;
+    double target_error, time_limit; /* 0: off */
     unsigned long long seed, key;
     int has_key;
     int quiet;
@@ -68,10 +70,14 @@ typedef struct {
 static const char USAGE[] =
     "usage: reference --scene FILE --size N --reference-spp N --depth N --out DIR --key HEX\n"
     "                 [--name NAME] [--fresnel schlick|exact] [--sigma MATERIAL=S] [--seed N]\n"
-    "                 [--fallback DIR] [--parent PID] [--quiet]\n"
+    "                 [--fallback DIR] [--parent PID] [--quiet] [--target-error E] [--time T]\n"
     "Renders the reference image of a scene into DIR/HEX.pfm, HEX-stderr.pfm and HEX.txt\n"
     "(into the --fallback folder when DIR cannot take them).\n"
-    "The chapter programs run it when their cache has no reference yet.\n";
+    "The chapter programs run it when their cache has no reference yet.\n"
+    "With --target-error E (in (0, 1)) or --time T (seconds), it renders batches of\n"
+    "--reference-spp / 8 samples until the image's relative RMSE, estimated from its odd\n"
+    "and even batches, is at most E, or T seconds are up, prints what that cost, and\n"
+    "records the samples it took as the entry's samples per pixel.\n";
 
 static long whole_number(const char *flag, const char *text, long min, long max)
 {
@@ -80,6 +86,22 @@ static long whole_number(const char *flag, const char *text, long min, long max)
     long value = strtol(text, &end, 10);
     if (*text == '\0' || *end != '\0' || errno != 0 || value < min || value > max)
         fail(2, "%s: expected a whole number in range", flag);
+    return value;
+}
+
+/* --target-error (in (0, 1)) or --time (above 0): a finite decimal number, the whole text. */
+static double positive_number(const char *flag, const char *text, int below_one)
+{
+    char *end;
+    errno = 0;
+    double value = strtod(text, &end);
+    if (*text == '\0' || *end != '\0' || errno != 0 ||
+        strspn(text, "+-0123456789.eE") != strlen(text) || !(value > 0.0) ||
+        (below_one && !(value < 1.0)))
+        fail(2,
+             below_one ? "%s: expected a number in (0, 1)"
+                       : "%s: expected a number of seconds above 0",
+             flag);
     return value;
 }
 
@@ -133,6 +155,10 @@ static Request parse(int argc, char **argv)
             r.depth = whole_number(flag, value, 1, 1000);
         else if (strcmp(flag, "--seed") == 0)
             r.seed = unsigned_word(flag, value, 10);
+        else if (strcmp(flag, "--target-error") == 0)
+            r.target_error = positive_number(flag, value, 1);
+        else if (strcmp(flag, "--time") == 0)
+            r.time_limit = positive_number(flag, value, 0);
         else if (strcmp(flag, "--parent") == 0)
             r.parent = whole_number(flag, value, 1, 1L << 30);
         else
@@ -182,6 +208,28 @@ static void save(const Request *request, const ReferenceIdentity *identity,
             program, reason, request->fallback);
 }
 
+/* The batches (all alike, so their spread still gives each pixel's standard error) until
+ * the target or the time is reached; the line that says what it cost. */
+static RenderResult render_reference_to_target(const Request *request, const Scene *scene,
+                                               const RenderSettings *settings,
+                                               const PathSettings *path)
+{
+    TargetSettings target = {request->target_error, request->time_limit,
+                             settings->image.spp / REFERENCE_BATCHES, 0, 0};
+    TargetResult result;
+    if (render_to_target(scene, settings, path_final_radiance, path, &target, &result) != 0)
+        fail(1, "%s", "out of memory");
+    if (!result.render.interrupted) {
+        char line[512];
+        target_describe(&target, &result.estimate, NULL, result.stop, result.render.seconds,
+                        render_samples_per_pixel(&result.render),
+                        (double)ray_counts_total(result.render.rays), result.passes, line,
+                        sizeof line);
+        printf("%s\n", line);
+    }
+    return result.render;
+}
+
 int main(int argc, char **argv)
 {
     Request request = parse(argc, argv);
@@ -224,8 +272,12 @@ int main(int argc, char **argv)
     settings.label = "reference";
     render_install_interrupt();
     RenderResult result;
-    if (render_batches(&scene, &settings, REFERENCE_BATCHES, path_final_radiance, &path,
-                       &result) != 0)
+    long recorded_spp = request.spp;
+    if (request.target_error > 0.0 || request.time_limit > 0.0) {
+        result = render_reference_to_target(&request, &scene, &settings, &path);
+        recorded_spp = lround(render_samples_per_pixel(&result));
+    } else if (render_batches(&scene, &settings, REFERENCE_BATCHES, path_final_radiance, &path,
+                              &result) != 0)
         fail(1, "%s", "out of memory");
     if (result.interrupted)
         fail(130, "%s", "interrupted; nothing was cached");
@@ -241,7 +293,7 @@ int main(int argc, char **argv)
                        &reference.mean_std_error);
     image_free(&result.average_std_error);
     ReferenceIdentity identity = {request.key, file.hash, ""};
-    measure_reference_settings(&identity, request.size, request.spp, request.depth,
+    measure_reference_settings(&identity, request.size, recorded_spp, request.depth,
                                request.fresnel, request.seed, request.sigma);
     save(&request, &identity, &reference);
     render_result_free(&result);

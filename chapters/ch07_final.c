@@ -100,6 +100,22 @@ static void final_image(const Options *options, const Scene *scene, const Refere
     image_free(&image);
 }
 
+/* Figure 7's image rendered to --target-error or --time instead of --spp. */
+static void final_image_to_target(const Options *options, const Scene *scene,
+                                  const Reference *reference, const MirrorPlanes *mirrors)
+{
+    PathSettings path = experiment_final_estimator(options, mirrors);
+    PixelSampling sampling = options->strata ? PIXEL_STRATIFIED : PIXEL_SUBPIXELS;
+    RenderSettings settings =
+        experiment_render_settings(options, scene, TARGET_FIRST_SPP, sampling, "Figure 7");
+    char description[128], text[192];
+    describe_path(&path, description, sizeof description);
+    snprintf(text, sizeof text, "to target, %s%s", description,
+             options->strata ? " strata" : "");
+    experiment_render_to_target(options, scene, &settings, path_final_radiance, &path,
+                                "ch07_figure7", text, reference);
+}
+
 static void table1(const Options *options, const Scene *scene, const Reference *reference)
 {
     TableRow rows[TABLE1_ROWS];
@@ -234,9 +250,10 @@ int main(int argc, char **argv)
         "Chapter 7, the final image and the benchmarks: reproduces the report's Figure 7 and\n"
         "Table 1 (with times, errors and efficiency), measures the variance levers one by\n"
         "one, and plots error against time. Figure 7 uses roulette with bounded weights\n"
-        "unless --rr is given.",
+        "unless --rr is given. With --target-error or --time it renders Figure 7's image\n"
+        "alone, in passes, to that error or for that time, and prints what it cost.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_RR | FLAG_DEPTH | FLAG_FRESNEL |
-            FLAG_REFERENCE_SPP | FLAG_RUNS | FLAG_STRATA,
+            FLAG_REFERENCE_SPP | FLAG_RUNS | FLAG_STRATA | FLAG_TARGET_ERROR | FLAG_TIME,
         {.scene = "scenes/room.scene",
          .size = 800,
          .spp = 64,
@@ -257,6 +274,13 @@ int main(int argc, char **argv)
         cli_fail(1, "out of memory");
     Reference reference;
     reference_for(&options, &scene, &reference);
+    if (experiment_to_target(&options)) {
+        final_image_to_target(&options, &scene, &reference, &mirrors);
+        measure_reference_free(&reference);
+        mirror_planes_free(&mirrors);
+        scene_free(&scene);
+        return 0;
+    }
     final_image(&options, &scene, &reference, &mirrors);
     Options report = options; /* the report's estimators: independent numbers */
     report.strata = 0;

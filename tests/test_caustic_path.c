@@ -151,7 +151,7 @@ static void test_room_without_specular_is_chapter7(void **state)
     photon_map_free(&map);
     render_result_free(&b);
 
-    PpmSettings ppm = {CHAPTER7, 20000, 0.2, PPM_ALPHA, 8, 16, 0.0};
+    PpmSettings ppm = {CHAPTER7, 20000, 0.2, PPM_ALPHA, 8, 16, 0.0, 0.0, 0.0};
     PpmResult progressive;
     assert_int_equal(ppm_render(&scene, &settings, &ppm, &progressive), 0);
     assert_int_equal(progressive.passes, 16);
@@ -267,7 +267,7 @@ static void test_room_converges_and_counts_once(void **state)
     const int images_at[2] = {CHAPTER7.mirror_light, 1};
     for (int k = 0; k < 2; k++) {
         RenderSettings passes = {{SIDE, SIDE, 1, PIXEL_RANDOM, 12}, 0, 0, "test"};
-        PpmSettings ppm = {CHAPTER7, 20000, 0.1, PPM_ALPHA, 16, 64, 0.0};
+        PpmSettings ppm = {CHAPTER7, 20000, 0.1, PPM_ALPHA, 16, 64, 0.0, 0.0, 0.0};
         ppm.path.mirror_light = images_at[k];
         PpmResult combined;
         assert_int_equal(ppm_render(&scene, &passes, &ppm, &combined), 0);

@@ -66,7 +66,7 @@ static void test_same_image_for_any_thread_count(void **state)
 {
     Scene scene;
     load_room(&scene, 1);
-    PpmSettings ppm = {CHAPTER7, 5000, 0.2, PPM_ALPHA, 2, 3, 0.0};
+    PpmSettings ppm = {CHAPTER7, 5000, 0.2, PPM_ALPHA, 2, 3, 0.0, 0.0, 0.0};
     PpmResult results[3];
     const int threads[] = {1, 2, 5};
     for (int i = 0; i < 3; i++) {
@@ -100,7 +100,7 @@ static void test_standard_error_from_passes(void **state)
     Scene scene;
     load_room(&scene, 0);
     RenderSettings passes = {{20, 20, 1, PIXEL_RANDOM, 3}, 0, 0, "test"};
-    PpmSettings ppm = {CHAPTER7, 1000, 0.2, PPM_ALPHA, 4, 32, 0.0};
+    PpmSettings ppm = {CHAPTER7, 1000, 0.2, PPM_ALPHA, 4, 32, 0.0, 0.0, 0.0};
     PpmResult progressive;
     assert_int_equal(ppm_render(&scene, &passes, &ppm, &progressive), 0);
     assert_int_equal(progressive.passes, 32);
@@ -128,7 +128,7 @@ static void test_time_budget(void **state)
     Scene scene;
     load_room(&scene, 1);
     RenderSettings settings = {{8, 8, 1, PIXEL_RANDOM, 1}, 0, 0, "test"};
-    PpmSettings ppm = {CHAPTER7, 1000, 0.2, PPM_ALPHA, 1, 1000, 1e-9};
+    PpmSettings ppm = {CHAPTER7, 1000, 0.2, PPM_ALPHA, 1, 1000, 1e-9, 0.0, 0.0};
     PpmResult result;
     assert_int_equal(ppm_render(&scene, &settings, &ppm, &result), 0);
     assert_int_equal(result.passes, 1); /* always one; a second would overrun */
@@ -220,7 +220,7 @@ static void test_budget_ends_nearest(void **state)
     const double budget = 10.0, pass_seconds[] = {0.7, 1.0, 1.3, 2.9, 3.0, 3.1, 4.9, 6.0, 15.0};
     for (size_t k = 0; k < sizeof pass_seconds / sizeof pass_seconds[0]; k++) {
         double d = pass_seconds[k];
-        PpmSettings ppm = {CHAPTER7, 1000, 0.2, PPM_ALPHA, 1, 12, budget};
+        PpmSettings ppm = {CHAPTER7, 1000, 0.2, PPM_ALPHA, 1, 12, budget, 0.0, 0.0};
         int done = 0;
         while (ppm_budget_allows(&ppm, done, done * d))
             done++;
@@ -243,7 +243,7 @@ static void test_progressive_passes_are_one_render(void **state)
     PathSettings path = CHAPTER7;
     path.shadow_rays = 1;
     RenderSettings passes = {{12, 12, 1, PIXEL_PROGRESSIVE, 7}, 0, 0, "test"};
-    PpmSettings ppm = {path, 2000, 0.2, PPM_ALPHA, 4, 4, 0.0};
+    PpmSettings ppm = {path, 2000, 0.2, PPM_ALPHA, 4, 4, 0.0, 0.0, 0.0};
     PpmResult progressive;
     assert_int_equal(ppm_render(&scene, &passes, &ppm, &progressive), 0);
     assert_true(progressive.stored == 0.0);
@@ -340,7 +340,7 @@ static void test_passes_shoot_their_own_photons_at_their_own_radius(void **state
     assert_int_equal(scene_prepare(&scene), 0);
     const int passes = 16, photons = 50000;
     const double r1 = 0.045, rho = 0.5, phi = PI * lamp_area;
-    PpmSettings ppm = {{.max_depth = 2}, photons, r1, PPM_ALPHA, 1, passes, 0.0};
+    PpmSettings ppm = {{.max_depth = 2}, photons, r1, PPM_ALPHA, 1, passes, 0.0, 0.0, 0.0};
     RenderSettings settings = {{8, 8, 1, PIXEL_CENTRE, 21}, 0, 0, "test"};
     PpmResult result;
     assert_int_equal(ppm_render(&scene, &settings, &ppm, &result), 0);

@@ -2,7 +2,7 @@
  * program (cli.h).
  *
  * The input is one byte choosing which flags beyond FLAGS_COMMON the program takes
- * (each chapter's set is one of the 64), then the argument words, separated by NUL
+ * (each chapter's set is one of the 128), then the argument words, separated by NUL
  * bytes. cli_parse ends the program on --help (status 0) and on any error (status 2);
  * to run millions of command lines in one process, with coverage, the Makefile
  * compiles cli.c with its exit() renamed to fuzz_argv_exit, which jumps back here
@@ -12,6 +12,7 @@
  * in its flag's range, a flag not given at its default, and the paths either the
  * defaults or words of the command line, never empty.
  */
+#include <float.h>
 #include <setjmp.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -31,8 +32,13 @@ _Noreturn void fuzz_argv_exit(int status)
     longjmp(parse_ended, status + 1); /* never 0: setjmp's own return */
 }
 
-static const unsigned extra_flags[6] = {FLAG_SPP,   FLAG_SHADOW_RAYS, FLAG_RR,
-                                        FLAG_DEPTH, FLAG_FRESNEL,     FLAG_REFERENCE_SPP};
+static const unsigned extra_flags[7] = {FLAG_SPP,
+                                        FLAG_SHADOW_RAYS,
+                                        FLAG_RR,
+                                        FLAG_DEPTH,
+                                        FLAG_FRESNEL,
+                                        FLAG_REFERENCE_SPP,
+                                        FLAG_TARGET_ERROR | FLAG_TIME};
 
 static ProgramInfo program_taking(uint8_t choice)
 {
@@ -47,7 +53,7 @@ static ProgramInfo program_taking(uint8_t choice)
                          .seed = 1,
                          .out = "build/figures",
                          .reference_spp = 256}};
-    for (int i = 0; i < 6; i++)
+    for (int i = 0; i < 7; i++)
         if (choice & (1u << i))
             info.flags |= extra_flags[i];
     return info;
@@ -76,6 +82,11 @@ static void check_parsed(const Options *o, const ProgramInfo *info, char **argv,
         !in_range(o->depth, 1, 1000) || !in_range(o->threads, 0, 1024) ||
         !in_range(o->reference_spp, 1, 1 << 20) ||
         (o->fresnel != FRESNEL_SCHLICK && o->fresnel != FRESNEL_EXACT))
+        abort();
+    if ((cli_given(o, FLAG_TARGET_ERROR) ? !(o->target_error > 0.0 && o->target_error < 1.0)
+                                         : o->target_error != 0.0) ||
+        (cli_given(o, FLAG_TIME) ? !(o->time_limit > 0.0 && o->time_limit <= DBL_MAX)
+                                 : o->time_limit != 0.0))
         abort();
     if ((!cli_given(o, FLAG_SPP) && o->spp != d->spp) ||
         (!cli_given(o, FLAG_SHADOW_RAYS) && o->shadow_rays != d->shadow_rays) ||

@@ -40,6 +40,8 @@ static int render_photons(const char *text, const Scene *scene, uint64_t seed, R
         PPM_ALPHA,
         2,
         PASSES,
+        0.0,
+        0.0,
         0.0};
     RenderSettings settings = {{MONTE_CARLO_SIDE, height, 2, PIXEL_RANDOM, seed}, 0, 0, "test"};
     PpmResult result;
