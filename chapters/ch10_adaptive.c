@@ -68,6 +68,7 @@ static void render_adaptive(const Scene *scene, const RenderSettings *settings,
     if (adaptive_renderer_run(scene, settings, path_final_radiance, path, goal, result) != 0)
         cli_fail(1, "out of memory rendering %d x %d adaptively", settings->image.width,
                  settings->image.height);
+    experiment_report_dropped(settings->label, &result->render);
     experiment_exit_if_interrupted(&result->render, NULL);
 }
 
