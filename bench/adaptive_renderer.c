@@ -22,6 +22,7 @@ typedef struct {
 typedef struct {
     Pass *pass;
     RayCounts rays;
+    uint64_t nonfinite; /* samples dropped */
 } Worker;
 
 static void *work(void *argument)
@@ -30,9 +31,9 @@ static void *work(void *argument)
     Pass *pass = worker->pass;
     int row;
     while ((row = atomic_fetch_add(&pass->next_row, 1)) < pass->settings->image.height)
-        adaptive_sample_rows(pass->scene, &pass->settings->image, pass->estimate,
-                             pass->estimator_settings, pass->pixels, pass->to_add, row, row + 1,
-                             &worker->rays);
+        worker->nonfinite += adaptive_sample_rows(
+            pass->scene, &pass->settings->image, pass->estimate, pass->estimator_settings,
+            pass->pixels, pass->to_add, row, row + 1, &worker->rays);
     return NULL;
 }
 
@@ -104,7 +105,7 @@ int adaptive_renderer_run(const Scene *scene, const RenderSettings *settings,
 
     Pass pass = {scene, settings, estimate, estimator_settings, pixels, to_add, 0};
     for (int i = 0; i < r.render.threads; i++)
-        workers[i] = (Worker){&pass, {0, 0, 0}};
+        workers[i] = (Worker){&pass, {0, 0, 0}, 0};
     AdaptiveSettings rule = goal->rule;
     if (goal->target_error > 0.0)
         rule.threshold = goal->target_error * goal->target_error;
@@ -133,8 +134,10 @@ int adaptive_renderer_run(const Scene *scene, const RenderSettings *settings,
     r.cpu_seconds = stats_cpu_now() - cpu_start;
     if (settings->progress && isatty(STDERR_FILENO))
         fprintf(stderr, "\r%*s\r", 79, "");
-    for (int i = 0; i < r.render.threads; i++)
+    for (int i = 0; i < r.render.threads; i++) {
         ray_counts_add(&r.render.rays, workers[i].rays);
+        r.render.nonfinite += workers[i].nonfinite;
+    }
     r.render.interrupted = render_interrupted();
     finish(pixels, goal->rule.rule, errors, &r);
     status = 0;

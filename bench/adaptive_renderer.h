@@ -23,7 +23,8 @@ typedef struct {
 } AdaptiveGoal;
 
 typedef struct {
-    RenderResult render;       /* the kept image; time (wall), rays, samples, threads */
+    RenderResult render;       /* the kept image; time (wall), rays, samples (and
+                                  those dropped), threads */
     Image samples;             /* grey: each pixel's samples */
     Image error;               /* grey: each pixel's estimated relative RMSE */
     double estimated_rel_rmse; /* of the image, when the passes ended */

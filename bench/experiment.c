@@ -185,10 +185,14 @@ void experiment_render(const Scene *scene, const RenderSettings *settings, Estim
     if (render(scene, settings, estimate, estimator_settings, result) != 0)
         cli_fail(1, "out of memory rendering %d x %d", settings->image.width,
                  settings->image.height);
+    experiment_report_dropped(settings->label, result);
+}
+
+void experiment_report_dropped(const char *label, const RenderResult *result)
+{
     if (result->nonfinite > 0)
-        fprintf(stderr, "%s: %s: dropped %llu non-finite samples of %llu\n", cli_program,
-                settings->label, (unsigned long long)result->nonfinite,
-                (unsigned long long)result->samples);
+        fprintf(stderr, "%s: %s: dropped %llu non-finite samples of %llu\n", cli_program, label,
+                (unsigned long long)result->nonfinite, (unsigned long long)result->samples);
 }
 
 void experiment_render_serial(const Scene *scene, const RenderSettings *settings,

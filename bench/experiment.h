@@ -70,6 +70,9 @@ RenderSettings experiment_render_settings(const Options *options, const Scene *s
 void experiment_render(const Scene *scene, const RenderSettings *settings, Estimator estimate,
                        const void *estimator_settings, RenderResult *result);
 
+/* On stderr, if any: "dropped N non-finite samples of M", naming the render by label. */
+void experiment_report_dropped(const char *label, const RenderResult *result);
+
 /* The same with the lesson's own loop (render_serial, renderer.h), on one thread. */
 void experiment_render_serial(const Scene *scene, const RenderSettings *settings,
                               Estimator estimate, const void *estimator_settings,

@@ -37,13 +37,22 @@ int adaptive_samples_to_add(const AdaptiveSettings *settings, int samples, doubl
     return settings->pass_samples < left ? settings->pass_samples : left;
 }
 
-/* The mean of quarters q and q + 2 (a half-image: A for q = 0, B for q = 1). */
-static Vec3 half_mean(const AdaptivePixel *pixel, int q)
+/* The finite samples of quarter q: those s < samples with s mod 4 = q, less the dropped. */
+static int quarter_finite(const AdaptivePixel *pixel, int q)
 {
-    if (pixel->samples == 0)
-        return vec3(0, 0, 0);
-    return vec3_scale(vec3_add(pixel->sum[q], pixel->sum[q + 2]), 2.0 / pixel->samples);
+    return (pixel->samples + 3 - q) / 4 - pixel->dropped[q];
 }
+
+/* The mean of the finite samples of quarters q and q + 2 (a half-image: A for q = 0, B for
+ * q = 1), or of quarter q alone; 0 without any. */
+static Vec3 quarters_mean(const AdaptivePixel *pixel, int q, int both)
+{
+    int n = quarter_finite(pixel, q) + (both ? quarter_finite(pixel, q + 2) : 0);
+    Vec3 sum = both ? vec3_add(pixel->sum[q], pixel->sum[q + 2]) : pixel->sum[q];
+    return n > 0 ? vec3_scale(sum, 1.0 / n) : vec3(0, 0, 0);
+}
+
+static Vec3 half_mean(const AdaptivePixel *pixel, int q) { return quarters_mean(pixel, q, 1); }
 
 Vec3 adaptive_pixel_value(const AdaptivePixel *pixel, AdaptiveRule rule)
 {
@@ -63,9 +72,8 @@ static void decision_halves(const AdaptivePixel *pixel, AdaptiveRule rule, Vec3 
         *second = half_mean(pixel, 1);
         return;
     }
-    double quarter = pixel->samples / 4;
-    *first = quarter > 0 ? vec3_scale(pixel->sum[0], 1.0 / quarter) : vec3(0, 0, 0);
-    *second = quarter > 0 ? vec3_scale(pixel->sum[2], 1.0 / quarter) : vec3(0, 0, 0);
+    *first = quarters_mean(pixel, 0, 0);
+    *second = quarters_mean(pixel, 2, 0);
 }
 
 long adaptive_plan(const AdaptiveSettings *settings, const AdaptivePixel *pixels, int width,
@@ -98,10 +106,12 @@ long adaptive_plan(const AdaptiveSettings *settings, const AdaptivePixel *pixels
     return active;
 }
 
-void adaptive_sample_rows(const Scene *scene, const ImageSettings *image, Estimator estimate,
-                          const void *estimator_settings, AdaptivePixel *pixels,
-                          const int *to_add, int first_row, int end_row, RayCounts *counts)
+uint64_t adaptive_sample_rows(const Scene *scene, const ImageSettings *image,
+                              Estimator estimate, const void *estimator_settings,
+                              AdaptivePixel *pixels, const int *to_add, int first_row,
+                              int end_row, RayCounts *counts)
 {
+    uint64_t dropped = 0;
     ImageSettings quarters[4];
     for (int q = 0; q < 4; q++) {
         quarters[q] = *image;
@@ -114,10 +124,16 @@ void adaptive_sample_rows(const Scene *scene, const ImageSettings *image, Estima
             for (int s = pixel->samples; s < end; s++) {
                 Vec3 x = render_sample(scene, &quarters[s % 4], col, row, s / 4, estimate,
                                        estimator_settings, counts);
+                if (!vec3_is_finite(x)) {
+                    pixel->dropped[s % 4]++;
+                    dropped++;
+                    continue;
+                }
                 pixel->sum[s % 4] = vec3_add(pixel->sum[s % 4], x);
             }
             pixel->samples = end;
         }
+    return dropped;
 }
 
 int adaptive_render(const Scene *scene, const ImageSettings *image, Estimator estimate,

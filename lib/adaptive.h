@@ -6,7 +6,8 @@
  * pooled over a 3 x 3 window against heavy tails and divided by value^2 + 0.01 as measure.h's
  * relative MSE. Passes add samples where it is above a threshold. Deciding from the samples
  * that are averaged biases the image (ADAPTIVE_BIASED); deciding from quarters 0 and 2 and
- * keeping B, which the decision never saw, does not (ADAPTIVE_UNBIASED). docs/chapter10.md.
+ * keeping B, which the decision never saw, does not (ADAPTIVE_UNBIASED). Means are over the
+ * finite samples. docs/chapter10.md.
  */
 #ifndef ADAPTIVE_H
 #define ADAPTIVE_H
@@ -19,8 +20,9 @@ typedef enum {
 } AdaptiveRule;
 
 typedef struct {
-    Vec3 sum[4]; /* of the samples s with s mod 4 = q */
-    int samples; /* a multiple of 4 */
+    Vec3 sum[4];    /* of the finite samples s with s mod 4 = q */
+    int samples;    /* taken, finite or not: a multiple of 4 */
+    int dropped[4]; /* of quarter q's, NaN or infinite, left out of its sum */
 } AdaptivePixel;
 
 typedef struct {
@@ -51,10 +53,12 @@ Vec3 adaptive_pixel_value(const AdaptivePixel *pixel, AdaptiveRule rule);
 long adaptive_plan(const AdaptiveSettings *settings, const AdaptivePixel *pixels, int width,
                    int height, double *estimate, int *to_add);
 
-/* Take to_add[p] more samples of each pixel p of rows first_row .. end_row - 1. */
-void adaptive_sample_rows(const Scene *scene, const ImageSettings *image, Estimator estimate,
-                          const void *estimator_settings, AdaptivePixel *pixels,
-                          const int *to_add, int first_row, int end_row, RayCounts *counts);
+/* Take to_add[p] more samples of each pixel p of rows first_row .. end_row - 1. A NaN or
+ * infinite sample is dropped, as the uniform renderer drops it. Returns how many were. */
+uint64_t adaptive_sample_rows(const Scene *scene, const ImageSettings *image,
+                              Estimator estimate, const void *estimator_settings,
+                              AdaptivePixel *pixels, const int *to_add, int first_row,
+                              int end_row, RayCounts *counts);
 
 /* The whole loop on this thread, from pixels all zero: plan, sample, until no pixel gets
  * samples; estimate[] is the last plan's. Returns 0, or -1 when memory runs out. */

@@ -13,9 +13,12 @@
  *    a pixel whose first samples saw no light, does not, and its bias is printed.
  * 3. The rule stops: never below the minimum, never beyond the maximum, nothing more once
  *    a pixel is at or below the threshold; a noiseless image takes the minimum only.
+ * 4. Non-finite samples: an estimator returning NaN or infinity for a fifth of its samples,
+ *    else 0.5: every pixel's value and estimate stay finite, the values exactly 0.5 (the
+ *    mean of the finite samples), and the count dropped is the count returned.
  * Planted bugs they reject: the estimate without the factor 1/4 of ((A - B) / 2)^2 (1: 4 x
  * the true error); the unbiased rule keeping A, the half it decides from (2: disagrees);
- * the rule without its maximum (3).
+ * the rule without its maximum (3); the sample kept whatever it is (4: NaN pixels).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -114,7 +117,7 @@ static Agreement agreement_over_seeds(AdaptiveRule rule, double *bias, double *b
     for (int p = 0; p < PIXELS; p++)
         for (int seed = 0; seed < SEEDS; seed++) {
             ImageSettings image = {1, 1, 0, PIXEL_RANDOM, (uint64_t)(p * SEEDS + seed)};
-            AdaptivePixel pixel = {{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, 0};
+            AdaptivePixel pixel = {0};
             double estimate;
             RayCounts counts = {0, 0, 0};
             assert_int_equal(adaptive_render(&scene, &image, heavy_tail, &tail, &settings,
@@ -208,12 +211,65 @@ static void test_rule_stops(void **state)
     scene_free(&scene);
 }
 
+typedef struct {
+    long *nonfinite_returned; /* counts what it returns that is not finite */
+} Spoiler;
+
+/* An Estimator: NaN with probability 0.1, +infinity with 0.1, else 0.5. */
+static Vec3 spoiled(const Scene *scene, Ray ray, Rng *rng, const void *settings,
+                    RayCounts *counts)
+{
+    const Spoiler *spoiler = settings;
+    double u = rng_uniform(rng), x = u < 0.1 ? NAN : u < 0.2 ? INFINITY : 0.5;
+    *spoiler->nonfinite_returned += !isfinite(x);
+    return vec3(x, x, x);
+}
+
+static void test_nonfinite_samples_are_dropped_and_counted(void **state)
+{
+    enum {
+        SIDE = 8,
+        SAMPLES = 64
+    };
+    Scene scene = load_room();
+    long returned = 0;
+    Spoiler spoiler = {&returned};
+    ImageSettings image = {SIDE, SIDE, 0, PIXEL_RANDOM, 5};
+    AdaptivePixel pixels[SIDE * SIDE] = {0};
+    int to_add[SIDE * SIDE];
+    double estimate[SIDE * SIDE];
+    for (int p = 0; p < SIDE * SIDE; p++)
+        to_add[p] = SAMPLES;
+    RayCounts counts = {0, 0, 0};
+    uint64_t dropped = adaptive_sample_rows(&scene, &image, spoiled, &spoiler, pixels, to_add,
+                                            0, SIDE, &counts);
+    assert_true(returned > SIDE * SIDE * SAMPLES / 10); /* the test does spoil samples */
+    assert_int_equal(dropped, returned);
+    long in_pixels = 0;
+    for (int p = 0; p < SIDE * SIDE; p++)
+        for (int q = 0; q < 4; q++)
+            in_pixels += pixels[p].dropped[q];
+    assert_int_equal(in_pixels, returned);
+    for (int rule = ADAPTIVE_BIASED; rule <= ADAPTIVE_UNBIASED; rule++) {
+        AdaptiveSettings settings = {rule, 4, SAMPLES, 4, 0.0};
+        assert_true(adaptive_plan(&settings, pixels, SIDE, SIDE, estimate, to_add) >= 0);
+        for (int p = 0; p < SIDE * SIDE; p++) {
+            Vec3 value = adaptive_pixel_value(&pixels[p], rule);
+            assert_true(vec3_is_finite(value));
+            assert_true(value.x == 0.5 && value.y == 0.5 && value.z == 0.5);
+            assert_true(isfinite(estimate[p]) && estimate[p] == 0.0);
+        }
+    }
+    scene_free(&scene);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_estimate_matches_the_true_error),
         cmocka_unit_test(test_unbiased_rule_agrees_and_biased_rule_does_not),
         cmocka_unit_test(test_rule_stops),
+        cmocka_unit_test(test_nonfinite_samples_are_dropped_and_counted),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
