@@ -1062,11 +1062,14 @@ static int adaptive_buffers(Lab *lab)
     return 0;
 }
 
-/* Pixel p from or into the page's arrays: 12 sums (quarter q's r, g, b at 3q) and a count. */
+/* Pixel p from or into the page's arrays: LAB_PIXEL_STATE numbers (quarter q's sums of r, g,
+ * b at 3q, its dropped samples at 12 + q) and a count. */
 static void pixel_in(AdaptivePixel *pixel, const double *sums, int samples)
 {
-    for (int q = 0; q < 4; q++)
+    for (int q = 0; q < 4; q++) {
         pixel->sum[q] = vec3(sums[3 * q], sums[3 * q + 1], sums[3 * q + 2]);
+        pixel->dropped[q] = (int)sums[12 + q];
+    }
     pixel->samples = samples;
 }
 
@@ -1076,6 +1079,7 @@ static void pixel_out(const AdaptivePixel *pixel, double *sums)
         sums[3 * q] = pixel->sum[q].x;
         sums[3 * q + 1] = pixel->sum[q].y;
         sums[3 * q + 2] = pixel->sum[q].z;
+        sums[12 + q] = pixel->dropped[q];
     }
 }
 
@@ -1088,7 +1092,7 @@ long lab_adaptive_plan(Lab *lab, int pass, const double *sums, const int *sample
     if (!lab->pixels && adaptive_buffers(lab) != 0)
         return -1;
     for (long p = 0; p < count; p++)
-        pixel_in(&lab->pixels[p], sums + 12 * p, samples[p]);
+        pixel_in(&lab->pixels[p], sums + LAB_PIXEL_STATE * p, samples[p]);
     AdaptiveSettings rule = adaptive_settings(&lab->settings);
     long active = adaptive_plan(&rule, lab->pixels, lab->width, lab->height, estimate, to_add);
     if (active < 0)
@@ -1115,7 +1119,7 @@ int lab_adaptive_band(Lab *lab, int row0, int rows, double *sums, int *samples,
         return -1;
     long first = (long)row0 * lab->width, count = (long)rows * lab->width;
     for (long i = 0; i < count; i++) {
-        pixel_in(&lab->pixels[first + i], sums + 12 * i, samples[i]);
+        pixel_in(&lab->pixels[first + i], sums + LAB_PIXEL_STATE * i, samples[i]);
         lab->to_add[first + i] = to_add[i];
     }
     int pass;
@@ -1126,7 +1130,7 @@ int lab_adaptive_band(Lab *lab, int row0, int rows, double *sums, int *samples,
                          lab->pixels, lab->to_add, row0, row0 + rows, &counts);
     for (long i = 0; i < count; i++) {
         const AdaptivePixel *pixel = &lab->pixels[first + i];
-        pixel_out(pixel, sums + 12 * i);
+        pixel_out(pixel, sums + LAB_PIXEL_STATE * i);
         samples[i] = pixel->samples;
         Vec3 value = adaptive_pixel_value(pixel, lab->settings.rule);
         values[3 * i] = value.x;

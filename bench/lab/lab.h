@@ -76,9 +76,13 @@ int lab_steps(const Lab *lab);
  * the image). */
 int lab_render_band(Lab *lab, int step, int row0, int rows, double *out);
 
+/* The numbers the page keeps per pixel of chapter 10 besides its count (below). */
+#define LAB_PIXEL_STATE 16
+
 /* Chapter 10's pass `pass` (from 0) planned (adaptive_plan, with chapters/ch10_adaptive.c's
  * rule: the threshold the target's square): the pixels' state as the page keeps it, sums
- * (12 per pixel: quarter q's r, g, b at 12 p + 3 q) and samples, in; each pixel's estimated
+ * (LAB_PIXEL_STATE per pixel: quarter q's r, g, b at 16 p + 3 q, its dropped samples at
+ * 16 p + 12 + q) and samples, in; each pixel's estimated
  * relative MSE and the samples to add, out. Returns the pixels that get samples, 0 when the
  * render is done (none does, or after the first pass the image's estimated relative RMSE,
  * lab_estimated_error, is at most the target), or -1. */

@@ -93,7 +93,7 @@ static double render_all(Lab *lab, PixelSum *pixels, double *out)
 static double render_adaptive(Lab *lab, RenderResult *result)
 {
     long count = (long)lab_width(lab) * lab_height(lab);
-    double *sums = calloc((size_t)count, 12 * sizeof *sums),
+    double *sums = calloc((size_t)count, LAB_PIXEL_STATE * sizeof *sums),
            *estimate = malloc((size_t)count * sizeof *estimate),
            *values = malloc((size_t)count * 3 * sizeof *values), rays = 0.0;
     int *samples = calloc((size_t)count, sizeof *samples),
@@ -106,8 +106,8 @@ static double render_adaptive(Lab *lab, RenderResult *result)
         for (int row0 = 0; row0 < lab_height(lab); row0 += BAND) {
             int rows = lab_height(lab) - row0 < BAND ? lab_height(lab) - row0 : BAND;
             long first = (long)row0 * lab_width(lab);
-            if (lab_adaptive_band(lab, row0, rows, sums + 12 * first, samples + first,
-                                  to_add + first, values + 3 * first) != 0)
+            if (lab_adaptive_band(lab, row0, rows, sums + LAB_PIXEL_STATE * first,
+                                  samples + first, to_add + first, values + 3 * first) != 0)
                 fail(1, lab_error(lab));
             rays += lab_rays(lab, 0) + lab_rays(lab, 1) + lab_rays(lab, 2);
         }

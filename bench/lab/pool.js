@@ -237,7 +237,7 @@ class AdaptiveRender extends Render {
     constructor(setup, info, bandRows) {
         super(setup, info, bandRows || Math.max(1, Math.round(TASK_SAMPLES / (8 * info.width))));
         const pixels = this.width * this.height;
-        this.sums = new Float64Array(12 * pixels); /* quarter q's r, g, b at 12 p + 3 q */
+        this.sums = new Float64Array(16 * pixels); /* quarter q's r, g, b at 16 p + 3 q, dropped at 16 p + 12 + q */
         this.estimate = new Float64Array(pixels);
         this.toAdd = null;
         this.pass = 0;                             /* passes planned */
@@ -263,7 +263,7 @@ class AdaptiveRender extends Render {
         const row0 = this.bandsSent++ * this.bandRows, rows = Math.min(this.bandRows, this.height - row0);
         const from = row0 * this.width, to = from + rows * this.width;
         this.issued++;
-        const sums = this.sums.slice(12 * from, 12 * to), samples = Int32Array.from(this.count.subarray(from, to)),
+        const sums = this.sums.slice(16 * from, 16 * to), samples = Int32Array.from(this.count.subarray(from, to)),
               toAdd = this.toAdd.slice(from, to);
         return {type: "adaptive", row0: row0, rows: rows, sums: sums, samples: samples, toAdd: toAdd,
                 transfer: [sums.buffer, samples.buffer, toAdd.buffer]};
@@ -307,7 +307,7 @@ class AdaptiveRender extends Render {
     /* A band's new sums, samples and values, the errors' sums following each pixel. */
     take(result) {
         const first = result.row0 * this.width, reference = this.reference;
-        this.sums.set(result.sums, 12 * first);
+        this.sums.set(result.sums, 16 * first);
         for (let i = 0; i < result.rows * this.width; i++) {
             const p = first + i;
             if (this.count[p] === 0 && result.samples[i] > 0) this.empty--;

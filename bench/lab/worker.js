@@ -8,7 +8,7 @@
  *                      earlier result's, to fill again if it has the size)
  *   {type: "plan", job, setup?, pass, sums, samples}  chapter 10: plan a pass
  *   {type: "adaptive", job, setup?, row0, rows, sums, samples, toAdd}   chapter 10: sample
- *                      a band as planned (sums and samples: the band's, 12 and 1 per pixel)
+ *                      a band as planned (sums and samples: the band's, 16 and 1 per pixel)
  *   {type: "record", id, setup, col, row, first, count}   record paths (record.h)
  *   {type: "scene", id, setup}                      the scene's plan (lab_scene)
  *   {type: "fragment", id, fragment, scenes, cores} the address checked (lab_fragment)
@@ -148,7 +148,7 @@ function sampleBand(message) {
     const status = M._lab_adaptive_band(lab, message.row0, message.rows, sums, samples, toAdd, values);
     const seconds = (performance.now() - start) / 1000;
     const reply = {type: "adaptive", job: message.job, row0: message.row0, rows: message.rows,
-                   sums: arrayOut(Float64Array, sums, 12 * pixels), samples: arrayOut(Int32Array, samples, pixels),
+                   sums: arrayOut(Float64Array, sums, 16 * pixels), samples: arrayOut(Int32Array, samples, pixels),
                    values: arrayOut(Float64Array, values, 3 * pixels), rays: rays(), seconds: seconds};
     [sums, samples, toAdd, values].forEach(function (pointer) { M._free(pointer); });
     if (status !== 0)
