@@ -157,7 +157,8 @@ typedef struct {
 } Wrong;
 
 /* Where `quantity` (got[], right[] over every incidence) is wrong, in words: how many
- * incidences, from which angle to which at which indices, the ratio at the worst. */
+ * incidences, from which angle to which at which indices, the ratio at the worst; nothing
+ * where it is right everywhere. */
 static void fail_described(Grading *g, const char *quantity, const double *in,
                            const double *got, int points, const char *equation)
 {
@@ -180,6 +181,8 @@ static void fail_described(Grading *g, const char *quantity, const double *in,
         if (right > 1e-6)
             low = fmin(low, got[k] / right), high = fmax(high, got[k] / right);
     }
+    if (wrong == 0)
+        return;
     if (wrong == points && high - low <= 1e-9 * fabs(high)) {
         grading_fail(g,
                      "%s is %.6g times the right value at every incidence: a constant factor "
