@@ -365,7 +365,9 @@ int main(int argc, char **argv)
         "its own samples, more samples only where it is above the threshold, until the\n"
         "image's estimated relative RMSE reaches --target-error or --time runs out; against\n"
         "chapter 7's uniform samples and chapter 8's photon map at equal processor time, and\n"
-        "the time each takes to reach 5, 2, 1 and 0.5 %. --spp: the minimum samples per pixel.",
+        "the time each takes to reach 5, 2, 1 and 0.5 %. --spp: the minimum samples per pixel.\n"
+        "--quick's reference takes a quarter of the default's samples unless --reference-spp\n"
+        "is given.",
         FLAGS_COMMON | FLAG_SPP | FLAG_SHADOW_RAYS | FLAG_RR | FLAG_DEPTH | FLAG_FRESNEL |
             FLAG_REFERENCE_SPP | FLAG_TARGET_ERROR | FLAG_TIME,
         {.scene = "scenes/room.scene",
