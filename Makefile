@@ -562,8 +562,11 @@ lab-bench: lab $(LAB_NATIVE)-unwrapped
 	@sh .ci/install-deps chromium nodejs
 	node bench/lab/lab_bench.js $(LAB) $(BUILD)/lab-bench
 
+# The sanitizers make the programs two to three times slower: the time limit grows alike
+# (test_exercises grades every planted mistake in the sandbox, about 300 s so built).
+SANITIZE_TEST_TIMEOUT ?= 900
 sanitize:
-	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize \
+	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize TEST_TIMEOUT=$(SANITIZE_TEST_TIMEOUT) \
 	    CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
 	    LDFLAGS="-fsanitize=address,undefined" test
 
