@@ -12,6 +12,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "fresnel.h"
 #include "grading.h"
@@ -164,7 +165,9 @@ static void fail_described(Grading *g, const char *quantity, const double *in,
 {
     int wrong = 0, first = -1, last = -1, worst = -1;
     double largest = 0.0, low = INFINITY, high = -INFINITY;
-    int which = quantity[2] == 's' ? RIGHT_S : quantity[2] == 'p' ? RIGHT_P : -1;
+    int which = strcmp(quantity, "R_s") == 0   ? RIGHT_S
+                : strcmp(quantity, "R_p") == 0 ? RIGHT_P
+                                               : -1;
     for (int k = 0; k < points; k++) {
         const double *x = in + (long)k * ARITY;
         double right = which >= 0 ? x[which] : 0.5 * (x[RIGHT_S] + x[RIGHT_P]);
