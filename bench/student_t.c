@@ -12,7 +12,7 @@
 #define BETA_TINY 1e-300
 /* The power's integral over S: this many midpoints, over 12 of S's standard deviations
  * (about 1 / sqrt(2 nu)) and more on either side of 1. */
-#define POWER_STEPS 4096
+#define POWER_STEPS 1024
 
 /* The continued fraction's coefficient d_j of I_x(a, b):
  *     d_(2m+1) = -(a + m)(a + b + m) x / ((a + 2m)(a + 2m + 1)),
@@ -111,7 +111,7 @@ double student_t_detectable(double level, double power, int dof)
     double low = critical, high = critical + 1.0;
     while (student_t_power(high, critical, dof) < power)
         low = high, high += 1.0;
-    for (int i = 0; i < 100; i++) {
+    for (int i = 0; i < 60; i++) {
         double middle = 0.5 * (low + high);
         if (student_t_power(middle, critical, dof) < power)
             low = middle;
