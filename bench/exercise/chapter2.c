@@ -1,7 +1,8 @@
 /* chapter2.c (bench, chapter 2): chapter 2's exercises and their graders (grading.h).
  *
  * The cosine sampler by the warp test against its exact density (a ring between
- * heights a < b holds b^2 - a^2 of the samples, a sector 1 / 12); its pdf and the
+ * heights a < b holds b^2 - a^2 of the samples, a sector 1 / 12) and by its moments,
+ * each over replicates of stratified inputs (grading.h); its pdf and the
  * Lambert BRDF against their closed forms, the BRDF also through the white furnace
  * it would make (L = Le / (1 - pi f)); the path tracer by its image against the
  * solution's, pixel by pixel. Seeds from GRADE_SEED; the course's level (grading.h).
@@ -20,38 +21,56 @@
 #define LEVEL grading_level()
 #define RINGS 10
 #define SECTORS 12
-#define WARP_SAMPLES 1000000
+/* The cosine sampler's inputs: COSINE_REPLICATES replicates of a jittered grid of
+ * COSINE_GRID x COSINE_GRID (u1, u2) (grading_stratify), 1,048,576 samples. */
+#define COSINE_GRID 64
+#define COSINE_REPLICATES 256
+#define WARP_SAMPLES ((long)COSINE_REPLICATES * COSINE_GRID * COSINE_GRID)
 
-/* Sample i of the stream: its (u1, u2) and the direction the student's sampler makes of
- * them. */
-static Vec3 ask_cosine_sample(Grading *g, uint64_t stream, long i, double *u1, double *u2)
+/* Sample i of the stream: its (u1, u2), point i of a replicate of `strata`, and the
+ * direction the student's sampler makes of them. */
+static Vec3 ask_cosine_sample(Grading *g, uint64_t stream, const Strata *strata, long i,
+                              double *u1, double *u2)
 {
     Rng rng = rng_for_sample(grading_stream(g, stream), 1, (uint64_t)i);
-    rng_pair(&rng, u1, u2);
+    double u[2];
+    rng_pair(&rng, &u[0], &u[1]);
+    grading_stratify(strata, i, u);
+    *u1 = u[0], *u2 = u[1];
     return ASK_VEC3(g, hemisphere_sample_cosine(*u1, *u2));
 }
+
+/* The moments of the density cos(theta) / pi: E z = 2/3, E z^2 = 1/2, E x = E y = E x y
+ * = 0, E x^2 = E y^2 = 1/4. */
+#define MOMENTS 7
+static const char *const moment_names[MOMENTS] = {
+    "the mean cos(theta)", "the mean cos^2(theta)", "the mean x",  "the mean x^2",
+    "the mean y",          "the mean y^2",          "the mean x y"};
+static const double moment_exact[MOMENTS] = {2.0 / 3.0, 0.5, 0.0, 0.25, 0.0, 0.25, 0.0};
 
 static void grade_cosine_sample(Grading *g)
 {
     const WarpLabels labels = {"ring", "nearest the pole", "nearest the horizon",
                                "sector around the normal",
                                "below the surface, off the unit sphere or at NaN"};
-    Warp warp;
-    if (warp_new(g, &warp, RINGS, SECTORS, 4000, labels) != 0)
+    const Strata strata = grading_strata(2, (const int[]){COSINE_GRID, COSINE_GRID});
+    Warp warp; /* the picture shows the first replicate */
+    if (warp_new(g, &warp, RINGS, SECTORS, (int)strata.cells, labels) != 0)
         return;
-    /* the sums of z, z^2, x, x^2, y, y^2 and x y over the samples */
-    double sums[7] = {0}, squares[7] = {0};
+    static double moments[MOMENTS][COSINE_REPLICATES]; /* each replicate's means */
+    memset(moments, 0, sizeof moments);
     long identical = 0;
     for (long i = 0; i < WARP_SAMPLES; i++) {
         double u1, u2;
-        Vec3 w = ask_cosine_sample(g, 21, i, &u1, &u2);
+        Vec3 w = ask_cosine_sample(g, 21, &strata, i, &u1, &u2);
         warp_add_hemisphere(&warp, i, u1, u2, w);
         if (grading_probing(g))
             continue;
         identical += vec3_length(vec3_sub(w, hemisphere_sample_cosine(u1, u2))) <= 1e-12;
-        const double values[7] = {w.z, w.z * w.z, w.x, w.x * w.x, w.y, w.y * w.y, w.x * w.y};
-        for (int k = 0; k < 7; k++)
-            sums[k] += values[k], squares[k] += values[k] * values[k];
+        const double values[MOMENTS] = {w.z, w.z * w.z, w.x,      w.x * w.x,
+                                        w.y, w.y * w.y, w.x * w.y};
+        for (int k = 0; k < MOMENTS; k++)
+            moments[k][i / strata.cells] += values[k] / strata.cells;
     }
     const char *hint = "is cos(theta) = sqrt(1 - u1), sin(theta) = sqrt(u1) and phi = 2 pi u2 "
                        "(eq. 12, docs/chapter2.md)?";
@@ -59,34 +78,38 @@ static void grade_cosine_sample(Grading *g)
     if (!grading_probing(g))
         grading_note(g,
                      "%ld of %ld directions identical to the solution's from the same (u1, u2)",
-                     identical, (long)WARP_SAMPLES);
+                     identical, WARP_SAMPLES);
+    /* The inputs are stratified, so each cell's count varies less than a multinomial's (a
+     * sum of the strata's independent Bernoullis, sum p_i (1 - p_i) <= N p (1 - p)): the
+     * warp test is conservative, rejecting a right sampler less often than its level
+     * (chi^2 about 25 to 50 on 119 degrees of freedom), and a wrong one's excess stands
+     * out of less noise. */
     if (grading_warp(g, &warp, "the hemisphere seen from above", LEVEL, 1, hint) &&
-        !grading_probing(g)) {
-        /* Moments of the density cos(theta) / pi: E z = 2/3, E z^2 = 1/2, E x = E y = E x y
-         * = 0, E x^2 = E y^2 = 1/4. */
-        static const char *const names[7] = {
-            "the mean cos(theta)", "the mean cos^2(theta)", "the mean x",  "the mean x^2",
-            "the mean y",          "the mean y^2",          "the mean x y"};
-        static const double exact[7] = {2.0 / 3.0, 0.5, 0.0, 0.25, 0.0, 0.25, 0.0};
-        for (int k = 0; k < 7 && !g->failed; k++)
-            grading_mean_test(g, names[k], sums[k], squares[k], WARP_SAMPLES, exact[k], hint);
-    }
+        !grading_probing(g))
+        for (int k = 0; k < MOMENTS && !g->failed; k++)
+            grading_replicate_test(g, moment_names[k], moments[k], COSINE_REPLICATES,
+                                   moment_exact[k], hint);
     warp_free(&warp);
 }
 
 /* The pdf at the sampler's own directions (exercise 2.1's): cos(theta) / pi at each, and
  * the solid angle of the cap cos(theta) > 1/2, pi, as the mean of [cos(theta) > 1/2] /
- * pdf. */
-#define PDF_SAMPLES 200000
+ * pdf, over PDF_REPLICATES replicates of a jittered PDF_GRID x PDF_GRID grid of (u1, u2).
+ * The task's sampler maps the cap's rim onto a line between cells (u1 = 3/4), another
+ * valid one across cells, each adding noise: a grid finer than 2.1's. */
+#define PDF_GRID 96
+#define PDF_REPLICATES 64
+#define PDF_SAMPLES ((long)PDF_REPLICATES * PDF_GRID * PDF_GRID)
 static void grade_pdf_at_samples(Grading *g)
 {
-    double sum = 0.0, sum2 = 0.0;
+    const Strata strata = grading_strata(2, (const int[]){PDF_GRID, PDF_GRID});
+    double caps[PDF_REPLICATES] = {0}; /* each replicate's mean */
     long wrong = 0;
     Vec3 first = vec3(0, 0, 0);
     double first_pdf = 0.0;
     for (long i = 0; i < PDF_SAMPLES; i++) {
         double u1, u2;
-        Vec3 w = ask_cosine_sample(g, 23, i, &u1, &u2);
+        Vec3 w = ask_cosine_sample(g, 23, &strata, i, &u1, &u2);
         double pdf = ASK(g, hemisphere_pdf_cosine(w));
         if (grading_probing(g))
             continue;
@@ -94,8 +117,7 @@ static void grade_pdf_at_samples(Grading *g)
             if (!wrong++)
                 first = w, first_pdf = pdf;
         }
-        double term = w.z > 0.5 && pdf > 0.0 ? 1.0 / pdf : 0.0;
-        sum += term, sum2 += term * term;
+        caps[i / strata.cells] += (w.z > 0.5 && pdf > 0.0 ? 1.0 / pdf : 0.0) / strata.cells;
     }
     if (grading_probing(g))
         return;
@@ -103,15 +125,15 @@ static void grade_pdf_at_samples(Grading *g)
         grading_fail(g,
                      "at %ld of the %ld directions the sampler (exercise 2.1) draws, the pdf "
                      "is not cos(theta) / pi: %.6f at cos(theta) = %.4f, where %.6f is right",
-                     wrong, (long)PDF_SAMPLES, first_pdf, first.z, fmax(first.z, 0.0) / PI);
+                     wrong, PDF_SAMPLES, first_pdf, first.z, fmax(first.z, 0.0) / PI);
         return;
     }
-    grading_mean_test(g,
-                      "the solid angle of the cap cos(theta) > 1/2 from the sampler's "
-                      "directions, the mean of [cos(theta) > 1/2] / pdf",
-                      sum, sum2, PDF_SAMPLES, PI,
-                      "the pdf must be the density of the sampler's directions in solid "
-                      "angle, cos(theta) / pi");
+    grading_replicate_test(g,
+                           "the solid angle of the cap cos(theta) > 1/2 from the sampler's "
+                           "directions, the mean of [cos(theta) > 1/2] / pdf",
+                           caps, PDF_REPLICATES, PI,
+                           "the pdf must be the density of the sampler's directions in solid "
+                           "angle, cos(theta) / pi");
 }
 
 static void grade_cosine_pdf(Grading *g)
