@@ -240,20 +240,6 @@ int grading_replicate_test(Grading *g, const char *what, const double *replicate
                         what, mean, exact, off, t, replicates, hint);
 }
 
-int grading_mean_test(Grading *g, const char *what, double sum, double sum2, long count,
-                      double exact, const char *hint)
-{
-    double mean = sum / count, se = sqrt(fmax(0.0, sum2 / count - mean * mean) / (count - 1));
-    double z = se > 0.0 ? (mean - exact) / se : (mean == exact ? 0.0 : INFINITY);
-    grading_note(g, "%s: %.5f, exactly %.5f (z = %+.1f; a bias of %.2g detected at power %.2f)",
-                 what, mean, exact, z, grading_detectable(se), GRADING_POWER);
-    if (fabs(z) <= grading_z(grading_level()))
-        return 1;
-    return grading_fail(
-        g, "%s is %.5f where %.5f is exact (%+.2f%%, z = %+.1f over %ld samples): %s", what,
-        mean, exact, exact != 0.0 ? 100.0 * (mean / exact - 1.0) : 0.0, z, count, hint);
-}
-
 int grading_fail_known(Grading *g, const char *quantity, const WrongAnswer *known, int points)
 {
     return grading_fail(g, "your %s equals %s, at each of the %d inputs tried (to 1e-9): %s",

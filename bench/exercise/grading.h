@@ -137,12 +137,6 @@ int grading_seed_from_environment(uint64_t *seed, char *error, size_t size);
 /* The stream `stream` of random inputs under g's seed: `stream` itself at seed 0. */
 uint64_t grading_stream(const Grading *g, uint64_t stream);
 
-/* A z-test at grading_level() of the mean of `count` values (their sum and sum of squares)
- * against its exact value: a note with the detectable bias; on failure the verdict names
- * `what`, the relative difference and z, then `hint`. Returns 1 when it passes. */
-int grading_mean_test(Grading *g, const char *what, double sum, double sum2, long count,
-                      double exact, const char *hint);
-
 /* Randomized stratified inputs: the unit cube [0, 1)^dims (dims <= 3) cut into
  * divisions[0] x divisions[1] x ... cells, a replicate one uniform point in each. Any
  * function's mean over a replicate is an unbiased estimate of its mean over the cube,
