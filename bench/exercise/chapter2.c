@@ -1,7 +1,8 @@
 /* chapter2.c (bench, chapter 2): chapter 2's exercises and their graders (grading.h).
  *
  * The cosine sampler by the warp test against its exact density (a ring between
- * heights a < b holds b^2 - a^2 of the samples, a sector 1 / 12); its pdf and the
+ * heights a < b holds b^2 - a^2 of the samples, a sector 1 / 12) and by its moments,
+ * each over replicates of stratified inputs (grading.h); its pdf and the
  * Lambert BRDF against their closed forms, the BRDF also through the white furnace
  * it would make (L = Le / (1 - pi f)); the path tracer by its image against the
  * solution's, pixel by pixel. Seeds from GRADE_SEED; the course's level (grading.h).
@@ -20,38 +21,56 @@
 #define LEVEL grading_level()
 #define RINGS 10
 #define SECTORS 12
-#define WARP_SAMPLES 1000000
+/* The cosine sampler's inputs: COSINE_REPLICATES replicates of a jittered grid of
+ * COSINE_GRID x COSINE_GRID (u1, u2) (grading_stratify), 1,048,576 samples. */
+#define COSINE_GRID 64
+#define COSINE_REPLICATES 256
+#define WARP_SAMPLES ((long)COSINE_REPLICATES * COSINE_GRID * COSINE_GRID)
 
-/* Sample i of the stream: its (u1, u2) and the direction the student's sampler makes of
- * them. */
-static Vec3 ask_cosine_sample(Grading *g, uint64_t stream, long i, double *u1, double *u2)
+/* Sample i of the stream: its (u1, u2), point i of a replicate of `strata`, and the
+ * direction the student's sampler makes of them. */
+static Vec3 ask_cosine_sample(Grading *g, uint64_t stream, const Strata *strata, long i,
+                              double *u1, double *u2)
 {
     Rng rng = rng_for_sample(grading_stream(g, stream), 1, (uint64_t)i);
-    rng_pair(&rng, u1, u2);
+    double u[2];
+    rng_pair(&rng, &u[0], &u[1]);
+    grading_stratify(strata, i, u);
+    *u1 = u[0], *u2 = u[1];
     return ASK_VEC3(g, hemisphere_sample_cosine(*u1, *u2));
 }
+
+/* The moments of the density cos(theta) / pi: E z = 2/3, E z^2 = 1/2, E x = E y = E x y
+ * = 0, E x^2 = E y^2 = 1/4. */
+#define MOMENTS 7
+static const char *const moment_names[MOMENTS] = {
+    "the mean cos(theta)", "the mean cos^2(theta)", "the mean x",  "the mean x^2",
+    "the mean y",          "the mean y^2",          "the mean x y"};
+static const double moment_exact[MOMENTS] = {2.0 / 3.0, 0.5, 0.0, 0.25, 0.0, 0.25, 0.0};
 
 static void grade_cosine_sample(Grading *g)
 {
     const WarpLabels labels = {"ring", "nearest the pole", "nearest the horizon",
                                "sector around the normal",
                                "below the surface, off the unit sphere or at NaN"};
-    Warp warp;
-    if (warp_new(g, &warp, RINGS, SECTORS, 4000, labels) != 0)
+    const Strata strata = grading_strata(2, (const int[]){COSINE_GRID, COSINE_GRID});
+    Warp warp; /* the picture shows the first replicate */
+    if (warp_new(g, &warp, RINGS, SECTORS, (int)strata.cells, labels) != 0)
         return;
-    /* the sums of z, z^2, x, x^2, y, y^2 and x y over the samples */
-    double sums[7] = {0}, squares[7] = {0};
+    static double moments[MOMENTS][COSINE_REPLICATES]; /* each replicate's means */
+    memset(moments, 0, sizeof moments);
     long identical = 0;
     for (long i = 0; i < WARP_SAMPLES; i++) {
         double u1, u2;
-        Vec3 w = ask_cosine_sample(g, 21, i, &u1, &u2);
+        Vec3 w = ask_cosine_sample(g, 21, &strata, i, &u1, &u2);
         warp_add_hemisphere(&warp, i, u1, u2, w);
         if (grading_probing(g))
             continue;
         identical += vec3_length(vec3_sub(w, hemisphere_sample_cosine(u1, u2))) <= 1e-12;
-        const double values[7] = {w.z, w.z * w.z, w.x, w.x * w.x, w.y, w.y * w.y, w.x * w.y};
-        for (int k = 0; k < 7; k++)
-            sums[k] += values[k], squares[k] += values[k] * values[k];
+        const double values[MOMENTS] = {w.z, w.z * w.z, w.x,      w.x * w.x,
+                                        w.y, w.y * w.y, w.x * w.y};
+        for (int k = 0; k < MOMENTS; k++)
+            moments[k][i / strata.cells] += values[k] / strata.cells;
     }
     const char *hint = "is cos(theta) = sqrt(1 - u1), sin(theta) = sqrt(u1) and phi = 2 pi u2 "
                        "(eq. 12, docs/chapter2.md)?";
@@ -59,34 +78,38 @@ static void grade_cosine_sample(Grading *g)
     if (!grading_probing(g))
         grading_note(g,
                      "%ld of %ld directions identical to the solution's from the same (u1, u2)",
-                     identical, (long)WARP_SAMPLES);
+                     identical, WARP_SAMPLES);
+    /* The inputs are stratified, so each cell's count varies less than a multinomial's (a
+     * sum of the strata's independent Bernoullis, sum p_i (1 - p_i) <= N p (1 - p)): the
+     * warp test is conservative, rejecting a right sampler less often than its level
+     * (chi^2 about 25 to 50 on 119 degrees of freedom), and a wrong one's excess stands
+     * out of less noise. */
     if (grading_warp(g, &warp, "the hemisphere seen from above", LEVEL, 1, hint) &&
-        !grading_probing(g)) {
-        /* Moments of the density cos(theta) / pi: E z = 2/3, E z^2 = 1/2, E x = E y = E x y
-         * = 0, E x^2 = E y^2 = 1/4. */
-        static const char *const names[7] = {
-            "the mean cos(theta)", "the mean cos^2(theta)", "the mean x",  "the mean x^2",
-            "the mean y",          "the mean y^2",          "the mean x y"};
-        static const double exact[7] = {2.0 / 3.0, 0.5, 0.0, 0.25, 0.0, 0.25, 0.0};
-        for (int k = 0; k < 7 && !g->failed; k++)
-            grading_mean_test(g, names[k], sums[k], squares[k], WARP_SAMPLES, exact[k], hint);
-    }
+        !grading_probing(g))
+        for (int k = 0; k < MOMENTS && !g->failed; k++)
+            grading_replicate_test(g, moment_names[k], moments[k], COSINE_REPLICATES,
+                                   moment_exact[k], hint);
     warp_free(&warp);
 }
 
 /* The pdf at the sampler's own directions (exercise 2.1's): cos(theta) / pi at each, and
  * the solid angle of the cap cos(theta) > 1/2, pi, as the mean of [cos(theta) > 1/2] /
- * pdf. */
-#define PDF_SAMPLES 200000
+ * pdf, over PDF_REPLICATES replicates of a jittered PDF_GRID x PDF_GRID grid of (u1, u2).
+ * The task's sampler maps the cap's rim onto a line between cells (u1 = 3/4), another
+ * valid one across cells, each adding noise: a grid finer than 2.1's. */
+#define PDF_GRID 96
+#define PDF_REPLICATES 64
+#define PDF_SAMPLES ((long)PDF_REPLICATES * PDF_GRID * PDF_GRID)
 static void grade_pdf_at_samples(Grading *g)
 {
-    double sum = 0.0, sum2 = 0.0;
+    const Strata strata = grading_strata(2, (const int[]){PDF_GRID, PDF_GRID});
+    double caps[PDF_REPLICATES] = {0}; /* each replicate's mean */
     long wrong = 0;
     Vec3 first = vec3(0, 0, 0);
     double first_pdf = 0.0;
     for (long i = 0; i < PDF_SAMPLES; i++) {
         double u1, u2;
-        Vec3 w = ask_cosine_sample(g, 23, i, &u1, &u2);
+        Vec3 w = ask_cosine_sample(g, 23, &strata, i, &u1, &u2);
         double pdf = ASK(g, hemisphere_pdf_cosine(w));
         if (grading_probing(g))
             continue;
@@ -94,8 +117,7 @@ static void grade_pdf_at_samples(Grading *g)
             if (!wrong++)
                 first = w, first_pdf = pdf;
         }
-        double term = w.z > 0.5 && pdf > 0.0 ? 1.0 / pdf : 0.0;
-        sum += term, sum2 += term * term;
+        caps[i / strata.cells] += (w.z > 0.5 && pdf > 0.0 ? 1.0 / pdf : 0.0) / strata.cells;
     }
     if (grading_probing(g))
         return;
@@ -103,15 +125,15 @@ static void grade_pdf_at_samples(Grading *g)
         grading_fail(g,
                      "at %ld of the %ld directions the sampler (exercise 2.1) draws, the pdf "
                      "is not cos(theta) / pi: %.6f at cos(theta) = %.4f, where %.6f is right",
-                     wrong, (long)PDF_SAMPLES, first_pdf, first.z, fmax(first.z, 0.0) / PI);
+                     wrong, PDF_SAMPLES, first_pdf, first.z, fmax(first.z, 0.0) / PI);
         return;
     }
-    grading_mean_test(g,
-                      "the solid angle of the cap cos(theta) > 1/2 from the sampler's "
-                      "directions, the mean of [cos(theta) > 1/2] / pdf",
-                      sum, sum2, PDF_SAMPLES, PI,
-                      "the pdf must be the density of the sampler's directions in solid "
-                      "angle, cos(theta) / pi");
+    grading_replicate_test(g,
+                           "the solid angle of the cap cos(theta) > 1/2 from the sampler's "
+                           "directions, the mean of [cos(theta) > 1/2] / pdf",
+                           caps, PDF_REPLICATES, PI,
+                           "the pdf must be the density of the sampler's directions in solid "
+                           "angle, cos(theta) / pi");
 }
 
 static void grade_cosine_pdf(Grading *g)
@@ -372,17 +394,22 @@ static void grade_path(Grading *g)
         "bounce's weight (docs/chapter2.md)?");
 }
 
-/* The sub-pixel counts tried: squares, rows of unequal length, primes, 1. */
+/* The sub-pixel counts tried: squares, rows of unequal length, primes, 1; 179 cells. */
 static const int subpixel_counts[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 12, 16, 17, 25, 64};
 #define SUBPIXEL_COUNTS (int)(sizeof subpixel_counts / sizeof subpixel_counts[0])
-#define PIXEL_TRIALS 48
+#define SUBPIXEL_CELLS 179
+/* Each cell's trials: a replicate, their generators' first two numbers stratified on a
+ * JITTER_GRID x JITTER_GRID grid (cell_generators). */
+#define JITTER_GRID 16
+#define PIXEL_TRIALS (JITTER_GRID * JITTER_GRID)
 #define JITTER_CELLS 4
 
 typedef struct {
     long tried, identical, outside, other_cell, neighbour, swapped, draws_wrong;
     int n, s, cell; /* the first misplaced sample: sample s of n in cell `cell` */
     double u, v;
-    double jitter[JITTER_CELLS * JITTER_CELLS + 1], sums[2], squares[2];
+    double jitter[JITTER_CELLS * JITTER_CELLS + 1];
+    double means[2][SUBPIXEL_CELLS]; /* each cell's mean ju and jv, a replicate's */
 } PixelTally;
 
 /* Which cell of n holds (u, v), or -1. */
@@ -397,8 +424,10 @@ static int cell_of(double u, double v, int n)
     return -1;
 }
 
-static void tally_subpixel(PixelTally *t, int n, int s, Rng rng, double u, double v,
-                           double next)
+/* Sample s of n, cell `replicate` of those tried, drawn from rng, at (u, v); the
+ * generator's next number after it was `next`. */
+static void tally_subpixel(PixelTally *t, int replicate, int n, int s, Rng rng, double u,
+                           double v, double next)
 {
     double u0, v0, w, h, right_u, right_v;
     pixel_stratum_bounds(s, n, &u0, &v0, &w, &h);
@@ -423,21 +452,43 @@ static void tally_subpixel(PixelTally *t, int n, int s, Rng rng, double u, doubl
     int cu = (int)(ju * JITTER_CELLS), cv = (int)(jv * JITTER_CELLS);
     t->jitter[(cv < JITTER_CELLS ? cv : JITTER_CELLS - 1) * JITTER_CELLS +
               (cu < JITTER_CELLS ? cu : JITTER_CELLS - 1)] += 1.0;
-    t->sums[0] += ju, t->squares[0] += ju * ju;
-    t->sums[1] += jv, t->squares[1] += jv * jv;
+    t->means[0][replicate] += ju / PIXEL_TRIALS;
+    t->means[1][replicate] += jv / PIXEL_TRIALS;
+}
+
+/* The generators of the trials of one cell, `cell` of the cells tried: for each of the
+ * JITTER_GRID x JITTER_GRID squares of [0, 1)^2, the first generator of the cell's
+ * stream whose first two numbers fall in it. Those two numbers, uniform within their
+ * square and independent, are a replicate of stratified inputs (grading.h) for any
+ * jitter made of them: its mean over the trials is unbiased and far less noisy than
+ * over as many independent generators. */
+static void cell_generators(Grading *g, int cell, Rng *trials)
+{
+    char taken[PIXEL_TRIALS] = {0};
+    for (int j = 0, filled = 0; filled < PIXEL_TRIALS; j++) {
+        Rng rng = rng_for_sample(grading_stream(g, 26), (uint64_t)cell, (uint64_t)j);
+        Rng look = rng;
+        int row = (int)(rng_uniform(&look) * JITTER_GRID);
+        int square = row * JITTER_GRID + (int)(rng_uniform(&look) * JITTER_GRID);
+        if (!taken[square]) {
+            taken[square] = 1;
+            trials[square] = rng;
+            filled++;
+        }
+    }
 }
 
 static void grade_pixel_position(Grading *g)
 {
     static PixelTally t;
     memset(&t, 0, sizeof t);
-    for (int c = 0; c < SUBPIXEL_COUNTS; c++) {
+    static Rng trials[PIXEL_TRIALS];
+    for (int c = 0, cell = 0; c < SUBPIXEL_COUNTS; c++) {
         int n = subpixel_counts[c];
-        for (int s = 0; s < n; s++)
+        for (int s = 0; s < n; s++, cell++) {
+            cell_generators(g, cell, trials);
             for (int k = 0; k < PIXEL_TRIALS; k++) {
-                Rng rng = rng_for_sample(grading_stream(g, 26), (uint64_t)n,
-                                         (uint64_t)(s * PIXEL_TRIALS + k));
-                Rng mine = rng;
+                Rng mine = trials[k];
                 double u = 0.0, v = 0.0;
                 if (grading_probing(g))
                     pixel_position(PIXEL_SUBPIXELS, s, n, &mine, &u, &v);
@@ -447,8 +498,9 @@ static void grade_pixel_position(Grading *g)
                 if (grading_not_finite(g, u + v, "u + v"))
                     return;
                 if (!grading_probing(g))
-                    tally_subpixel(&t, n, s, rng, u, v, next);
+                    tally_subpixel(&t, cell, n, s, trials[k], u, v, next);
             }
+        }
     }
     /* The other two ways: a uniform point (u, then v) and the centre. */
     long random_wrong = 0, centre_wrong = 0;
@@ -519,11 +571,12 @@ static void grade_pixel_position(Grading *g)
         warp.expected[c] = (double)t.tried / (JITTER_CELLS * JITTER_CELLS);
     }
     const char *hint = "the jitter is uniform within the cell: u0 + ju w, v0 + jv h";
+    /* conservative on stratified inputs (grade_cosine_sample) */
     if (grading_warp(g, &warp, "the jitter within the cells", LEVEL, 1, hint) &&
-        grading_mean_test(g, "the mean jitter across the cell", t.sums[0], t.squares[0],
-                          t.tried, 0.5, hint))
-        grading_mean_test(g, "the mean jitter up the cell", t.sums[1], t.squares[1], t.tried,
-                          0.5, hint);
+        grading_replicate_test(g, "the mean jitter across the cell", t.means[0], SUBPIXEL_CELLS,
+                               0.5, hint))
+        grading_replicate_test(g, "the mean jitter up the cell", t.means[1], SUBPIXEL_CELLS,
+                               0.5, hint);
     warp_free(&warp);
 }
 

@@ -13,6 +13,7 @@
 #include "figure.h"
 #include "font.h"
 #include "scene_file.h"
+#include "student_t.h"
 
 #define PANEL 200
 
@@ -169,18 +170,74 @@ const WrongAnswer *grading_known_wrong(const WrongAnswer *list, int count, const
     return NULL;
 }
 
-int grading_mean_test(Grading *g, const char *what, double sum, double sum2, long count,
-                      double exact, const char *hint)
+Strata grading_strata(int dims, const int *divisions)
 {
-    double mean = sum / count, se = sqrt(fmax(0.0, sum2 / count - mean * mean) / (count - 1));
-    double z = se > 0.0 ? (mean - exact) / se : (mean == exact ? 0.0 : INFINITY);
-    grading_note(g, "%s: %.5f, exactly %.5f (z = %+.1f; a bias of %.2g detected at power %.2f)",
-                 what, mean, exact, z, grading_detectable(se), GRADING_POWER);
-    if (fabs(z) <= grading_z(grading_level()))
+    Strata strata = {.dims = dims, .cells = 1};
+    for (int k = 0; k < dims; k++) {
+        strata.divisions[k] = divisions[k];
+        strata.cells *= divisions[k];
+    }
+    while ((1L << strata.bits) < strata.cells)
+        strata.bits++;
+    return strata;
+}
+
+/* A bijection of [0, 2^bits) that scatters neighbours: odd multipliers and xorshifts,
+ * each invertible modulo 2^bits. */
+static uint64_t scatter(uint64_t x, int bits)
+{
+    uint64_t mask = (1ULL << bits) - 1;
+    int shift = bits / 2 + 1;
+    x = (x * 0x9e3779b97f4a7c15ULL) & mask;
+    x ^= x >> shift;
+    x = (x * 0xbf58476d1ce4e5b9ULL) & mask;
+    return x ^ (x >> shift);
+}
+
+void grading_stratify(const Strata *strata, long index, double *u)
+{
+    /* scattered until it falls among the cells: a bijection of them (cycle walking) */
+    uint64_t cell = (uint64_t)(index % strata->cells);
+    do
+        cell = scatter(cell, strata->bits);
+    while (cell >= (uint64_t)strata->cells);
+    for (int k = strata->dims - 1; k >= 0; k--) {
+        int n = strata->divisions[k];
+        u[k] = ((double)(cell % n) + u[k]) / n;
+        cell /= n;
+    }
+}
+
+int grading_replicate_test(Grading *g, const char *what, const double *replicate_means,
+                           int replicates, double exact, const char *hint)
+{
+    double mean = 0.0, spread = 0.0, largest = fabs(exact);
+    for (int r = 0; r < replicates; r++) {
+        mean += replicate_means[r] / replicates;
+        largest = fmax(largest, fabs(replicate_means[r]));
+    }
+    for (int r = 0; r < replicates; r++)
+        spread += (replicate_means[r] - mean) * (replicate_means[r] - mean);
+    double se = sqrt(spread / (replicates - 1) / replicates);
+    double difference = fabs(mean - exact) <= 1e-12 * largest ? 0.0 : mean - exact;
+    double t = se > 0.0 ? difference / se : (difference == 0.0 ? 0.0 : INFINITY);
+    double detectable =
+        student_t_detectable(grading_level(), GRADING_POWER, replicates - 1) * se;
+    grading_note(g,
+                 "%s: %.6f, exactly %.6f (t = %+.1f over %d replicates; a bias of %.2g "
+                 "detected at power %.2f)",
+                 what, mean, exact, t, replicates, detectable, GRADING_POWER);
+    if (student_t_tail(t, replicates - 1) >= grading_level())
         return 1;
-    return grading_fail(
-        g, "%s is %.5f where %.5f is exact (%+.2f%%, z = %+.1f over %ld samples): %s", what,
-        mean, exact, exact != 0.0 ? 100.0 * (mean / exact - 1.0) : 0.0, z, count, hint);
+    char off[64];
+    if (exact != 0.0)
+        snprintf(off, sizeof off, "%+.2f%%", 100.0 * (mean / exact - 1.0));
+    else
+        snprintf(off, sizeof off, "%+.6f", mean);
+    return grading_fail(g,
+                        "%s is %.6f where %.6f is exact (%s, t = %+.1f over %d independent "
+                        "replicates, each the mean of a stratified grid of inputs): %s",
+                        what, mean, exact, off, t, replicates, hint);
 }
 
 int grading_fail_known(Grading *g, const char *quantity, const WrongAnswer *known, int points)

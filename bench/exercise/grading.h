@@ -6,7 +6,10 @@
  * closed form, a property every right answer has, or the solution's render) and says what
  * is wrong in a student's words, with the numbers behind it. A sampler is graded by the
  * warp test: Pearson's chi-square (chi_square.h) of its samples' histogram against the
- * exact density integrated over each cell, and a picture of both.
+ * exact density integrated over each cell, and a picture of both; and by the means of
+ * what it draws, each over independent replicates of stratified inputs, Student's t
+ * (student_t.h) of their spread: powerful where a valid method other than the task's
+ * gives other samples than the solution's from the same numbers.
  */
 #ifndef GRADING_H
 #define GRADING_H
@@ -134,11 +137,37 @@ int grading_seed_from_environment(uint64_t *seed, char *error, size_t size);
 /* The stream `stream` of random inputs under g's seed: `stream` itself at seed 0. */
 uint64_t grading_stream(const Grading *g, uint64_t stream);
 
-/* A z-test at grading_level() of the mean of `count` values (their sum and sum of squares)
- * against its exact value: a note with the detectable bias; on failure the verdict names
- * `what`, the relative difference and z, then `hint`. Returns 1 when it passes. */
-int grading_mean_test(Grading *g, const char *what, double sum, double sum2, long count,
-                      double exact, const char *hint);
+/* Randomized stratified inputs: the unit cube [0, 1)^dims (dims <= 3) cut into
+ * divisions[0] x divisions[1] x ... cells, a replicate one uniform point in each. Any
+ * function's mean over a replicate is an unbiased estimate of its mean over the cube,
+ * and for a function that is smooth on most cells (a sampler's mapping, and what is
+ * measured of its samples) one far less noisy than as many independent points: the noise
+ * comes from within the cells alone, a discontinuity's from the cells it crosses. */
+typedef struct {
+    int dims, divisions[3];
+    long cells; /* a replicate's points */
+    int bits;   /* cells <= 2^bits (the order they are visited in) */
+} Strata;
+
+/* The strata of the cube [0, 1)^dims cut `divisions` times along each axis. */
+Strata grading_strata(int dims, const int *divisions);
+
+/* Point `index` (index mod cells) of a replicate, in u[dims]: given its jitter u (uniform
+ * in [0, 1)^dims), u[k] = (cell_k + u[k]) / divisions[k]. The cells are visited in a
+ * scrambled order (a fixed bijection), so that the first points of a replicate spread
+ * over the whole cube without a pattern (the warp pictures show them). */
+void grading_stratify(const Strata *strata, long index, double *u);
+
+/* A replicate test at grading_level() of `replicates` >= 2 independent, unbiased
+ * estimates of one quantity (each the mean over a replicate of stratified inputs): their
+ * mean against its exact value by Student's t with replicates - 1 degrees of freedom, the
+ * standard error estimated from their spread (student_t.h), so honest whatever the
+ * sampler does with the strata. A note with the detectable bias: the noncentral t's shift
+ * at power GRADING_POWER times the se (about 8.4 se at 64 replicates, 7.7 at 256); on
+ * failure the verdict names `what`, the difference and t, then `hint`. A difference
+ * within rounding (1e-12 of the values) passes. Returns 1 when it passes. */
+int grading_replicate_test(Grading *g, const char *what, const double *replicate_means,
+                           int replicates, double exact, const char *hint);
 
 /* A catalogue of known wrong answers of a closed form: what the code computes instead,
  * in words, what is right, and that wrong value at the grader's inputs. */

@@ -34,6 +34,28 @@ typedef struct {
     const char *misleading; /* a phrase it must not hold, or NULL */
 } Mistake;
 
+/* Bodies that several entries graft: exercise 2.1's as the solution writes it, and the
+ * concentric disk (another valid mapping) up to its point (x, y) on the unit disk;
+ * exercise 2.5's jitter and the same drawn v first; exercise 3.1's point on the triangle
+ * and the folded square up to its barycentric coordinates. */
+#define COSINE_SAMPLE                                                                          \
+    "    double sin_theta = sqrt(u1);\n    double cos_theta = sqrt(1.0 - u1);\n"               \
+    "    double phi = 2.0 * PI * u2;\n"                                                        \
+    "    return vec3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);"
+#define CONCENTRIC_DISK                                                                        \
+    "    double a = 2.0 * u1 - 1.0, b = 2.0 * u2 - 1.0, r, phi;\n    if (a == 0.0 && b == "    \
+    "0.0)\n        return vec3(0, 0, 1);\n    if (fabs(a) > fabs(b)) {\n        r = a;\n    "  \
+    "    phi = (PI / 4.0) * (b / a);\n    } else {\n        r = b;\n        phi = PI / 2.0 - " \
+    "(PI / 4.0) * (a / b);\n    }\n    double x = r * cos(phi), y = r * sin(phi);\n"
+#define JITTER "double ju = rng_uniform(rng), jv = rng_uniform(rng);"
+#define JITTER_V_FIRST "double jv = rng_uniform(rng), ju = rng_uniform(rng);"
+#define TRIANGLE_POINT                                                                         \
+    "    double s = sqrt(u1);\n    LightSample sample;\n    sample.point = "                   \
+    "triangle_point(triangle, s * (1.0 - u2), s * u2);"
+#define FOLDED_SQUARE                                                                          \
+    "    LightSample sample;\n    if (u1 + u2 > 1.0) {\n        u1 = 1.0 - u1;\n        u2 = " \
+    "1.0 - u2;\n    }\n"
+
 static const Mistake mistakes[] = {
     {1, "1.1", "the far root first", "lib/sphere.c", "if (t0 > t1) {", "if (t0 < t1) {",
      "far side", NULL},
@@ -202,6 +224,18 @@ static const Mistake mistakes[] = {
     {2, "2.6", "the normal never turned to face the ray", "lib/path.c",
      "x->normal = x->front ? x->hit.normal : vec3_neg(x->hit.normal);",
      "x->normal = x->hit.normal;", "never turned", NULL},
+    /* Valid methods a little off, which give other samples than the solution's from the
+     * same numbers: caught by the replicate tests of their means (grading.h), not the warp
+     * test. */
+    {2, "2.1", "the concentric disk with cos(theta) raised to 0.995 (0.17 % too large)",
+     "lib/hemisphere.c", COSINE_SAMPLE,
+     CONCENTRIC_DISK "    double z = pow(sqrt(fmax(0.0, 1.0 - x * x - y * y)), 0.995);\n    "
+                     "double sine = sqrt(1.0 - z * z), azimuth = atan2(y, x);\n    return "
+                     "vec3(sine * cos(azimuth), sine * sin(azimuth), z);",
+     "the mean cos(theta) is", "samples in"},
+    {2, "2.5", "another jitter 0.5 % off: v drawn first, u^1.01", "lib/pixel_sampling.c",
+     JITTER, JITTER_V_FIRST " ju = pow(ju, 1.01);", "the mean jitter across the cell is",
+     "samples in"},
     {3, "3.1", "every sample with the first lamp's emission", "lib/area_light.c",
      "sample.emission = scene->materials[triangle->material].emission;",
      "sample.emission = "
@@ -225,6 +259,11 @@ static const Mistake mistakes[] = {
     {3, "3.4", "M + 1 shadow rays divided by M", "lib/area_light.c",
      "for (int k = 0; k < shadow_rays; k++)", "for (int k = 0; k <= shadow_rays; k++)",
      "M + 1 shadow rays divided by M", "L_D is the sum of their values divided by M"},
+    /* chapter 3's valid method a little off (above, chapter 2's) */
+    {3, "3.1", "the folded square 0.17 % off in y (0.997 u2)", "lib/area_light.c",
+     TRIANGLE_POINT,
+     FOLDED_SQUARE "    sample.point = triangle_point(triangle, u1, 0.997 * u2);",
+     "the mean y is", "samples in"},
     {3, "3.4", "the sum kept in a float", "lib/area_light.c",
      "    Vec3 sum = vec3(0, 0, 0);\n    for (int k = 0; k < shadow_rays; k++)\n        sum = "
      "vec3_add(sum, area_light_shadow_ray(scene, x, n, wo, m, rng, counts).value);",
@@ -312,20 +351,13 @@ static const Mistake alternatives[] = {
      "*t = vec3_sub(vec3_scale(vec3_add_scaled(d, n, cos_i), eta), vec3_scale(n, cos_t));",
      "pass", NULL},
     {2, "2.4", "the concentric disk lifted to the hemisphere (2.1)", "lib/hemisphere.c",
-     "    double sin_theta = sqrt(u1);\n    double cos_theta = sqrt(1.0 - u1);\n    double phi "
-     "= 2.0 * PI * u2;\n    return vec3(sin_theta * cos(phi), sin_theta * sin(phi), "
-     "cos_theta);",
-     "    double a = 2.0 * u1 - 1.0, b = 2.0 * u2 - 1.0, r, phi;\n    if (a == 0.0 && b == "
-     "0.0)\n        return vec3(0, 0, 1);\n    if (fabs(a) > fabs(b)) {\n        r = a;\n    "
-     "    phi = (PI / 4.0) * (b / a);\n    } else {\n        r = b;\n        phi = PI / 2.0 - "
-     "(PI / 4.0) * (a / b);\n    }\n    double x = r * cos(phi), y = r * sin(phi);\n    "
-     "return vec3(x, y, sqrt(fmax(0.0, 1.0 - x * x - y * y)));",
-     "pass", NULL},
+     COSINE_SAMPLE,
+     CONCENTRIC_DISK "    return vec3(x, y, sqrt(fmax(0.0, 1.0 - x * x - y * y)));", "pass",
+     NULL},
+    {2, "2.5", "another jitter: v's number drawn first", "lib/pixel_sampling.c", JITTER,
+     JITTER_V_FIRST, "pass", NULL},
     {3, "3.1", "the folded square for the point on a triangle", "lib/area_light.c",
-     "    double s = sqrt(u1);\n    LightSample sample;\n    sample.point = "
-     "triangle_point(triangle, s * (1.0 - u2), s * u2);",
-     "    LightSample sample;\n    if (u1 + u2 > 1.0) {\n        u1 = 1.0 - u1;\n        u2 = "
-     "1.0 - u2;\n    }\n    sample.point = triangle_point(triangle, u1, u2);",
+     TRIANGLE_POINT, FOLDED_SQUARE "    sample.point = triangle_point(triangle, u1, u2);",
      "pass", NULL},
     {4, "4.2", "the mean written (R_s + R_p) / 2", "lib/fresnel.c", "return 0.5 * (r.s + r.p);",
      "return (r.s + r.p) / 2;", "pass", NULL},
