@@ -374,11 +374,14 @@ check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 # under a time limit of TEST_TIMEOUT seconds, past which it is stopped with every process
 # it started and fails (bench/run_tests.sh). Their output is then printed in that order,
 # and the last line counts the programs that passed and failed.
+# The longest start first, so that the cores stay busy to the end.
 TEST_LOGS := $(BUILD)/test-logs
 TEST_TIMEOUT ?= 300
+LONGEST_TESTS := $(addprefix $(BUILD)/tests/,test_exercises test_grader test_interrupt test_chapters)
 test: all check-sources
 	@CHAPTER_DIR=$(BUILD) CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" \
-	    sh bench/run_tests.sh $(TEST_LOGS) $(TEST_TIMEOUT) $(CHAPTER_TESTS) $(FINAL_TESTS)
+	    sh bench/run_tests.sh $(TEST_LOGS) $(TEST_TIMEOUT) $(LONGEST_TESTS) \
+	    $(CHAPTER_TESTS) $(filter-out $(LONGEST_TESTS),$(FINAL_TESTS))
 
 # The gallery (bench/gallery_main.c): $(FIGURES)/index.html, one page with every chapter's
 # figures, tables, plots and diff. `make figures` records its run in $(FIGURES)/run.txt
