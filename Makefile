@@ -18,6 +18,8 @@
 #                         exercises (every one fails)
 #   make false-alarms CHAPTER=N SEEDS=200   grade chapter N's solution under SEEDS grading
 #                         seeds (SEED=s: one check's seed) and count the FAILs
+#   make test-graders     every planted student mistake graded in the sandbox: each caught,
+#                         named, and every correct alternative passing (run by CI)
 #   make check-sources    every chapter's clean source: compiles alone, no markers left,
 #                         no placeholders, the lesson never reaches into the bench
 #   make sanitize         the tests under AddressSanitizer and UndefinedBehaviorSanitizer
@@ -103,7 +105,7 @@ TEST_SOURCES  := $(wildcard tests/test_*.c bench/tests/test_*.c)
 REFERENCE_BIN := $(BUILD)/reference
 GALLERY       := $(BUILD)/gallery
 
-.PHONY: all test check-sources figures sanitize fuzz bench clean deps gallery check-exercises grade-class false-alarms \
+.PHONY: all test test-graders check-sources figures sanitize fuzz bench clean deps gallery check-exercises grade-class false-alarms \
         exercise-solutions
 .DEFAULT_GOAL := all
 .SECONDARY:
@@ -374,14 +376,20 @@ check-sources: $(foreach n,$(CHAPTERS),source-chapter$(n))
 # under a time limit of TEST_TIMEOUT seconds, past which it is stopped with every process
 # it started and fails (bench/run_tests.sh). Their output is then printed in that order,
 # and the last line counts the programs that passed and failed.
-# The longest start first, so that the cores stay busy to the end.
+# The longest start first, so that the cores stay busy to the end. The planted mistakes
+# (test_exercises: about a hundred trees graded in the sandbox, three to four minutes of
+# processor time) are make test-graders, which CI runs beside make test.
 TEST_LOGS := $(BUILD)/test-logs
 TEST_TIMEOUT ?= 300
-LONGEST_TESTS := $(addprefix $(BUILD)/tests/,test_exercises test_grader test_interrupt test_chapters)
+GRADER_TESTS := $(BUILD)/tests/test_exercises
+LONGEST_TESTS := $(addprefix $(BUILD)/tests/,test_grader test_interrupt test_chapters)
 test: all check-sources
 	@CHAPTER_DIR=$(BUILD) CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" \
 	    sh bench/run_tests.sh $(TEST_LOGS) $(TEST_TIMEOUT) $(LONGEST_TESTS) \
-	    $(CHAPTER_TESTS) $(filter-out $(LONGEST_TESTS),$(FINAL_TESTS))
+	    $(CHAPTER_TESTS) $(filter-out $(LONGEST_TESTS) $(GRADER_TESTS),$(FINAL_TESTS))
+test-graders: all $(foreach n,$(CHAPTERS),source-chapter$(n))
+	@CHAPTER_DIR=$(BUILD) CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" \
+	    sh bench/run_tests.sh $(TEST_LOGS)-graders $(TEST_TIMEOUT) $(GRADER_TESTS)
 
 # The gallery (bench/gallery_main.c): $(FIGURES)/index.html, one page with every chapter's
 # figures, tables, plots and diff. `make figures` records its run in $(FIGURES)/run.txt
@@ -571,7 +579,7 @@ SANITIZE_TEST_TIMEOUT ?= 900
 sanitize:
 	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize TEST_TIMEOUT=$(SANITIZE_TEST_TIMEOUT) \
 	    CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-	    LDFLAGS="-fsanitize=address,undefined" test
+	    LDFLAGS="-fsanitize=address,undefined" test test-graders
 
 # The libFuzzer targets, under AddressSanitizer and UndefinedBehaviorSanitizer, each for
 # FUZZ_SECONDS: fuzz_scene_file gives any bytes to the scene reader; fuzz_argv gives any

@@ -489,7 +489,10 @@ static void write_warp_picture(Grading *g, const Warp *warp, const char *what,
     const char *captions[4] = {"the samples (u1, u2)\non the unit square", mapped, observed,
                                expected};
     char path[1024], error[256];
-    snprintf(path, sizeof path, "%s/exercise-%s-warp.png", g->out, g->id);
+    if (g->pictures++ == 0)
+        snprintf(path, sizeof path, "%s/exercise-%s-warp.png", g->out, g->id);
+    else /* a second warp test of the same exercise */
+        snprintf(path, sizeof path, "%s/exercise-%s-warp-%d.png", g->out, g->id, g->pictures);
     Font font;
     if (font_load(&font, FONT_PATH, error, sizeof error) != 0) {
         grading_note(g, "no picture: %s", error);

@@ -33,6 +33,7 @@ typedef struct {
     char message[1024]; /* what is wrong (the first failure found), when failed */
     char numbers[4096]; /* the numbers behind the verdict, one line each */
     uint64_t seed;      /* the grading's seed (GRADE_SEED): every random input follows it */
+    int pictures;       /* the judge's: warp pictures written so far, each its own file */
 } Grading;
 
 /* A render the grader compares, pixel by pixel, with the solution's (render_check.h). */
