@@ -15,6 +15,7 @@
 #include "direct_light.h"
 #include "grading.h"
 #include "hemisphere.h"
+#include "lambert.h"
 #include "mirror.h"
 #include "mirror_light.h"
 #include "mis.h"
@@ -178,14 +179,41 @@ static const WrongAnswer wrong_light_pdf[] = {
     {"d / (A cos beta), the distance not squared", "d^2 / (A cos beta)", pdf_not_squared},
 };
 
+/* Exercise 2.3's lambert_brdf, the f of both of the estimate's terms (through
+ * diffuse_brdf), against rho / pi at POINTS albedos. Returns 1 when it holds. */
+static int lambert_rechecked(Grading *g, int points)
+{
+    for (int i = 0; i < points; i++) {
+        Rng rng = rng_for_sample(grading_stream(g, 73), 4, (uint64_t)i);
+        Vec3 rho = vec3(rng_uniform(&rng), rng_uniform(&rng), rng_uniform(&rng));
+        Vec3 got = ASK_VEC3(g, lambert_brdf(rho)), want = vec3_scale(rho, 1.0 / PI);
+        if (grading_not_finite(g, got.x + got.y + got.z, "lambert_brdf (exercise 2.3)"))
+            return 0;
+        if (vec3_length(vec3_sub(got, want)) <= 1e-12 * vec3_length(want))
+            continue;
+        double ratio = vec3_dot(got, want) / vec3_dot(want, want);
+        return grading_fail(g,
+                            "exercise 2.3 (lambert_brdf), the f that the shadow ray and the "
+                            "bounce both read, is wrong: f = (%.5f, %.5f, %.5f) for rho = "
+                            "(%.3f, %.3f, %.3f) where rho / pi = (%.5f, %.5f, %.5f), %.4g "
+                            "times that%s",
+                            got.x, got.y, got.z, rho.x, rho.y, rho.z, want.x, want.y, want.z,
+                            ratio, fabs(ratio - PI) < 1e-9 ? ": the 1 / pi is missing" : "");
+    }
+    return 1;
+}
+
 /* Exercise 3.2's area_light_pdf and the pdf of 3.3's shadow rays (what the MIS weights
- * read), and 2.2's hemisphere_pdf_cosine (the bounce's density in the weights), each
- * against its closed form. Returns 1 when all hold. */
+ * read), 2.2's hemisphere_pdf_cosine (the bounce's density in the weights) and 2.3's
+ * lambert_brdf (the f of both terms), each against its closed form. Returns 1 when all
+ * hold. */
 static int grade_densities_read(Grading *g, const Scene *scene)
 {
     enum {
         POINTS = 200
     };
+    if (!lambert_rechecked(g, POINTS))
+        return 0;
     double x[3 * POINTS], got[POINTS];
     double area = scene->light_area;
     for (int i = 0; i < POINTS; i++) {
@@ -267,8 +295,9 @@ static int grade_densities_read(Grading *g, const Scene *scene)
     }
     grading_note(g,
                  "what the weights read: area_light_pdf at %d inputs, %d shadow rays' pdf, "
-                 "hemisphere_pdf_cosine at %d directions: all right",
-                 POINTS, lit, POINTS);
+                 "hemisphere_pdf_cosine at %d directions, lambert_brdf at %d albedos: all "
+                 "right",
+                 POINTS, lit, POINTS, POINTS);
     return 1;
 }
 

@@ -313,6 +313,11 @@ static const Mistake mistakes[] = {
      "return distance * distance / (scene->light_area * cos_beta);",
      "return 1.0 / scene->light_area;",
      "exercise 3.2 (area_light_pdf), whose density the MIS weights read, is wrong", NULL},
+    {7, "7.1", "right MIS over a Lambert BRDF without 1 / pi (2.3)", "lib/lambert.c",
+     "return vec3_scale(rho, 1.0 / PI);", "return rho;",
+     "exercise 2.3 (lambert_brdf), the f that the shadow ray and the bounce both read, is "
+     "wrong",
+     "must sum to 1"},
     {7, "7.2", "the image's cosine at the real lamp's normal", "lib/mirror_light.c",
      "Vec3 image_normal = mirror_reflect(light.normal, plane->normal);",
      "Vec3 image_normal = light.normal;", "real lamp's normal", "is the lamp point reflected"},
