@@ -3,8 +3,9 @@
  * Roulette keeps the expected throughput (docs/chapter6.md, section 1): over 100,000 to
  * 4,200,000 trials per setting, every survivor carries exactly the throughput before / q
  * (known wrong forms named), and the share going on is q, at the course's level
- * (grading.h) both paired with the solution's decision from the same random number and as
- * a binomial share (any valid drawing); with roulette off, or before bounded weights
+ * (grading.h) paired with the solution's decision from the same random number, as a
+ * binomial share (any valid drawing) and over replicates of generators whose first numbers
+ * are stratified (any rule on one number); with roulette off, or before bounded weights
  * start, nothing changes. The survival probability against min(1, max component), with a
  * catalogue of known wrong ones.
  */
@@ -15,8 +16,11 @@
 #include "roulette.h"
 
 #define TRIALS 100000
-#define BOUNDED_TRIALS 500000 /* q = 0.5: its share to 1.1 % for any valid drawing */
+#define BOUNDED_TRIALS 500000 /* q = 0.5: its share to 1.1 % for any drawing at all */
 #define ALPHA_TRIALS 4200000  /* alpha = 0.6: its share to 0.3 % for any valid drawing */
+/* The share's replicate test: replicates of one generator per cell of [0, 1). */
+#define SHARE_REPLICATES 64
+#define SHARE_CELLS 509 /* prime: neither q = 0.5 nor 0.6 falls on a cell's edge */
 #define COUNT(list) (int)(sizeof list / sizeof list[0])
 
 /* What a survivor's throughput can be, for throughput t and survival probability q. */
@@ -53,6 +57,22 @@ static int same_colour(Vec3 a, Vec3 b)
 {
     return fabs(a.x - b.x) <= 1e-12 * fabs(b.x) && fabs(a.y - b.y) <= 1e-12 * fabs(b.y) &&
            fabs(a.z - b.z) <= 1e-12 * fabs(b.z);
+}
+
+/* What a share of paths going on other than the survival probability q means: the
+ * complement (unless q is near 1/2, where both are alike), never, or a rule that is off. */
+static const char *share_meaning(double share, double survival)
+{
+    if (fabs(share - (1.0 - survival)) < 0.01 && fabs(survival - 0.5) > 0.02)
+        return "the path ends with probability q, where q is the probability that it goes "
+               "on (the report's erratum: alpha is the survival probability)";
+    if (share == 1.0)
+        return "roulette never ends a path here";
+    return share > survival
+               ? "too many paths go on: a path goes on exactly when a uniform number is "
+                 "below q itself (roulette_survives)"
+               : "too few paths go on: a path goes on exactly when a uniform number is below "
+                 "q itself (roulette_survives)";
 }
 
 /* Roulette at `segment` with `settings` on throughput t, TRIALS times: it must go on
@@ -110,19 +130,12 @@ static int roulette_trials(Grading *g, long trials, const PathSettings *settings
                             "%s: %.2f%% of the paths end where none may (the survival "
                             "probability is 1: no roulette)",
                             setting, 100.0 * (1.0 - share));
-    if (fabs(share_z) > limit || fabs(paired_z) > limit) {
-        const char *meaning =
-            fabs(share - (1.0 - survival)) < 0.01
-                ? ": the path ends with probability q, where q is the probability that it "
-                  "goes on (the report's erratum: alpha is the survival probability)"
-            : share == 1.0 ? ": roulette never ends a path here"
-                           : ": a path goes on when the uniform number is below q "
-                             "(roulette_survives)";
+    if (fabs(share_z) > limit || fabs(paired_z) > limit)
         return grading_fail(g,
                             "%s: %.2f%% of the paths go on where the survival probability "
-                            "is %.1f%%%s",
-                            setting, 100.0 * share, 100.0 * survival, meaning);
-    }
+                            "is %.1f%%: %s",
+                            setting, 100.0 * share, 100.0 * survival,
+                            share_meaning(share, survival));
     if (forms[SURVIVOR_RIGHT] == kept)
         return 1;
     for (int f = 1; f < SURVIVOR_FORMS; f++)
@@ -143,24 +156,78 @@ static int roulette_trials(Grading *g, long trials, const PathSettings *settings
                         survival, first_wrong.x, first_wrong.y, first_wrong.z);
 }
 
+/* Replicate `replicate` of a setting's stratified generators: SHARE_CELLS generators whose
+ * first numbers lie one in each of SHARE_CELLS equal cells of [0, 1), found by drawing
+ * generators until every cell holds one. */
+static void stratified_generators(Grading *g, int setting, int replicate, Rng *generators)
+{
+    char taken[SHARE_CELLS] = {0};
+    uint64_t key = (uint64_t)setting * SHARE_REPLICATES + (uint64_t)replicate;
+    for (uint64_t j = 0, filled = 0; filled < SHARE_CELLS; j++) {
+        Rng rng = rng_for_sample(grading_stream(g, 62), key, j), look = rng;
+        int cell = (int)(rng_uniform(&look) * SHARE_CELLS);
+        if (!taken[cell]) {
+            taken[cell] = 1;
+            generators[cell] = rng;
+            filled++;
+        }
+    }
+}
+
+/* The share going on, over SHARE_REPLICATES replicates of stratified generators, against
+ * q by a replicate test: a decision drawn from the generator's first number, as any rule
+ * "goes on when u is below (or above) a threshold" draws it, then lands within one cell of
+ * q in every replicate, so that a share off by far less than one independent trial's
+ * noise shows. Returns 1 when it passes. */
+static int roulette_share_replicates(Grading *g, int setting, const PathSettings *settings,
+                                     int segment, Vec3 t, double survival, const char *words)
+{
+    Rng generators[SHARE_CELLS];
+    double shares[SHARE_REPLICATES];
+    for (int r = 0; r < SHARE_REPLICATES; r++) {
+        stratified_generators(g, setting, r, generators);
+        long kept = 0;
+        for (int cell = 0; cell < SHARE_CELLS; cell++) {
+            Vec3 after = t;
+            kept +=
+                ASK(g, roulette_continues(settings, segment, &after, &generators[cell])) != 0.0;
+        }
+        shares[r] = (double)kept / SHARE_CELLS;
+    }
+    if (grading_probing(g))
+        return 1;
+    char what[160];
+    snprintf(what, sizeof what, "%s: the share going on over %d stratified generators", words,
+             SHARE_CELLS);
+    double mean = 0.0;
+    for (int r = 0; r < SHARE_REPLICATES; r++)
+        mean += shares[r] / SHARE_REPLICATES;
+    return grading_replicate_test(g, what, shares, SHARE_REPLICATES, survival,
+                                  share_meaning(mean, survival));
+}
+
 static void grade_continues(Grading *g)
 {
     Vec3 t = vec3(0.3, 0.5, 0.2);
     PathSettings alpha = {.max_depth = 10, .rr_survival = 0.6};
     PathSettings bounded = {.max_depth = 10, .rr_throughput = 2};
     PathSettings off = {.max_depth = 10};
+    const char *at_3 = "bounded weights from segment 2, at segment 3 with throughput (0.3, "
+                       "0.5, 0.2)",
+               *at_2 = "bounded weights from segment 2, at segment 2 with throughput (0.3, "
+                       "0.5, 0.2)";
     if (!roulette_trials(g, ALPHA_TRIALS, &alpha, 3, t, 0.6, "alpha = 0.6") ||
-        !roulette_trials(g, BOUNDED_TRIALS, &bounded, 3, t, 0.5,
-                         "bounded weights from segment 2, at segment 3 "
-                         "with throughput (0.3, 0.5, 0.2)") ||
-        !roulette_trials(g, BOUNDED_TRIALS, &bounded, 2, t, 0.5,
-                         "bounded weights from segment 2, at segment 2 "
-                         "with throughput (0.3, 0.5, 0.2)") ||
+        !roulette_trials(g, BOUNDED_TRIALS, &bounded, 3, t, 0.5, at_3) ||
+        !roulette_trials(g, BOUNDED_TRIALS, &bounded, 2, t, 0.5, at_2) ||
         !roulette_trials(g, TRIALS, &bounded, 1, t, 1.0,
                          "bounded weights from segment 2, at segment 1") ||
         !roulette_trials(g, TRIALS, &off, 3, t, 1.0,
                          "no roulette (rr_survival 0, rr_throughput 0)"))
         return;
+    if (!roulette_share_replicates(g, 0, &alpha, 3, t, 0.6, "alpha = 0.6") ||
+        !roulette_share_replicates(g, 1, &bounded, 3, t, 0.5, at_3))
+        return;
+    roulette_share_replicates(g, 2, &bounded, 2, t, 0.5, at_2);
 }
 
 /* The survival probability's inputs: the throughput's r, g, b. */
