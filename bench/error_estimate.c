@@ -53,6 +53,27 @@ RelativeError error_estimate_halves(const Image *a, const Image *b)
     return pixel_terms_finish(&terms);
 }
 
+double error_allocation_gain(const Image *image, const Image *std_error)
+{
+    if (!same_size(image, std_error))
+        return NAN;
+    double sum = 0.0, sum_of_roots = 0.0;
+    long pixels = (long)image->width * image->height;
+    for (long p = 0; p < pixels; p++) {
+        double variance = 0.0;
+        for (int c = 0; c < 3; c++) {
+            double f = image->pixels[3 * p + c], se = std_error->pixels[3 * p + c];
+            variance += se * se / (f * f + 0.01) / 3.0;
+        }
+        sum += variance;
+        sum_of_roots += sqrt(variance);
+    }
+    if (!(sum > 0.0))
+        return NAN;
+    double mean_root = sum_of_roots / pixels;
+    return sum / pixels / (mean_root * mean_root);
+}
+
 RelativeError error_against_reference(const Image *image, const Reference *reference)
 {
     if (!same_size(image, &reference->image) || !same_size(image, &reference->std_error))

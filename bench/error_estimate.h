@@ -36,6 +36,17 @@ RelativeError error_estimate_halves(const Image *a, const Image *b);
  * the sizes differ. */
 RelativeError error_against_reference(const Image *image, const Reference *reference);
 
+/* The most any allocation of a render's samples among its pixels could buy. Pixel p's
+ * relative variance e_p = sum over channels of se^2 / (F^2 + 0.01) / 3, from the image F
+ * and its per-pixel standard error se (the same count n of independent samples, or
+ * passes, everywhere, at equal cost each). Spending n_p in proportion to sqrt(e_p)
+ * instead of n everywhere lowers the relative MSE at equal cost by
+ *     G = mean(e) / mean(sqrt e)^2 >= 1   (1 when every e_p is equal),
+ * the efficiency gain of an oracle: e_p known, nothing spent to learn it, every sample
+ * kept (docs/chapter10.md). e_p from few samples spreads more than the truth, so G reads
+ * high. NaN when the sizes differ or no pixel has variance. */
+double error_allocation_gain(const Image *image, const Image *std_error);
+
 /* A relative MSE's square root as a percentage, and that of its standard error
  * (se / (2 sqrt(rel_mse)), to first order); a negative rel_mse (a reference that cannot
  * tell the image from the truth) as 0. */

@@ -117,6 +117,36 @@ static void test_known_noise(void **state)
 /* Over IMAGES images, the estimates' z-scores against the expectation: mean near 0 (no
  * bias) and mean square near 1 (the standard error it gives is its spread). */
 #define IMAGES 60
+/* The oracle's gain: 1 where every pixel's variance is the same (at any scale), and
+ * mean(e) / mean(sqrt e)^2 for a tenth of the pixels 100 times as variable as the rest:
+ * (0.1 * 100 + 0.9) / (0.1 * 10 + 0.9)^2 = 10.9 / 3.61. */
+static void test_allocation_gain(void **state)
+{
+    (void)state;
+    Image image = image_new(10, 8), std_error = image_new(10, 8), small = image_new(4, 4);
+    for (long p = 0; p < 80; p++)
+        for (int c = 0; c < 3; c++) {
+            image.pixels[3 * p + c] = (float)(0.2 + 0.3 * c); /* its own weight per channel */
+            std_error.pixels[3 * p + c] =
+                (float)(0.01 * sqrt(image.pixels[3 * p + c] * image.pixels[3 * p + c] + 0.01));
+        }
+    assert_true(fabs(error_allocation_gain(&image, &std_error) - 1.0) < 1e-9);
+    for (long p = 0; p < 80; p += 10)
+        for (int c = 0; c < 3; c++)
+            std_error.pixels[3 * p + c] *= 10.0f;
+    double gain = error_allocation_gain(&image, &std_error);
+    print_message("a tenth of the pixels 100 times as variable: gain %.6f, exactly %.6f\n",
+                  gain, 10.9 / 3.61);
+    assert_true(fabs(gain - 10.9 / 3.61) < 1e-5);
+    assert_true(isnan(error_allocation_gain(&image, &small)));
+    image_free(&small);
+    small = image_new(10, 8); /* all zero: no variance */
+    assert_true(isnan(error_allocation_gain(&image, &small)));
+    image_free(&small);
+    image_free(&image);
+    image_free(&std_error);
+}
+
 static void test_estimate_spread(void **state)
 {
     double sum_z = 0.0, sum_z2 = 0.0;
@@ -400,6 +430,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_known_noise),
         cmocka_unit_test(test_estimate_spread),
+        cmocka_unit_test(test_allocation_gain),
         cmocka_unit_test(test_room_against_reference),
         cmocka_unit_test(test_stop_by_error),
         cmocka_unit_test(test_stop_by_time),
