@@ -220,6 +220,11 @@ grader_of          = $(BUILD)/chapter$(1)/bench/exercise/grade
 probe_of           = $(BUILD)/chapter$(1)/bench/exercise/probe
 grader_sources     = $(call upto,$(1),$(EXERCISE_COMMON)) bench/exercise/chapter$(1).c
 probe_sources      = $(call upto,$(1),$(PROBE_COMMON)) bench/exercise/chapter$(1).c
+# The linker's --wrap=NAME for every __wrap_NAME chapter $(1)'s graders define: calls of NAME
+# from other objects reach it, and it calls the original as __real_NAME (chapter 2's records
+# the student's cosine directions in the probe and replays them in the judge's paths). The
+# judge and the probe, the student's and the solution's, are linked alike.
+grader_wraps       = $(shell grep -o '__wrap_[a-z][a-z_0-9]*' bench/exercise/chapter$(1).c | sort -u | sed 's/^__wrap_/-Wl,--wrap=/')
 SOLUTION_GRADERS  := $(foreach n,$(EXERCISE_CHAPTERS),$(call grader_of,$(n)) $(call probe_of,$(n)))
 # The judge of chapter $(1) as it was built (its checksum, recorded then, in JUDGE.sha256;
 # never its time stamp), else built again; then bubblewrap, unless TRUSTED=1.
@@ -230,17 +235,17 @@ judge_verified     = if [ "$$(sha256sum < $(call grader_of,$(1)) | cut -c 1-64)"
 # What bench/exercise/check.sh builds the student's tree with.
 grade_env          = GRADE_SEED="$${GRADE_SEED:-$(SEED)}" CACHE=$(abspath $(EXERCISE_DIR)/cache/chapter$(1)) CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" LIBS="$(LIBS)" PKG_CFLAGS="$(PKG_CFLAGS)" \
 	BENCH_OBJECTS="$(addprefix $(CURDIR)/,$(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call upto,$(1),$(BENCH_SOURCES))))" \
-	PROBE_FILES="$(addprefix $(CURDIR)/,$(call probe_sources,$(1)))"
+	PROBE_FILES="$(addprefix $(CURDIR)/,$(call probe_sources,$(1)))" GRADER_LDFLAGS="$(call grader_wraps,$(1))"
 
 define EXERCISE_RULES
 .PHONY: exercise-chapter$(1) check-exercise-chapter$(1)
 ifneq ($(filter $(1),$(EXERCISE_CHAPTERS)),)
 $(call grader_of,$(1)): $(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call grader_sources,$(1))) $(BUILD)/chapter$(1)/libmc.a
-	$$(CC) $$^ $$(LDFLAGS) $$(LIBS) -o $$@
+	$$(CC) $$^ $$(LDFLAGS) $$(call grader_wraps,$(1)) $$(LIBS) -o $$@
 	sha256sum < $$@ > $$@.sha256
 
 $(call probe_of,$(1)): $(patsubst %.c,$(BUILD)/chapter$(1)/%.o,$(call probe_sources,$(1))) $(BUILD)/chapter$(1)/libmc.a
-	$$(CC) $$^ $$(LDFLAGS) $$(LIBS) -o $$@
+	$$(CC) $$^ $$(LDFLAGS) $$(call grader_wraps,$(1)) $$(LIBS) -o $$@
 
 exercise-chapter$(1): source-chapter$(1) $(call grader_of,$(1))
 	@sh bench/exercise/exercise.sh $(1) $(BUILD)/source/chapter$(1) $(call grader_of,$(1)) $(EXERCISE_DIR)/chapter$(1)

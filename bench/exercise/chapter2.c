@@ -4,8 +4,10 @@
  * heights a < b holds b^2 - a^2 of the samples, a sector 1 / 12) and by its moments,
  * each over replicates of stratified inputs (grading.h); its pdf and the
  * Lambert BRDF against their closed forms, the BRDF also through the white furnace
- * it would make (L = Le / (1 - pi f)); the path tracer by its image against the
- * solution's, pixel by pixel. Seeds from GRADE_SEED; the course's level (grading.h).
+ * it would make (L = Le / (1 - pi f)); the path tracer by its paths against the
+ * solution's from the same random numbers (the student's own cosine directions replayed
+ * in them) and by its image against the solution's, pixel by pixel. Seeds from
+ * GRADE_SEED; the course's level (grading.h).
  */
 #include <math.h>
 #include <stdio.h>
@@ -253,66 +255,237 @@ static const PathView path_views[] = {
 #define PATH_GRID 8
 #define PATH_SAMPLES 256
 
+/* Exercise 2.4's paths paired through the student's own directions. Another valid cosine
+ * sampler than the task's (exercise 2.1: the concentric disk) turns the same (u1, u2)
+ * into other directions: the student's paths part from the solution's, and the paired
+ * test is left with unpaired noise. So the probe records every call the student's
+ * path_radiance makes to hemisphere_sample_cosine, its (u1, u2) and the direction it
+ * returned, and the judge replays those directions, in order, in the solution's path from
+ * the same random numbers: a right path_radiance then gives the solution's path exactly,
+ * whatever valid mapping 2.1 uses, and a wrong one differs only by its mistake. The
+ * linker puts __wrap_hemisphere_sample_cosine between the sampler and every call from
+ * another object (ld --wrap: the Makefile's grader_wraps), so the lesson holds no hook.
+ * A replay holds when every call the solution's path makes asks the (u1, u2) recorded for
+ * it and every direction is a unit vector above the surface. A call beyond the recorded
+ * ones (a path longer than the student's) is the solution's own sampler's: given the path
+ * so far, its direction has the same density. */
+#define SAMPLER_CALLS 16 /* recorded per path: a right one makes at most max_depth - 1 */
+
+typedef struct {
+    double u1, u2;
+    Vec3 w;
+} SamplerCall;
+
+typedef enum {
+    SAMPLER_DIRECT,
+    SAMPLER_RECORD,
+    SAMPLER_REPLAY
+} SamplerMode;
+
+static struct {
+    SamplerMode mode;
+    SamplerCall calls[SAMPLER_CALLS];
+    long count;      /* calls recorded, those beyond SAMPLER_CALLS not kept; or to replay */
+    long next;       /* the next call to replay */
+    long mismatched; /* replayed calls that asked other (u1, u2) than the recorded */
+    long other;      /* replayed directions other than the solution's sampler's */
+} sampler;
+
+Vec3 __real_hemisphere_sample_cosine(double u1, double u2);
+Vec3 __wrap_hemisphere_sample_cosine(double u1, double u2);
+
+Vec3 __wrap_hemisphere_sample_cosine(double u1, double u2)
+{
+    Vec3 w = __real_hemisphere_sample_cosine(u1, u2);
+    if (sampler.mode == SAMPLER_RECORD) {
+        if (sampler.count < SAMPLER_CALLS)
+            sampler.calls[sampler.count] = (SamplerCall){u1, u2, w};
+        sampler.count++;
+    } else if (sampler.mode == SAMPLER_REPLAY && sampler.next < sampler.count) {
+        const SamplerCall *call = &sampler.calls[sampler.next++];
+        if (call->u1 != u1 || call->u2 != u2) {
+            sampler.mismatched++;
+            return w;
+        }
+        sampler.other += vec3_length(vec3_sub(call->w, w)) > 1e-12;
+        return call->w;
+    }
+    return w;
+}
+
+/* The calls recorded in the probe's last path, sent, a count first; in the judge,
+ * received for the replay. Returns 1 when they can be replayed: all kept, each direction
+ * a unit vector above the surface (as exercise 2.1's warp test wants them). */
+static int ask_sampler_calls(Grading *g)
+{
+    double count = ASK(g, (double)sampler.count);
+    long kept = (long)fmin(fmax(count, 0.0), SAMPLER_CALLS);
+    int replayable = count == (double)kept;
+    for (long k = 0; k < kept; k++) {
+        SamplerCall *call = &sampler.calls[k];
+        call->u1 = ASK(g, call->u1);
+        call->u2 = ASK(g, call->u2);
+        call->w = ASK_VEC3(g, call->w);
+        replayable &= fabs(vec3_length(call->w) - 1.0) < 1e-6 && call->w.z > 0.0;
+    }
+    sampler.count = kept;
+    return replayable;
+}
+
 /* The paired differences of one view: your path minus the solution's from the same
  * random numbers. */
 typedef struct {
     long samples, differ, darker, bounces_differ;
     long unlike_deeper,
         unlike_shallower; /* paths unlike the solution's with max_depth + 1, - 1 */
+    long unreplayed;      /* paths whose calls of the sampler could not be replayed */
+    long replayed_other;  /* directions replayed that the solution's sampler would not give */
     double yours, solution, difference, difference2;
 } PathPairs;
 
-/* One view's paths, each through a random point of a pixel of a PATH_GRID^2 grid. */
-static void path_pairs(Grading *g, int view, PathPairs *pairs)
+#define VIEW_PATHS (PATH_GRID * PATH_GRID * PATH_SAMPLES)
+
+/* Path `index` of a view, through a random point of pixel index / PATH_SAMPLES of a
+ * PATH_GRID^2 grid: its camera ray, and its generator in *rng. */
+static Ray path_start(const Grading *g, const Scene *scene, int view, int index, Rng *rng)
+{
+    int pixel = index / PATH_SAMPLES, k = index % PATH_SAMPLES;
+    TestRandom where = test_random(grading_stream(g, 24), (uint64_t)view, (uint64_t)index);
+    double u = test_uniform(&where), v = test_uniform(&where);
+    *rng = rng_for_sample(grading_stream(g, 25), (uint64_t)(view * 4096 + pixel), (uint64_t)k);
+    return camera_ray(&scene->camera, PATH_GRID, PATH_GRID, pixel % PATH_GRID,
+                      pixel / PATH_GRID, u, v);
+}
+
+/* The solution's path from the generator rng with max_depth + `more` segments, the
+ * recorded directions replayed when `replay`: its radiance summed over the channels, and
+ * its bounces in *bounces. */
+static double solution_path(const Scene *scene, Ray ray, Rng rng, int more, int replay,
+                            long *bounces)
+{
+    PathSettings settings = path_settings;
+    settings.max_depth += more;
+    RayCounts counts = {0};
+    sampler.mode = replay ? SAMPLER_REPLAY : SAMPLER_DIRECT;
+    sampler.next = 0;
+    Vec3 radiance = path_radiance(scene, ray, &rng, &settings, &counts);
+    sampler.mode = SAMPLER_DIRECT;
+    *bounces = (long)counts.bounce;
+    return radiance.x + radiance.y + radiance.z;
+}
+
+/* Your path's radiance a (summed over the channels) against the solution's b. */
+static void pair_add(PathPairs *pairs, double a, double b, int bounces_differ)
+{
+    pairs->samples++;
+    pairs->yours += a;
+    pairs->solution += b;
+    pairs->difference += a - b;
+    pairs->difference2 += (a - b) * (a - b);
+    int differs = fabs(a - b) > 1e-12 + 1e-9 * fabs(b);
+    pairs->differ += differs;
+    pairs->darker += differs && a < b;
+    pairs->bounces_differ += bounces_differ;
+}
+
+/* Whether the radiance a differs from the solution's path with max_depth + `more`. */
+static int unlike_path(const Scene *scene, Ray ray, Rng rng, int more, int replay, double a)
+{
+    long bounces;
+    double c = solution_path(scene, ray, rng, more, replay, &bounces);
+    return fabs(a - c) > 1e-12 + 1e-9 * fabs(c);
+}
+
+/* Your paths' radiance and bounces, kept for a second pairing (paired_unreplayed). */
+static double view_yours[VIEW_PATHS], view_bounces[VIEW_PATHS];
+
+/* One view's paths, each paired with the solution's path from the same random numbers
+ * that takes your sampler's directions. */
+static void path_pairs(Grading *g, const Scene *scene, int view, PathPairs *pairs)
+{
+    for (int i = 0; i < VIEW_PATHS; i++) {
+        Rng rng;
+        Ray ray = path_start(g, scene, view, i, &rng);
+        RayCounts counts = {0};
+        Vec3 got = vec3(0, 0, 0);
+        sampler.count = 0;
+        if (grading_probing(g)) {
+            Rng mine = rng;
+            sampler.mode = SAMPLER_RECORD;
+            got = path_radiance(scene, ray, &mine, &path_settings, &counts);
+            sampler.mode = SAMPLER_DIRECT;
+        }
+        got = ASK_VEC3(g, got);
+        double bounces = ASK(g, (double)counts.bounce);
+        int replay = ask_sampler_calls(g);
+        if (grading_not_finite(g, got.x + got.y + got.z, "the radiance"))
+            break;
+        if (grading_probing(g))
+            continue;
+        double a = got.x + got.y + got.z;
+        long right_bounces;
+        sampler.mismatched = sampler.other = 0;
+        double b = solution_path(scene, ray, rng, 0, replay, &right_bounces);
+        pairs->unreplayed += !replay || sampler.mismatched > 0;
+        pairs->replayed_other += sampler.other;
+        pair_add(pairs, a, b, bounces != (double)right_bounces);
+        view_yours[i] = a, view_bounces[i] = bounces;
+        pairs->unlike_deeper += unlike_path(scene, ray, rng, 1, replay, a);
+        pairs->unlike_shallower += unlike_path(scene, ray, rng, -1, replay, a);
+    }
+}
+
+/* The pairs again against the solution's own paths, where some of yours could not be
+ * replayed: unpaired where your directions differ from its sampler's. */
+static void paired_unreplayed(const Grading *g, const Scene *scene, int view, PathPairs *pairs)
+{
+    PathPairs own = {.unlike_deeper = pairs->unlike_deeper,
+                     .unlike_shallower = pairs->unlike_shallower,
+                     .unreplayed = pairs->unreplayed};
+    for (long i = 0; i < pairs->samples; i++) {
+        Rng rng;
+        Ray ray = path_start(g, scene, view, (int)i, &rng);
+        long bounces;
+        double b = solution_path(scene, ray, rng, 0, 0, &bounces);
+        pair_add(&own, view_yours[i], b, view_bounces[i] != (double)bounces);
+    }
+    *pairs = own;
+}
+
+/* One view's pairs (path_pairs), against the solution's own paths when yours cannot be
+ * replayed (paired_unreplayed). */
+static void view_pairs(Grading *g, int view, PathPairs *pairs)
 {
     memset(pairs, 0, sizeof *pairs);
     Scene scene;
     if (grading_scene(g, path_views[view].scene, &scene) != 0)
         return;
-    for (int pixel = 0; pixel < PATH_GRID * PATH_GRID; pixel++)
-        for (int k = 0; k < PATH_SAMPLES; k++) {
-            TestRandom where = test_random(grading_stream(g, 24), (uint64_t)view,
-                                           (uint64_t)(pixel * PATH_SAMPLES + k));
-            double u = test_uniform(&where), v = test_uniform(&where);
-            Ray ray = camera_ray(&scene.camera, PATH_GRID, PATH_GRID, pixel % PATH_GRID,
-                                 pixel / PATH_GRID, u, v);
-            Rng rng = rng_for_sample(grading_stream(g, 25), (uint64_t)(view * 4096 + pixel),
-                                     (uint64_t)k);
-            Rng again = rng, deeper = rng, shallower = rng;
-            RayCounts counts = {0}, right_counts = {0};
-            Vec3 got = vec3(0, 0, 0);
-            if (grading_probing(g))
-                got = path_radiance(&scene, ray, &rng, &path_settings, &counts);
-            got = ASK_VEC3(g, got);
-            double bounces = ASK(g, (double)counts.bounce);
-            if (grading_not_finite(g, got.x + got.y + got.z, "the radiance"))
-                break;
-            if (grading_probing(g))
-                continue;
-            Vec3 right = path_radiance(&scene, ray, &again, &path_settings, &right_counts);
-            double a = got.x + got.y + got.z, b = right.x + right.y + right.z;
-            pairs->samples++;
-            pairs->yours += a;
-            pairs->solution += b;
-            pairs->difference += a - b;
-            pairs->difference2 += (a - b) * (a - b);
-            int differs = fabs(a - b) > 1e-12 + 1e-9 * fabs(b);
-            pairs->differ += differs;
-            pairs->darker += differs && a < b;
-            pairs->bounces_differ += bounces != (double)right_counts.bounce;
-            PathSettings more = path_settings, fewer = path_settings;
-            more.max_depth++, fewer.max_depth--;
-            Vec3 r1 = path_radiance(&scene, ray, &deeper, &more, &right_counts);
-            Vec3 r2 = path_radiance(&scene, ray, &shallower, &fewer, &right_counts);
-            double c1 = r1.x + r1.y + r1.z, c2 = r2.x + r2.y + r2.z;
-            pairs->unlike_deeper += fabs(a - c1) > 1e-12 + 1e-9 * fabs(c1);
-            pairs->unlike_shallower += fabs(a - c2) > 1e-12 + 1e-9 * fabs(c2);
-        }
+    path_pairs(g, &scene, view, pairs);
+    if (!grading_probing(g) && !g->failed && pairs->unreplayed > 0)
+        paired_unreplayed(g, &scene, view, pairs);
     scene_free(&scene);
 }
 
+/* What the pairing of a view took of your directions, when not the solution's own. */
+static void note_replay(Grading *g, int view, const PathPairs *p)
+{
+    if (p->unreplayed > 0)
+        grading_note(g,
+                     "%s: in %ld of %ld paths your calls of the cosine sampler (exercise 2.1) "
+                     "could not be replayed in the solution's path (it asked other (u1, u2), "
+                     "or a direction was no unit vector above the surface): compared with the "
+                     "solution's own paths instead, unpaired where your directions differ",
+                     path_views[view].name, p->unreplayed, p->samples);
+    else if (p->replayed_other > 0)
+        grading_note(g,
+                     "%s: the solution's paths took your sampler's directions (exercise 2.1), "
+                     "%ld of them other than its own sampler's from the same (u1, u2)",
+                     path_views[view].name, p->replayed_other);
+}
+
 /* The paths against the solution's, view by view: a paired z-test of the mean radiance at
- * the course's level, exact where the random numbers are used as the solution uses them. */
+ * the course's level, exact where the random numbers are used as the solution uses them,
+ * whatever valid mapping the sampler of 2.1 is (its directions replayed). */
 static void grade_path_pairs(Grading *g)
 {
     PathPairs pairs[PATH_VIEWS];
@@ -320,7 +493,7 @@ static void grade_path_pairs(Grading *g)
     int worst = -1;
     for (int view = 0; view < PATH_VIEWS && !g->failed; view++) {
         PathPairs *p = &pairs[view];
-        path_pairs(g, view, p);
+        view_pairs(g, view, p);
         if (grading_probing(g) || g->failed || p->samples < 2)
             continue;
         long n = p->samples;
@@ -335,6 +508,7 @@ static void grade_path_pairs(Grading *g)
                      p->solution / (3.0 * n),
                      p->solution != 0.0 ? 100.0 * (p->yours / p->solution - 1.0) : 0.0, z[view],
                      grading_detectable(se) / 3.0, GRADING_POWER);
+        note_replay(g, view, p);
         if (fabs(z[view]) > grading_z(grading_level()) &&
             (worst < 0 || fabs(z[view]) > fabs(z[worst])))
             worst = view;

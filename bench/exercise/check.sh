@@ -3,7 +3,7 @@
 #
 # STUDENT's lib/ is copied into a private folder and built there with the grader's own
 # makefile (bench/exercise/student.mk; PROBE_FILES, BENCH_OBJECTS, CC, CFLAGS, PKG_CFLAGS,
-# LDFLAGS, LIBS from the environment), and every exercise's probe runs there, each in the
+# LDFLAGS, GRADER_LDFLAGS, LIBS from the environment), and every exercise's probe runs there, each in the
 # sandbox of bench/exercise/sandbox.sh (TRUSTED=1: none, for one's own tree). SOLUTION, the
 # judge, checked against the checksum recorded when it was built, lists the exercises,
 # renders the references into REFERENCES (again when their checksums, recorded beside
@@ -148,7 +148,8 @@ bench_objects=$(printf 'objects/%s\n' $bench_objects)
 # grader out of the tree's reach: written only by this build's compiler, read-only to
 # the probe. (A trusted build sees the private folder by its own changing path: none.)
 if [ -n "${CACHE:-}" ] && [ "$trusted" = 0 ]; then
-    key=$(printf '%s\n' "$real" "$judge_sum" "${CC:-}" "${CFLAGS:-}" "${LDFLAGS:-}" "${PKG_CFLAGS:-}" |
+    key=$(printf '%s\n' "$real" "$judge_sum" "${CC:-}" "${CFLAGS:-}" "${LDFLAGS:-}" "${PKG_CFLAGS:-}" \
+        "${GRADER_LDFLAGS:-}" |
         sha256sum | cut -c 1-24)
     objects=$CACHE/$key
     mkdir -p -- "$objects" || refuse "cannot make $objects"
@@ -176,7 +177,7 @@ say "chapter $chapter: checking $student"
 run make --no-print-directory -s -r -f "$root/grader/student.mk" REPO="$root/grader" \
     CHAPTER="$chapter" PROBE_FILES="$probe_files" BENCH_OBJECTS="$bench_objects" \
     CC="${CC:-cc}" CFLAGS="${CFLAGS:-}" PKG_CFLAGS="${PKG_CFLAGS:-}" LDFLAGS="${LDFLAGS:-}" \
-    LIBS="${LIBS:-}" > "$private/build.log" 2>&1
+    GRADER_LDFLAGS="${GRADER_LDFLAGS:-}" LIBS="${LIBS:-}" > "$private/build.log" 2>&1
 built=$?
 log="all of it in $out/build.log"
 why=$(cp -- "$private/build.log" "$out/build.log" 2>&1) || log="its log could not be written to $out/build.log: $why"

@@ -10,6 +10,7 @@
 # types, and no bench file calls an exercise's inline function). Nothing of the student's
 # tree but lib/*.c and lib/*.h is read; the .d files included are this build's own.
 # Warnings are shown but do not stop the build: a half-written exercise is still graded.
+# GRADER_LDFLAGS: the linker's wraps the chapter's graders need (the Makefile's grader_wraps).
 OBJ        := check/build
 STUDENT_FLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Wpedantic \
                 -Wno-unused-parameter -Wno-unused-function -pthread $(PKG_CFLAGS) $(CFLAGS)
@@ -17,7 +18,7 @@ LIB_OBJS    := $(patsubst %.c,$(OBJ)/%.o,$(wildcard lib/*.c))
 PROBE_OBJS  := $(patsubst %.c,$(OBJ)/%.o,$(PROBE_FILES))
 
 $(OBJ)/probe: $(LIB_OBJS) $(PROBE_OBJS) $(addprefix $(REPO)/,$(BENCH_OBJECTS))
-	$(CC) $^ $(LDFLAGS) $(LIBS) -o $@
+	$(CC) $^ $(LDFLAGS) $(GRADER_LDFLAGS) $(LIBS) -o $@
 
 $(OBJ)/lib/%.o: lib/%.c
 	@mkdir -p $(@D)

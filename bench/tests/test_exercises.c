@@ -2,7 +2,8 @@
  *
  * Each chapter's clean source ($CHAPTER_DIR/source/chapterN, from make check-sources) is
  * graded untouched (every exercise passes); then each classic mistake below (one exact
- * edit of the solution) is grafted into a copy and one exercise graded again (make
+ * edit of the solution, or two: a valid method of another exercise under it) is grafted
+ * into a copy and one exercise graded again (make
  * check-exercise-chapterN STUDENT=... ONLY=...): it must fail, its verdict naming the
  * symptom and not what a misleading one said (a right exercise blamed for one it calls,
  * digits that hide the difference). A correct alternative (alternatives[]: another
@@ -24,6 +25,12 @@
 #include <string.h>
 #include <sys/wait.h>
 
+/* One exact edit of a file of the chapter's tree. */
+typedef struct {
+    const char *file;
+    const char *from, *to;
+} Graft;
+
 typedef struct {
     int chapter;
     const char *id;      /* the exercise that must catch it */
@@ -33,6 +40,13 @@ typedef struct {
     const char *symptom;    /* a phrase its verdict must hold */
     const char *misleading; /* a phrase it must not hold, or NULL */
 } Mistake;
+
+/* A mistake over a valid method of another exercise, grafted first (in another file): the
+ * mistake must be caught as over the task's method, and the method not blamed. */
+typedef struct {
+    const Graft *method;
+    Mistake mistake;
+} MistakeOver;
 
 /* Bodies that several entries graft: exercise 2.1's as the solution writes it, and the
  * concentric disk (another valid mapping) up to its point (x, y) on the unit disk;
@@ -47,6 +61,8 @@ typedef struct {
     "0.0)\n        return vec3(0, 0, 1);\n    if (fabs(a) > fabs(b)) {\n        r = a;\n    "  \
     "    phi = (PI / 4.0) * (b / a);\n    } else {\n        r = b;\n        phi = PI / 2.0 - " \
     "(PI / 4.0) * (a / b);\n    }\n    double x = r * cos(phi), y = r * sin(phi);\n"
+#define CONCENTRIC_HEMISPHERE                                                                  \
+    CONCENTRIC_DISK "    return vec3(x, y, sqrt(fmax(0.0, 1.0 - x * x - y * y)));"
 #define JITTER "double ju = rng_uniform(rng), jv = rng_uniform(rng);"
 #define JITTER_V_FIRST "double jv = rng_uniform(rng), ju = rng_uniform(rng);"
 #define TRIANGLE_POINT                                                                         \
@@ -353,6 +369,23 @@ static const Mistake mistakes[] = {
 };
 #define MISTAKES (int)(sizeof mistakes / sizeof mistakes[0])
 
+/* Path tracers a little wrong over the concentric disk lifted to the hemisphere (2.1):
+ * their paths are paired with the solution's through their own directions, replayed. */
+static const Graft concentric_method = {"lib/hemisphere.c", COSINE_SAMPLE,
+                                        CONCENTRIC_HEMISPHERE};
+static const MistakeOver mistakes_over[] = {
+    {&concentric_method,
+     {2, "2.4", "each bounce's weight 1 % too large, over the concentric disk", "lib/path.c",
+      "throughput = vec3_mul(throughput, weight);",
+      "throughput = vec3_mul(throughput, vec3_scale(weight, 1.01));", "too bright",
+      "exercise 2.1"}},
+    {&concentric_method,
+     {2, "2.4", "acne over the concentric disk", "lib/path.c",
+      "ray = ray_spawn(x.hit.point, x.normal, direction, x.hit.scale);",
+      "ray = (Ray){x.hit.point, direction};", "acne", "exercise 2.1"}},
+};
+#define MISTAKES_OVER (int)(sizeof mistakes_over / sizeof mistakes_over[0])
+
 /* Correct alternatives (another valid method, an equivalent formula): each must pass. */
 static const Mistake alternatives[] = {
     {1, "1.5", "Snell's t without normalising, terms regrouped", "lib/snell.c",
@@ -360,9 +393,7 @@ static const Mistake alternatives[] = {
      "*t = vec3_sub(vec3_scale(vec3_add_scaled(d, n, cos_i), eta), vec3_scale(n, cos_t));",
      "pass", NULL},
     {2, "2.4", "the concentric disk lifted to the hemisphere (2.1)", "lib/hemisphere.c",
-     COSINE_SAMPLE,
-     CONCENTRIC_DISK "    return vec3(x, y, sqrt(fmax(0.0, 1.0 - x * x - y * y)));", "pass",
-     NULL},
+     COSINE_SAMPLE, CONCENTRIC_HEMISPHERE, "pass", NULL},
     {2, "2.5", "another jitter: v's number drawn first", "lib/pixel_sampling.c", JITTER,
      JITTER_V_FIRST, "pass", NULL},
     {3, "3.1", "the folded square for the point on a triangle", "lib/area_light.c",
@@ -405,6 +436,23 @@ static const Mistake alternatives[] = {
      "sum += 0.25 * (a - b) * (a - b) / (3.0 * (value * value + 0.01));", "pass", NULL},
 };
 #define ALTERNATIVES (int)(sizeof alternatives / sizeof alternatives[0])
+#define PLANTED (MISTAKES + MISTAKES_OVER + ALTERNATIVES)
+
+/* Entry i of the mistakes, those over a valid method (its edit in *method, else NULL), then
+ * the alternatives; NULL before the first. */
+static const Mistake *planted_entry(int i, const Graft **method)
+{
+    *method = NULL;
+    if (i < 0)
+        return NULL;
+    if (i < MISTAKES)
+        return &mistakes[i];
+    if (i < MISTAKES + MISTAKES_OVER) {
+        *method = mistakes_over[i - MISTAKES].method;
+        return &mistakes_over[i - MISTAKES].mistake;
+    }
+    return &alternatives[i - MISTAKES - MISTAKES_OVER];
+}
 
 static const char *build_dir(void)
 {
@@ -445,6 +493,29 @@ static int graft(const char *path, const char *from, const char *to)
     return fclose(file);
 }
 
+/* Mistake m grafted into tree TREE, over its valid method when it has one. */
+static int graft_mistake(const char *tree, const Mistake *m, const Graft *method)
+{
+    char path[1400];
+    if (method) {
+        snprintf(path, sizeof path, "%s/%s", tree, method->file);
+        if (graft(path, method->from, method->to) != 0)
+            return -1;
+    }
+    snprintf(path, sizeof path, "%s/%s", tree, m->file);
+    return graft(path, m->from, m->to);
+}
+
+/* Tree TREE as the solution BASE again where file FILE was grafted (none when NULL). */
+static int restore(const char *tree, const char *base, const char *file)
+{
+    char command[4096];
+    if (!file)
+        return 0;
+    snprintf(command, sizeof command, "cp %s/%s %s/%s", base, file, tree, file);
+    return system(command) == 0 ? 0 : -1;
+}
+
 /* The verdict line of exercise `id` in a check's output. */
 static const char *verdict_of(const char *output, const char *id, char *line, size_t size)
 {
@@ -480,12 +551,11 @@ static void test_planted_mistakes(void **state)
     assert_int_equal(system(command), 0);
     int caught = 0, planted = 0, prepared[16] = {0}, visits[16] = {0};
     const char *only = getenv("EXERCISE_CHAPTERS");
-    for (int i = 0; i < MISTAKES + ALTERNATIVES; i++) {
-        int correct = i >= MISTAKES;
-        const Mistake *m = correct ? &alternatives[i - MISTAKES] : &mistakes[i];
-        const Mistake *last = i == 0             ? NULL
-                              : i - 1 < MISTAKES ? &mistakes[i - 1]
-                                                 : &alternatives[i - 1 - MISTAKES];
+    for (int i = 0; i < PLANTED; i++) {
+        int correct = i >= MISTAKES + MISTAKES_OVER;
+        const Graft *method, *last_method;
+        const Mistake *m = planted_entry(i, &method),
+                      *last = planted_entry(i - 1, &last_method);
         char base[1200], tree[1200], *out = NULL;
         if (only && *only && !listed(only, m->chapter))
             continue;
@@ -512,17 +582,17 @@ static void test_planted_mistakes(void **state)
             visits[m->chapter]++;
         snprintf(tree, sizeof tree, "%s/chapter%d-mistakes-%d", root, m->chapter,
                  visits[m->chapter]);
-        if (!last || last->chapter != m->chapter)
+        if (!last || last->chapter != m->chapter) {
             snprintf(command, sizeof command, "rm -rf %s && cp -Rp %s %s", tree, base, tree);
-        else
-            snprintf(command, sizeof command, "cp %s/%s %s/%s", base, last->file, tree,
-                     last->file);
-        assert_int_equal(system(command), 0);
-        char path[1400];
-        snprintf(path, sizeof path, "%s/%s", tree, m->file);
-        if (graft(path, m->from, m->to) != 0)
-            fail_msg("mistake %d (%s): \"%s\" is not in %s exactly once", i + 1, m->mistake,
-                     m->from, m->file);
+            assert_int_equal(system(command), 0);
+        } else {
+            assert_int_equal(restore(tree, base, last->file), 0);
+            assert_int_equal(restore(tree, base, last_method ? last_method->file : NULL), 0);
+        }
+        if (graft_mistake(tree, m, method) != 0)
+            fail_msg("mistake %d (%s): \"%s\" is not in %s exactly once (nor its valid "
+                     "method's text in %s)",
+                     i + 1, m->mistake, m->from, m->file, method ? method->file : "-");
         int status = grade(m->chapter, tree, m->id, &out);
         char line[2048];
         const char *verdict = verdict_of(out, m->id, line, sizeof line);
