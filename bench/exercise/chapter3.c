@@ -334,6 +334,8 @@ enum {
 typedef struct {
     int trials, wrong[KINDS], student_zero[KINDS], student_lit[KINDS];
     int wi_wrong, wi_reversed, wi_not_unit, pdf_wrong, value_wrong, other_point;
+    int unreplayed;     /* trials whose lamp call could not be replayed (lamp_call_valid) */
+    int replayed_other; /* replayed lamp points other than the solution's own */
     double sum_student, sum_right, sum_difference, sum_difference2;
     const char *first_value;
     double ratio_low, ratio_high, got, want;
@@ -366,16 +368,208 @@ static void tally_init(ShadowTally *t)
     t->ratio_high = -INFINITY;
 }
 
-/* The solution's shadow ray from x with the generator `rng`, and why it is what it is. */
-static ShadowRay solution_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, const Material *m,
-                                     Rng rng, int *kind, double *cos_beta, double *distance)
+/* Exercise 3.3's shadow rays paired through the student's own lamp points. Another order
+ * of the random numbers (u1, u2 drawn before u_select; rng_pair's two swapped) or another
+ * valid mapping of exercise 3.1 (the folded square) turns the same numbers into other lamp
+ * points: the student's shadow rays part from the solution's, and only their means could
+ * be compared. The linker's --wrap cannot reach area_light_sample here: it redirects calls
+ * from other objects only, and area_light_shadow_ray calls it within area_light.c. So the
+ * probe finds the call: the first three numbers of the trial's generator in the order
+ * (one of six, the same at every trial of a start) whose lamp point, from the student's
+ * area_light_sample, lies along every lit ray's wi; and that point. The judge checks the
+ * call (lamp_call_valid) and replays the point in the solution's shadow ray: it hands the
+ * solution the numbers the task's mapping turns into that point (task_numbers), through
+ * __wrap_rng_uniform and __wrap_rng_pair (calls from area_light.c to rng.c, which --wrap
+ * does reach: the Makefile's grader_wraps). A right shadow ray then gives the solution's
+ * exactly, and a wrong one differs only by its mistake; a trial whose call fails the
+ * check is compared with the solution's own shadow ray from the same numbers. */
+typedef struct {
+    double u[3]; /* (u_select, u1, u2), as the student's shadow ray passed them */
+    LightSample y;
+} LampCall;
+
+/* The numbers the generator hands out while the judge replays a lamp point. */
+static struct {
+    int replaying;
+    double numbers[3];
+    int drawn; /* numbers asked for, the generator's own beyond the three */
+} lamp_numbers;
+
+double __real_rng_uniform(Rng *rng);
+double __wrap_rng_uniform(Rng *rng);
+void __real_rng_pair(Rng *rng, double *u, double *v);
+void __wrap_rng_pair(Rng *rng, double *u, double *v);
+
+/* The next number to replay, else the generator's own. */
+static double replayed_number(Rng *rng)
 {
-    Rng replay = rng;
+    int k = lamp_numbers.drawn++;
+    return k < 3 ? lamp_numbers.numbers[k] : __real_rng_uniform(rng);
+}
+
+double __wrap_rng_uniform(Rng *rng)
+{
+    return lamp_numbers.replaying ? replayed_number(rng) : __real_rng_uniform(rng);
+}
+
+void __wrap_rng_pair(Rng *rng, double *u, double *v)
+{
+    if (!lamp_numbers.replaying) {
+        __real_rng_pair(rng, u, v);
+        return;
+    }
+    *u = replayed_number(rng);
+    *v = replayed_number(rng);
+}
+
+/* The first three numbers of the generator rng: those a shadow ray draws. */
+static void first_numbers(Rng rng, double g[3])
+{
+    for (int k = 0; k < 3; k++)
+        g[k] = __real_rng_uniform(&rng);
+}
+
+/* The six orders of three numbers. */
+static const int orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                 {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+#define ORDERS 6
+
+/* The call of area_light_sample from generator rng's numbers in order o (the probe's). */
+static LampCall lamp_call(const Scene *scene, Rng rng, int o)
+{
+    double g[3];
+    first_numbers(rng, g);
+    LampCall c = {.u = {g[orders[o][0]], g[orders[o][1]], g[orders[o][2]]}};
+    c.y = area_light_sample(scene, c.u[0], c.u[1], c.u[2]);
+    return c;
+}
+
+static int ray_lit(ShadowRay r)
+{
+    return r.value.x != 0.0 || r.value.y != 0.0 || r.value.z != 0.0;
+}
+
+/* The order of the numbers behind the probe's shadow rays `got` from x: the one whose
+ * lamp points lie along every lit ray's wi; `previous` where none is lit; -1 if none
+ * fits. */
+static int student_order(const Scene *scene, Vec3 x, const ShadowRay *got, const Rng *rngs,
+                         int trials, int previous)
+{
+    int lit = 0;
+    for (int o = 0; o < ORDERS; o++) {
+        int along = 0;
+        lit = 0;
+        for (int t = 0; t < trials; t++) {
+            if (!ray_lit(got[t]))
+                continue;
+            lit++;
+            LampCall c = lamp_call(scene, rngs[t], o);
+            Vec3 to = vec3_normalize(vec3_sub(c.y.point, x));
+            along += vec3_length(vec3_sub(to, got[t].wi)) <= 1e-6;
+        }
+        if (lit > 0 && along == lit)
+            return o;
+    }
+    return lit == 0 ? previous : -1;
+}
+
+/* The barycentric coordinates (b1, b2) of the point v0 + d in the plane of triangle t:
+ * d = b1 e1 + b2 e2. */
+static void barycentric(const Triangle *t, Vec3 d, double *b1, double *b2)
+{
+    double d11 = vec3_dot(t->e1, t->e1), d12 = vec3_dot(t->e1, t->e2);
+    double d22 = vec3_dot(t->e2, t->e2), p1 = vec3_dot(d, t->e1), p2 = vec3_dot(d, t->e2);
+    double det = d11 * d22 - d12 * d12;
+    *b1 = (d22 * p1 - d12 * p2) / det;
+    *b2 = (d11 * p2 - d12 * p1) / det;
+}
+
+/* The lamp (its place in scene->light_triangles) that y lies on, within 1e-6 of its plane
+ * and inside it, with its normal and emission, and y's barycentric coordinates there; -1
+ * if none. */
+static int lamp_of(const Scene *scene, const LightSample *y, double *b1, double *b2)
+{
+    for (int i = 0; i < scene->light_count; i++) {
+        const Triangle *t = &scene->triangles[scene->light_triangles[i]];
+        Vec3 d = vec3_sub(y->point, t->v0);
+        if (fabs(vec3_dot(d, t->normal)) > 1e-6)
+            continue;
+        barycentric(t, d, b1, b2);
+        if (*b1 >= -1e-9 && *b2 >= -1e-9 && *b1 + *b2 <= 1.0 + 1e-9 &&
+            same_vec(y->normal, t->normal) &&
+            same_vec(y->emission, scene->materials[t->material].emission))
+            return i;
+    }
+    return -1;
+}
+
+/* The inverse of the task's mapping (area_light.h): the numbers (u_select, u1, u2) from
+ * which it draws the point (b1, b2) of lamp i, u_select amid the lamp's share of A. */
+static void task_numbers(const Scene *scene, int i, double b1, double b2, double u[3])
+{
+    double below = i > 0 ? scene->light_cumulative[i - 1] : 0.0;
+    u[0] = 0.5 * (below + scene->light_cumulative[i]) / scene->light_area;
+    double s = fmin(fmax(b1 + b2, 0.0), 1.0);
+    u[1] = s * s;
+    u[2] = s > 0.0 ? fmin(fmax(b2 / s, 0.0), 1.0) : 0.0;
+}
+
+/* Whether call c can be replayed from the generator rng: its numbers the generator's
+ * first three in some order, its point on a lamp with the lamp's normal and emission.
+ * Then the numbers the task's mapping draws its point from, in u. */
+static int lamp_call_valid(const Scene *scene, Rng rng, const LampCall *c, double u[3])
+{
+    double g[3], b1, b2;
+    first_numbers(rng, g);
+    int drawn = 0;
+    for (int o = 0; o < ORDERS; o++)
+        drawn |= c->u[0] == g[orders[o][0]] && c->u[1] == g[orders[o][1]] &&
+                 c->u[2] == g[orders[o][2]];
+    int lamp = drawn ? lamp_of(scene, &c->y, &b1, &b2) : -1;
+    if (lamp < 0)
+        return 0;
+    task_numbers(scene, lamp, b1, b2, u);
+    return 1;
+}
+
+/* The lamp call behind the probe's shadow ray (order: its numbers' order, -1 if not
+ * found), sent, a count first; in the judge, received. Returns 1 when the judge can
+ * replay it, with the numbers to hand the solution in u. */
+static int ask_lamp_call(Grading *g, const Scene *scene, Rng rng, int order, double u[3])
+{
+    double count = ASK(g, order >= 0 ? 1.0 : 0.0);
+    if (count != 1.0)
+        return 0;
+    LampCall c = {.u = {0}};
+    if (grading_probing(g))
+        c = lamp_call(scene, rng, order);
+    for (int k = 0; k < 3; k++)
+        c.u[k] = ASK(g, c.u[k]);
+    c.y.point = ASK_VEC3(g, c.y.point);
+    c.y.normal = ASK_VEC3(g, c.y.normal);
+    c.y.emission = ASK_VEC3(g, c.y.emission);
+    return !grading_probing(g) && lamp_call_valid(scene, rng, &c, u);
+}
+
+/* The solution's shadow ray from x with the generator `rng`, its numbers replaced by
+ * `replay` unless NULL, and why it is what it is. Returns 0 in *replayed when a replay
+ * did not draw exactly the three numbers. */
+static ShadowRay solution_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, const Material *m,
+                                     Rng rng, const double *replay, int *replayed, int *kind,
+                                     double *cos_beta, double *distance)
+{
+    double u[3];
+    first_numbers(rng, u);
+    for (int k = 0; replay && k < 3; k++)
+        u[k] = replay[k];
     RayCounts counts = {0};
+    lamp_numbers.replaying = replay != NULL;
+    memcpy(lamp_numbers.numbers, u, sizeof u);
+    lamp_numbers.drawn = 0;
     ShadowRay right = area_light_shadow_ray(scene, x, n, n, m, &rng, &counts);
-    double u_select = rng_uniform(&replay), u1, u2;
-    rng_pair(&replay, &u1, &u2);
-    LightSample y = area_light_sample(scene, u_select, u1, u2);
+    lamp_numbers.replaying = 0;
+    *replayed = !replay || lamp_numbers.drawn == 3;
+    LightSample y = area_light_sample(scene, u[0], u[1], u[2]);
     Vec3 to = vec3_sub(y.point, x);
     *distance = vec3_length(to);
     Vec3 wi = vec3_scale(to, 1.0 / *distance);
@@ -387,13 +581,38 @@ static ShadowRay solution_shadow_ray(const Scene *scene, Vec3 x, Vec3 n, const M
     return right;
 }
 
+/* The solution's shadow ray paired with the student's: replayed at the student's lamp
+ * point when `replay` (its numbers) is not NULL and the replay holds, else from the
+ * trial's own numbers. */
+static ShadowRay paired_shadow_ray(ShadowTally *t, const Scene *scene, Vec3 x, Vec3 n,
+                                   const Material *m, Rng rng, const double *replay, int *kind,
+                                   double *cos_beta, double *distance)
+{
+    int replayed;
+    if (replay) {
+        ShadowRay right = solution_shadow_ray(scene, x, n, m, rng, replay, &replayed, kind,
+                                              cos_beta, distance);
+        if (replayed) {
+            double own[3];
+            first_numbers(rng, own);
+            t->replayed_other +=
+                !same_vec(area_light_sample(scene, own[0], own[1], own[2]).point,
+                          area_light_sample(scene, replay[0], replay[1], replay[2]).point);
+            return right;
+        }
+    }
+    t->unreplayed++;
+    return solution_shadow_ray(scene, x, n, m, rng, NULL, &replayed, kind, cos_beta, distance);
+}
+
 /* The judge's comparison of one trial with the solution's. */
 static void tally_trial(ShadowTally *t, const Scene *scene, Vec3 x, Vec3 n, const Material *m,
-                        Rng rng, ShadowRay got)
+                        Rng rng, ShadowRay got, const double *replay)
 {
     int kind;
     double cos_beta, distance;
-    ShadowRay right = solution_shadow_ray(scene, x, n, m, rng, &kind, &cos_beta, &distance);
+    ShadowRay right =
+        paired_shadow_ray(t, scene, x, n, m, rng, replay, &kind, &cos_beta, &distance);
     t->trials++;
     t->sum_student += got.value.y;
     t->sum_right += right.value.y;
@@ -531,14 +750,57 @@ static int shadow_verdict(Grading *g, const ShadowTally *t, const char *where)
     return 0;
 }
 
-/* Every field of the shadow ray (value, wi, pdf) against the solution's drawn from the
- * same random numbers, at each start: exact where the task's order of the numbers is kept.
- */
+/* Trial t's generator at start k. */
+static Rng trial_rng(const Grading *g, int k, int t)
+{
+    return rng_for_sample(grading_stream(g, 33), (uint64_t)k, (uint64_t)t);
+}
+
+/* In the probe, the student's shadow rays at start k, from x; returns the order of their
+ * numbers (student_order, `previous` where none is lit); -1 in the judge. */
+static ShadowRay probe_rays[SHADOW_TRIALS];
+static int probe_shadow_rays(Grading *g, const Scene *scene, int k, Vec3 x, Vec3 n,
+                             const Material *m, int previous)
+{
+    if (!grading_probing(g))
+        return -1;
+    static Rng rngs[SHADOW_TRIALS];
+    RayCounts counts = {0};
+    for (int t = 0; t < SHADOW_TRIALS; t++) {
+        rngs[t] = trial_rng(g, k, t);
+        Rng mine = rngs[t];
+        probe_rays[t] = area_light_shadow_ray(scene, x, n, n, m, &mine, &counts);
+    }
+    return student_order(scene, x, probe_rays, rngs, SHADOW_TRIALS, previous);
+}
+
+/* What the pairing at a start took of your lamp points, when not the solution's own. */
+static void note_lamp_replay(Grading *g, const ShadowTally *t, const char *where)
+{
+    if (t->unreplayed > 0)
+        grading_note(g,
+                     "%s: in %d of %d trials your call of area_light_sample (exercise 3.1) "
+                     "could not be found or replayed (its numbers not the trial's first three "
+                     "in some order, or its point not on a lamp with its normal and "
+                     "emission): compared with the solution's own shadow rays from the same "
+                     "numbers instead",
+                     where, t->unreplayed, t->trials);
+    else if (t->replayed_other > 0)
+        grading_note(g,
+                     "%s: %d of %d of your lamp points are not the solution's from the same "
+                     "numbers (another order of the numbers, or another mapping of exercise "
+                     "3.1): the solution's shadow ray replayed at your points",
+                     where, t->replayed_other, t->trials);
+}
+
+/* Every field of the shadow ray (value, wi, pdf) against the solution's at your lamp point
+ * (replayed) at each start: exact, whatever order of the numbers or valid mapping of
+ * exercise 3.1 gives the points. */
 static void grade_shadow_ray_paired(Grading *g)
 {
     Material white = {
         .name = "white", .kind = MATERIAL_LAMBERT, .reflectance = vec3(0.7, 0.5, 0.3)};
-    int trials = 0;
+    int trials = 0, order = -1;
     for (int k = 0; k < SHADOW_STARTS && !g->failed; k++) {
         const ShadowStart *start = &shadow_starts[k];
         Scene scene;
@@ -559,22 +821,21 @@ static void grade_shadow_ray_paired(Grading *g)
         Vec3 n = vec3_dot(normal, ray.dir) < 0.0 ? normal : vec3_neg(normal);
         ShadowTally tally;
         tally_init(&tally);
-        RayCounts counts = {0};
+        order = probe_shadow_rays(g, &scene, k, x, n, &white, order);
         for (int t = 0; t < SHADOW_TRIALS; t++) {
-            Rng rng = rng_for_sample(grading_stream(g, 33), (uint64_t)k, (uint64_t)t);
-            Rng mine = rng;
-            ShadowRay got = {.value = vec3(0, 0, 0)};
-            if (grading_probing(g))
-                got = area_light_shadow_ray(&scene, x, n, n, &white, &mine, &counts);
+            Rng rng = trial_rng(g, k, t);
+            ShadowRay got = grading_probing(g) ? probe_rays[t] : (ShadowRay){.pdf = 0.0};
             got.value = ASK_VEC3(g, got.value);
             got.wi = ASK_VEC3(g, got.wi);
             got.pdf = ASK(g, got.pdf);
+            double replay[3];
+            int replayable = ask_lamp_call(g, &scene, rng, order, replay);
             if (grading_not_finite(g, got.value.x + got.value.y + got.value.z, "the value") ||
                 (!grading_probing(g) && !(got.value.x == 0.0 && got.value.y == 0.0) &&
                  grading_not_finite(g, got.pdf, "the pdf")))
                 break;
             if (!grading_probing(g))
-                tally_trial(&tally, &scene, x, n, &white, rng, got);
+                tally_trial(&tally, &scene, x, n, &white, rng, got, replayable ? replay : NULL);
         }
         scene_free(&scene);
         trials += tally.trials;
@@ -582,12 +843,13 @@ static void grade_shadow_ray_paired(Grading *g)
             grading_note(g, "%s: %d trials, your mean %.5f, the solution's %.5f", start->where,
                          tally.trials, tally.sum_student / SHADOW_TRIALS,
                          tally.sum_right / SHADOW_TRIALS);
+            note_lamp_replay(g, &tally, start->where);
             shadow_verdict(g, &tally, start->where);
         }
     }
     grading_note(g,
-                 "%d shadow rays (value, wi and pdf) against the solution's from the same "
-                 "random numbers at %d points of two scenes",
+                 "%d shadow rays (value, wi and pdf) against the solution's at the same lamp "
+                 "points (yours, replayed) at %d points of two scenes",
                  trials, SHADOW_STARTS);
 }
 
