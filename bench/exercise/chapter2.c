@@ -266,9 +266,10 @@ static const PathView path_views[] = {
  * linker puts __wrap_hemisphere_sample_cosine between the sampler and every call from
  * another object (ld --wrap: the Makefile's grader_wraps), so the lesson holds no hook.
  * A replay holds when every call the solution's path makes asks the (u1, u2) recorded for
- * it and every direction is a unit vector above the surface. A call beyond the recorded
- * ones (a path longer than the student's) is the solution's own sampler's: given the path
- * so far, its direction has the same density. */
+ * it, or the two swapped (rng_pair(rng, &u2, &u1): as valid), and every direction is a
+ * unit vector above the surface. A call beyond the recorded ones (a path longer than the
+ * student's) is the solution's own sampler's: given the path so far, its direction has
+ * the same density. */
 #define SAMPLER_CALLS 16 /* recorded per path: a right one makes at most max_depth - 1 */
 
 typedef struct {
@@ -291,6 +292,12 @@ static struct {
     long other;      /* replayed directions other than the solution's sampler's */
 } sampler;
 
+/* Whether a recorded call asked (u1, u2), in either order. */
+static int asked(const SamplerCall *call, double u1, double u2)
+{
+    return (call->u1 == u1 && call->u2 == u2) || (call->u1 == u2 && call->u2 == u1);
+}
+
 Vec3 __real_hemisphere_sample_cosine(double u1, double u2);
 Vec3 __wrap_hemisphere_sample_cosine(double u1, double u2);
 
@@ -303,7 +310,7 @@ Vec3 __wrap_hemisphere_sample_cosine(double u1, double u2)
         sampler.count++;
     } else if (sampler.mode == SAMPLER_REPLAY && sampler.next < sampler.count) {
         const SamplerCall *call = &sampler.calls[sampler.next++];
-        if (call->u1 != u1 || call->u2 != u2) {
+        if (!asked(call, u1, u2)) {
             sampler.mismatched++;
             return w;
         }
