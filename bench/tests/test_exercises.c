@@ -51,7 +51,9 @@ typedef struct {
 /* Bodies that several entries graft: exercise 2.1's as the solution writes it, and the
  * concentric disk (another valid mapping) up to its point (x, y) on the unit disk;
  * exercise 2.5's jitter and the same drawn v first; exercise 3.1's point on the triangle
- * and the folded square up to its barycentric coordinates. */
+ * and the folded square up to its barycentric coordinates; exercise 3.3's numbers as the
+ * task draws them, and in another order (the pair first; the pair swapped); 2.4's bounce
+ * pair as the task draws it, and swapped. */
 #define COSINE_SAMPLE                                                                          \
     "    double sin_theta = sqrt(u1);\n    double cos_theta = sqrt(1.0 - u1);\n"               \
     "    double phi = 2.0 * PI * u2;\n"                                                        \
@@ -71,6 +73,15 @@ typedef struct {
 #define FOLDED_SQUARE                                                                          \
     "    LightSample sample;\n    if (u1 + u2 > 1.0) {\n        u1 = 1.0 - u1;\n        u2 = " \
     "1.0 - u2;\n    }\n"
+#define BOUNCE_PAIR "rng_pair(rng, &u1, &u2);\n    return diffuse_sample"
+#define BOUNCE_PAIR_SWAPPED "rng_pair(rng, &u2, &u1);\n    return diffuse_sample"
+#define SHADOW_NUMBERS                                                                         \
+    "    double u_select = rng_uniform(rng), u1, u2;\n    rng_pair(rng, &u1, &u2);"
+#define SHADOW_NUMBERS_PAIR_FIRST                                                              \
+    "    double u1, u2;\n    rng_pair(rng, &u1, &u2);\n    double u_select = "                 \
+    "rng_uniform(rng);"
+#define SHADOW_NUMBERS_SWAPPED                                                                 \
+    "    double u_select = rng_uniform(rng), u1, u2;\n    rng_pair(rng, &u2, &u1);"
 
 static const Mistake mistakes[] = {
     {1, "1.1", "the far root first", "lib/sphere.c", "if (t0 > t1) {", "if (t0 < t1) {",
@@ -369,10 +380,22 @@ static const Mistake mistakes[] = {
 };
 #define MISTAKES (int)(sizeof mistakes / sizeof mistakes[0])
 
-/* Path tracers a little wrong over the concentric disk lifted to the hemisphere (2.1):
- * their paths are paired with the solution's through their own directions, replayed. */
+/* Path tracers a little wrong over the concentric disk lifted to the hemisphere (2.1) or
+ * rng_pair's two swapped: their paths are paired with the solution's through their own
+ * directions, replayed. */
 static const Graft concentric_method = {"lib/hemisphere.c", COSINE_SAMPLE,
                                         CONCENTRIC_HEMISPHERE};
+static const Graft bounce_pair_swapped_method = {"lib/path.c", BOUNCE_PAIR,
+                                                 BOUNCE_PAIR_SWAPPED};
+/* Shadow rays a little wrong over the folded square (3.1) or another order of the numbers:
+ * paired with the solution's at their own lamp points, replayed. */
+static const Graft folded_square_method = {
+    "lib/area_light.c", TRIANGLE_POINT,
+    FOLDED_SQUARE "    sample.point = triangle_point(triangle, u1, u2);"};
+static const Graft pair_first_method = {"lib/area_light.c", SHADOW_NUMBERS,
+                                        SHADOW_NUMBERS_PAIR_FIRST};
+static const Graft pair_swapped_method = {"lib/area_light.c", SHADOW_NUMBERS,
+                                          SHADOW_NUMBERS_SWAPPED};
 static const MistakeOver mistakes_over[] = {
     {&concentric_method,
      {2, "2.4", "each bounce's weight 1 % too large, over the concentric disk", "lib/path.c",
@@ -383,6 +406,34 @@ static const MistakeOver mistakes_over[] = {
      {2, "2.4", "acne over the concentric disk", "lib/path.c",
       "ray = ray_spawn(x.hit.point, x.normal, direction, x.hit.scale);",
       "ray = (Ray){x.hit.point, direction};", "acne", "exercise 2.1"}},
+    {&bounce_pair_swapped_method,
+     {2, "2.4", "each bounce's weight 1 % too large, over rng_pair's two swapped", "lib/path.c",
+      "throughput = vec3_mul(throughput, weight);",
+      "throughput = vec3_mul(throughput, vec3_scale(weight, 1.01));", "too bright",
+      "exercise 2.1"}},
+    {&folded_square_method,
+     {3, "3.3", "eq. 21 1 % too large, over the folded square", "lib/area_light.c",
+      "scene->light_area * cos_alpha * cos_beta / distance2",
+      "scene->light_area * cos_alpha * cos_beta / distance2 * 1.01",
+      "1.01 times the right value", "another order"}},
+    {&folded_square_method,
+     {3, "3.3", "eq. 21 without cos(beta), over the folded square", "lib/area_light.c",
+      "scene->light_area * cos_alpha * cos_beta / distance2",
+      "scene->light_area * cos_alpha / distance2", "cos(beta), is missing", "another order"}},
+    {&pair_first_method,
+     {3, "3.3", "eq. 21 1 % too large, over the pair drawn first", "lib/area_light.c",
+      "scene->light_area * cos_alpha * cos_beta / distance2",
+      "scene->light_area * cos_alpha * cos_beta / distance2 * 1.01",
+      "1.01 times the right value", "another order"}},
+    {&pair_first_method,
+     {3, "3.3", "eq. 21 without cos(beta), over the pair drawn first", "lib/area_light.c",
+      "scene->light_area * cos_alpha * cos_beta / distance2",
+      "scene->light_area * cos_alpha / distance2", "cos(beta), is missing", "another order"}},
+    {&pair_swapped_method,
+     {3, "3.3", "eq. 21 1 % too large, over rng_pair's two swapped", "lib/area_light.c",
+      "scene->light_area * cos_alpha * cos_beta / distance2",
+      "scene->light_area * cos_alpha * cos_beta / distance2 * 1.01",
+      "1.01 times the right value", "another order"}},
 };
 #define MISTAKES_OVER (int)(sizeof mistakes_over / sizeof mistakes_over[0])
 
@@ -394,11 +445,18 @@ static const Mistake alternatives[] = {
      "pass", NULL},
     {2, "2.4", "the concentric disk lifted to the hemisphere (2.1)", "lib/hemisphere.c",
      COSINE_SAMPLE, CONCENTRIC_HEMISPHERE, "pass", NULL},
+    {2, "2.4", "rng_pair's two swapped for the bounce", "lib/path.c", BOUNCE_PAIR,
+     BOUNCE_PAIR_SWAPPED, "pass", NULL},
     {2, "2.5", "another jitter: v's number drawn first", "lib/pixel_sampling.c", JITTER,
      JITTER_V_FIRST, "pass", NULL},
     {3, "3.1", "the folded square for the point on a triangle", "lib/area_light.c",
      TRIANGLE_POINT, FOLDED_SQUARE "    sample.point = triangle_point(triangle, u1, u2);",
      "pass", NULL},
+    {3, "3.3", "a right shadow ray over the folded square (3.1)", "lib/area_light.c",
+     TRIANGLE_POINT, FOLDED_SQUARE "    sample.point = triangle_point(triangle, u1, u2);",
+     "pass", NULL},
+    {3, "3.3", "the numbers drawn in another order: the pair first", "lib/area_light.c",
+     SHADOW_NUMBERS, SHADOW_NUMBERS_PAIR_FIRST, "pass", NULL},
     {4, "4.2", "the mean written (R_s + R_p) / 2", "lib/fresnel.c", "return 0.5 * (r.s + r.p);",
      "return (r.s + r.p) / 2;", "pass", NULL},
     {5, "5.3", "pbrt's trigonometric form", "lib/oren_nayar.c",
