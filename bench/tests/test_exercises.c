@@ -396,6 +396,19 @@ static const Graft pair_first_method = {"lib/area_light.c", SHADOW_NUMBERS,
                                         SHADOW_NUMBERS_PAIR_FIRST};
 static const Graft pair_swapped_method = {"lib/area_light.c", SHADOW_NUMBERS,
                                           SHADOW_NUMBERS_SWAPPED};
+/* Eq. 21 1 % too large, or without cos(beta), over the method `over`. */
+#define EQ21 "scene->light_area * cos_alpha * cos_beta / distance2"
+#define EQ21_TOO_LARGE(over)                                                                   \
+    {                                                                                          \
+        3, "3.3", "eq. 21 1 % too large, over " over, "lib/area_light.c", EQ21,                \
+            EQ21 " * 1.01", "1.01 times the right value", "another order"                      \
+    }
+#define EQ21_WITHOUT_COS_BETA(over)                                                            \
+    {                                                                                          \
+        3, "3.3", "eq. 21 without cos(beta), over " over, "lib/area_light.c", EQ21,            \
+            "scene->light_area * cos_alpha / distance2", "cos(beta), is missing",              \
+            "another order"                                                                    \
+    }
 static const MistakeOver mistakes_over[] = {
     {&concentric_method,
      {2, "2.4", "each bounce's weight 1 % too large, over the concentric disk", "lib/path.c",
@@ -411,29 +424,11 @@ static const MistakeOver mistakes_over[] = {
       "throughput = vec3_mul(throughput, weight);",
       "throughput = vec3_mul(throughput, vec3_scale(weight, 1.01));", "too bright",
       "exercise 2.1"}},
-    {&folded_square_method,
-     {3, "3.3", "eq. 21 1 % too large, over the folded square", "lib/area_light.c",
-      "scene->light_area * cos_alpha * cos_beta / distance2",
-      "scene->light_area * cos_alpha * cos_beta / distance2 * 1.01",
-      "1.01 times the right value", "another order"}},
-    {&folded_square_method,
-     {3, "3.3", "eq. 21 without cos(beta), over the folded square", "lib/area_light.c",
-      "scene->light_area * cos_alpha * cos_beta / distance2",
-      "scene->light_area * cos_alpha / distance2", "cos(beta), is missing", "another order"}},
-    {&pair_first_method,
-     {3, "3.3", "eq. 21 1 % too large, over the pair drawn first", "lib/area_light.c",
-      "scene->light_area * cos_alpha * cos_beta / distance2",
-      "scene->light_area * cos_alpha * cos_beta / distance2 * 1.01",
-      "1.01 times the right value", "another order"}},
-    {&pair_first_method,
-     {3, "3.3", "eq. 21 without cos(beta), over the pair drawn first", "lib/area_light.c",
-      "scene->light_area * cos_alpha * cos_beta / distance2",
-      "scene->light_area * cos_alpha / distance2", "cos(beta), is missing", "another order"}},
-    {&pair_swapped_method,
-     {3, "3.3", "eq. 21 1 % too large, over rng_pair's two swapped", "lib/area_light.c",
-      "scene->light_area * cos_alpha * cos_beta / distance2",
-      "scene->light_area * cos_alpha * cos_beta / distance2 * 1.01",
-      "1.01 times the right value", "another order"}},
+    {&folded_square_method, EQ21_TOO_LARGE("the folded square")},
+    {&folded_square_method, EQ21_WITHOUT_COS_BETA("the folded square")},
+    {&pair_first_method, EQ21_TOO_LARGE("the pair drawn first")},
+    {&pair_first_method, EQ21_WITHOUT_COS_BETA("the pair drawn first")},
+    {&pair_swapped_method, EQ21_TOO_LARGE("rng_pair's two swapped")},
 };
 #define MISTAKES_OVER (int)(sizeof mistakes_over / sizeof mistakes_over[0])
 
