@@ -381,6 +381,9 @@ static double solution_path(const Scene *scene, Ray ray, Rng rng, int more, int 
     return radiance.x + radiance.y + radiance.z;
 }
 
+/* Whether a path's radiance a differs from the solution's b beyond rounding. */
+static int radiance_differs(double a, double b) { return fabs(a - b) > 1e-12 + 1e-9 * fabs(b); }
+
 /* Your path's radiance a (summed over the channels) against the solution's b. */
 static void pair_add(PathPairs *pairs, double a, double b, int bounces_differ)
 {
@@ -389,7 +392,7 @@ static void pair_add(PathPairs *pairs, double a, double b, int bounces_differ)
     pairs->solution += b;
     pairs->difference += a - b;
     pairs->difference2 += (a - b) * (a - b);
-    int differs = fabs(a - b) > 1e-12 + 1e-9 * fabs(b);
+    int differs = radiance_differs(a, b);
     pairs->differ += differs;
     pairs->darker += differs && a < b;
     pairs->bounces_differ += bounces_differ;
@@ -399,8 +402,7 @@ static void pair_add(PathPairs *pairs, double a, double b, int bounces_differ)
 static int unlike_path(const Scene *scene, Ray ray, Rng rng, int more, int replay, double a)
 {
     long bounces;
-    double c = solution_path(scene, ray, rng, more, replay, &bounces);
-    return fabs(a - c) > 1e-12 + 1e-9 * fabs(c);
+    return radiance_differs(a, solution_path(scene, ray, rng, more, replay, &bounces));
 }
 
 /* Your paths' radiance and bounces, kept for a second pairing (paired_unreplayed). */

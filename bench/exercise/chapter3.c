@@ -756,9 +756,11 @@ static Rng trial_rng(const Grading *g, int k, int t)
     return rng_for_sample(grading_stream(g, 33), (uint64_t)k, (uint64_t)t);
 }
 
-/* In the probe, the student's shadow rays at start k, from x; returns the order of their
- * numbers (student_order, `previous` where none is lit); -1 in the judge. */
+/* The student's shadow rays at the start in hand, made in the probe. */
 static ShadowRay probe_rays[SHADOW_TRIALS];
+
+/* In the probe, the student's shadow rays at start k, from x, into probe_rays; returns the
+ * order of their numbers (student_order, `previous` where none is lit); -1 in the judge. */
 static int probe_shadow_rays(Grading *g, const Scene *scene, int k, Vec3 x, Vec3 n,
                              const Material *m, int previous)
 {
